@@ -1,0 +1,37 @@
+# armmimic_add_layer(NAME <target> DIR <src dir> DEPS <targets...>)
+# A layer is a static library built from every .cpp in its folder; its public headers live in
+# include/armmimic/<layer>/. Sources are globbed so that adding a file needs no edit here.
+function(armmimic_add_layer)
+  cmake_parse_arguments(L "" "NAME" "DEPS" ${ARGN})
+  file(GLOB _srcs CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  file(GLOB _hdrs CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.h)
+  if(NOT _srcs)
+    # A layer whose sources have not landed yet: headers only.
+    add_library(${L_NAME} INTERFACE)
+    target_include_directories(${L_NAME} INTERFACE ${PROJECT_SOURCE_DIR}/include ${CMAKE_BINARY_DIR}/generated)
+    target_link_libraries(${L_NAME} INTERFACE ${L_DEPS})
+    return()
+  endif()
+  add_library(${L_NAME} STATIC ${_srcs} ${_hdrs})
+  target_include_directories(${L_NAME}
+    PUBLIC ${PROJECT_SOURCE_DIR}/include ${CMAKE_BINARY_DIR}/generated
+    PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+  target_link_libraries(${L_NAME} PUBLIC ${L_DEPS})
+endfunction()
+
+# armmimic_add_test_suite(NAME <exe> DEPS <targets...>)
+# One GoogleTest binary per layer (a relink of Qt per test file would not fit a 2-core machine).
+function(armmimic_add_test_suite)
+  cmake_parse_arguments(T "" "NAME" "DEPS" ${ARGN})
+  file(GLOB _srcs CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  add_executable(${T_NAME} ${_srcs} ${PROJECT_SOURCE_DIR}/tests/common/test_main.cpp
+    ${PROJECT_SOURCE_DIR}/tests/common/test_util.cpp)
+  target_include_directories(${T_NAME} PRIVATE ${PROJECT_SOURCE_DIR}/tests/common)
+  target_link_libraries(${T_NAME} PRIVATE ${T_DEPS} GTest::gtest)
+  target_compile_definitions(${T_NAME} PRIVATE
+    ARMMIMIC_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    ARMMIMIC_CLI_PATH="$<TARGET_FILE:armmimic-cli>")
+  add_dependencies(${T_NAME} armmimic-cli)
+  gtest_discover_tests(${T_NAME} DISCOVERY_TIMEOUT 60
+    PROPERTIES ENVIRONMENT "QT_QPA_PLATFORM=offscreen;LC_ALL=C.UTF-8")
+endfunction()

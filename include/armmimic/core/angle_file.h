@@ -1,0 +1,85 @@
+// Angle file v1 (see docs/angle-file.md): a TSV of per-frame arm angles, written by the engines
+// and read by score, plan and send. The reader is strict and names the line of every error.
+#pragma once
+
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "armmimic/core/angles.h"
+#include "armmimic/core/status.h"
+
+namespace armmimic {
+
+enum class RowStatus { kOk, kLost };
+
+struct AngleRow {
+  int frame = 0;
+  double time_s = 0;
+  RowStatus status = RowStatus::kLost;
+  double upper_deg = kNaN;
+  double fore_deg = kNaN;
+  double yaw_deg = kNaN;
+  double bend_deg = kNaN;
+  double upper_cx = kNaN;
+  double upper_cy = kNaN;
+  double fore_cx = kNaN;
+  double fore_cy = kNaN;
+  std::string file;  // marker engine only: the image's file name
+  bool ok() const { return status == RowStatus::kOk; }
+};
+
+// Ordered key=value pairs of the "# engine=... source=..." header line.
+using AngleMeta = std::vector<std::pair<std::string, std::string>>;
+
+struct AngleFile {
+  AngleMeta meta;
+  bool has_file_column = false;
+  bool complete = true;  // false when the header says complete=no (an interrupted run)
+  std::vector<AngleRow> rows;
+
+  // Value of a meta key, or `fallback` when absent.
+  std::string Meta(const std::string& key, const std::string& fallback = "") const;
+};
+
+inline constexpr const char* kAngleFileMagic = "# armmimic angles v1";
+inline constexpr const char* kAngleFileUnits =
+    "# units: degrees; directions CCW on screen from +x, (-180,180]; image y down";
+// The contract's columns, in order. The marker engine adds "file" after them.
+extern const char* const kAngleColumns[11];
+inline constexpr std::size_t kMaxAngleLineLength = 65536;
+
+// Parses an angle file; `source_name` is used in messages ("angles.tsv:12: ...").
+Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFile* out);
+Status ReadAngleFile(const std::string& path, AngleFile* out);
+
+// Formats a number the way the file stores it: '.' decimals whatever the locale, "nan" for NaN.
+std::string FormatNumber(double value, int decimals);
+// Formats one data row (no trailing newline).
+std::string FormatAngleRow(const AngleRow& row, bool file_column);
+// The "# k=v k=v" meta line; spaces and '%' in values are percent-encoded.
+std::string FormatMetaLine(const AngleMeta& meta);
+
+// Streams rows to a temporary file beside `path`, renamed over `path` by Commit(): a reader
+// never sees half a file. If the writer is destroyed without Commit(), the target is untouched.
+class AngleFileWriter {
+ public:
+  AngleFileWriter();
+  ~AngleFileWriter();
+  AngleFileWriter(const AngleFileWriter&) = delete;
+  AngleFileWriter& operator=(const AngleFileWriter&) = delete;
+
+  Status Open(const std::string& path, const AngleMeta& meta, bool file_column);
+  Status Write(const AngleRow& row);
+  // complete=false rewrites the header with complete=no (rows so far are kept).
+  Status Commit(bool complete = true);
+  int rows_written() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace armmimic

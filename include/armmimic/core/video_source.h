@@ -1,0 +1,45 @@
+// VideoSource: frames from a video file (AVI with MJPG/XVID/H.264 and whatever else OpenCV's
+// videoio reads), a list of image files, a folder of images (sorted by name) or a camera.
+// Open() checks the input up front and names the file in every error.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "armmimic/core/frame.h"
+#include "armmimic/core/status.h"
+
+namespace armmimic {
+
+enum class SourceKind { kVideo, kImages, kCamera };
+
+struct VideoInfo {
+  SourceKind kind = SourceKind::kVideo;
+  std::string path;        // the video, the folder, or the first image
+  int frame_count = 0;     // frames actually decodable as far as known; -1 for a camera
+  double fps = 0;          // 0 when unknown (images)
+  cv::Size size;           // frame size in pixels
+  std::string codec;       // FOURCC for videos, e.g. "MJPG"; empty otherwise
+};
+
+class VideoSource {
+ public:
+  virtual ~VideoSource() = default;
+
+  // `inputs`: one video file; or one folder of images; or one or more image files; or
+  // "camera:N" / a stream URL (rtsp://, http://). Returns nullptr with *status set on failure:
+  // missing file, unreadable, corrupt, zero frames, unsupported format.
+  static std::unique_ptr<VideoSource> Open(const std::vector<std::string>& inputs, Status* status);
+
+  virtual const VideoInfo& info() const = 0;
+  // Reads the next frame. Returns false at the end (status ok) or on a decode error (status
+  // names the file and frame). Frames are CV_8UC3 BGR.
+  virtual bool Read(Frame* frame, Status* status) = 0;
+  // Positions so that the next Read() returns frame `index`.
+  virtual Status Seek(int index) = 0;
+};
+
+}  // namespace armmimic

@@ -1,0 +1,69 @@
+// Analysis: runs an engine over an input as the contract's `analyze` describes: the background
+// (from an image or the first K frames), the standstill from --start, then one measurement per
+// later frame. The CLI and the GUI both call this, so their angle files are identical.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "armmimic/core/angle_file.h"
+#include "armmimic/core/frame.h"
+#include "armmimic/core/status.h"
+#include "armmimic/core/video_source.h"
+#include "armmimic/engines/engine_options.h"
+#include "armmimic/engines/measurement.h"
+
+namespace armmimic {
+
+struct AnalysisOptions {
+  std::vector<std::string> inputs;          // video, folder, image files or camera
+  EngineOptions engine;
+  std::string background_path;              // --background
+  int background_frames = 0;                // --background-frames K (0: not used)
+  std::string arm_length_path;              // --arm-length
+  std::string reference_path;               // --reference (marker)
+  int start = 0;                            // --start F: first standstill frame
+  std::optional<cv::Point2d> shoulder_px;   // --shoulder X,Y
+  std::optional<cv::Rect> roi;              // --roi X,Y,W,H
+  Status Check() const;                     // messages name the flag
+};
+
+struct AnalysisCallbacks {
+  // Called for every frame the engine processed (also setup frames), in order.
+  std::function<void(const Frame&, const ArmMeasurement&)> on_measurement;
+  // Progress over the frames to process: done of total (total -1 when unknown).
+  std::function<void(int done, int total)> on_progress;
+  // Phase text for long setup steps ("background", "standstill", "analysis").
+  std::function<void(const std::string&)> on_phase;
+  const std::atomic<bool>* cancel = nullptr;  // set to stop early
+};
+
+struct AnalysisSummary {
+  int frames = 0;      // rows produced (ok + lost)
+  int ok = 0;
+  int lost = 0;
+  double seconds = 0;  // wall time of the whole run
+  bool cancelled = false;
+  VideoInfo video;
+  AngleMeta meta;      // the angle file's meta line for this run
+};
+
+// Averages frames [start, start+count) of `inputs` (thesis 5.2.1) into a CV_8UC3 image.
+Status EstimateBackground(const std::vector<std::string>& inputs, int start, int count,
+                          cv::Mat* background, const AnalysisCallbacks& callbacks = {});
+
+// Runs the whole analysis; measurements go to callbacks.on_measurement.
+Status RunAnalysis(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
+                   AnalysisSummary* summary);
+
+// RunAnalysis writing the angle file at `output_path` (atomically). On cancel the rows so far
+// are kept in a complete file whose header says complete=no.
+Status AnalyzeToFile(const AnalysisOptions& options, const std::string& output_path,
+                     const AnalysisCallbacks& callbacks, AnalysisSummary* summary);
+
+}  // namespace armmimic

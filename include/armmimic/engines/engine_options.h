@@ -1,0 +1,27 @@
+// EngineOptions: the engine choice and every engine's parameters. The CLI and the GUI fill the
+// same struct, so they produce the same angle file for the same options.
+#pragma once
+
+#include <string>
+
+#include "armmimic/core/status.h"
+#include "armmimic/engines/bgsub_options.h"
+#include "armmimic/engines/lk_options.h"
+#include "armmimic/engines/marker_options.h"
+
+namespace armmimic {
+
+enum class EngineKind { kBgsub, kLk, kMarker };
+
+const char* EngineName(EngineKind kind);                        // "bgsub", "lk", "marker"
+bool ParseEngineKind(const std::string& name, EngineKind* out);
+
+struct EngineOptions {
+  EngineKind kind = EngineKind::kBgsub;
+  BgsubOptions bgsub;
+  LkOptions lk;
+  MarkerOptions marker;
+  Status Check() const;  // checks the chosen engine's options
+};
+
+}  // namespace armmimic

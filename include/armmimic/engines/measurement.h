@@ -1,0 +1,52 @@
+// ArmMeasurement: what an engine reports for one frame. It carries the angle-file row values
+// and the overlay data the GUI draws (segments, elbow, shoulder, centres, markers, features).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "armmimic/core/angle_file.h"
+
+namespace armmimic {
+
+enum class MeasurementPhase {
+  kSetup,  // a standstill/warm-up frame: consumed by the engine, no angle-file row
+  kOk,     // angles estimated for this frame
+  kLost,   // the engine found nothing: a `lost` row
+};
+
+struct ArmMeasurement {
+  int frame = 0;
+  double time_s = 0;
+  MeasurementPhase phase = MeasurementPhase::kLost;
+  std::string file;        // marker engine: input image name
+  std::string note;        // why lost, or which rule decided (shown in the GUI)
+
+  double upper_deg = kNaN;
+  double fore_deg = kNaN;
+  double yaw_deg = kNaN;
+  double bend_deg = kNaN;
+  cv::Point2d upper_com_px{kNaN, kNaN};
+  cv::Point2d fore_com_px{kNaN, kNaN};
+
+  // Overlay (all in full-image pixels).
+  std::optional<cv::Point2d> shoulder_px;
+  std::optional<cv::Point2d> elbow_px;
+  std::optional<cv::Point2d> wrist_px;
+  bool bent = false;
+  std::vector<cv::Point> arm_contour;
+  std::vector<cv::Point> arm_hull;
+  std::optional<cv::Rect> body_box;
+  std::vector<cv::Point2f> upper_features;   // LK
+  std::vector<cv::Point2f> fore_features;    // LK
+  std::vector<cv::Rect> candidate_boxes;     // marker: components that passed the threshold
+  std::vector<cv::Point2d> marker_centres;   // marker: upper first, then the two lower ones
+
+  bool row() const { return phase != MeasurementPhase::kSetup; }
+  AngleRow ToRow() const;
+};
+
+}  // namespace armmimic

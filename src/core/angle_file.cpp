@@ -1,0 +1,364 @@
+#include "armmimic/core/angle_file.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <istream>
+#include <sstream>
+#include <stdexcept>
+
+#include "armmimic/core/atomic_file.h"
+
+namespace armmimic {
+
+const char* const kAngleColumns[11] = {"frame",    "time_s",   "status",   "upper_deg",
+                                       "fore_deg", "yaw_deg",  "bend_deg", "upper_cx",
+                                       "upper_cy", "fore_cx",  "fore_cy"};
+
+namespace {
+
+std::vector<std::string> SplitTabs(const std::string& line) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t tab = line.find('\t', start);
+    if (tab == std::string::npos) {
+      out.push_back(line.substr(start));
+      return out;
+    }
+    out.push_back(line.substr(start, tab - start));
+    start = tab + 1;
+  }
+}
+
+std::string PercentEncode(const std::string& v) {
+  std::string out;
+  for (char c : v) {
+    if (c == ' ') out += "%20";
+    else if (c == '%') out += "%25";
+    else if (c == '\t') out += "%09";
+    else if (c == '\n') out += "%0A";
+    else if (c == '\r') out += "%0D";
+    else out += c;
+  }
+  return out;
+}
+
+std::string PercentDecode(const std::string& v) {
+  std::string out;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (v[i] == '%' && i + 2 < v.size()) {
+      int code = 0;
+      const auto r = std::from_chars(v.data() + i + 1, v.data() + i + 3, code, 16);
+      if (r.ec == std::errc() && r.ptr == v.data() + i + 3) {
+        out += static_cast<char>(code);
+        i += 2;
+        continue;
+      }
+    }
+    out += v[i];
+  }
+  return out;
+}
+
+// Parses a number field: a finite decimal or "nan". `allow_nan` false rejects "nan".
+bool ParseNumber(const std::string& field, bool allow_nan, double* out) {
+  if (field == "nan") {
+    if (!allow_nan) return false;
+    *out = kNaN;
+    return true;
+  }
+  if (field.empty()) return false;
+  const char* first = field.data();
+  const char* last = field.data() + field.size();
+  if (*first == '+') return false;
+  // from_chars accepts "inf"/"infinity"/"nan(...)": reject anything that is not plain decimal.
+  for (const char* p = first; p != last; ++p) {
+    const char c = *p;
+    if (!((c >= '0' && c <= '9') || c == '.' || c == '-' || c == 'e' || c == 'E' || c == '+')) {
+      return false;
+    }
+  }
+  double v = 0;
+  const auto r = std::from_chars(first, last, v, std::chars_format::general);
+  if (r.ec != std::errc() || r.ptr != last || !std::isfinite(v)) return false;
+  *out = v;
+  return true;
+}
+
+bool ParseFrameIndex(const std::string& field, int* out) {
+  if (field.empty() || field.size() > 10) return false;
+  int v = 0;
+  const auto r = std::from_chars(field.data(), field.data() + field.size(), v, 10);
+  if (r.ec != std::errc() || r.ptr != field.data() + field.size() || v < 0) return false;
+  *out = v;
+  return true;
+}
+
+}  // namespace
+
+std::string AngleFile::Meta(const std::string& key, const std::string& fallback) const {
+  for (const auto& [k, v] : meta) {
+    if (k == key) return v;
+  }
+  return fallback;
+}
+
+std::string FormatNumber(double value, int decimals) {
+  if (std::isnan(value)) return "nan";
+  if (!std::isfinite(value)) {
+    throw std::invalid_argument("FormatNumber: infinite value cannot be written to an angle file");
+  }
+  if (value == 0) value = 0;  // no "-0.000"
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof(buf), value, std::chars_format::fixed, decimals);
+  std::string s(buf, r.ptr);
+  if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
+  return s;
+}
+
+std::string FormatMetaLine(const AngleMeta& meta) {
+  std::string line = "#";
+  for (const auto& [k, v] : meta) line += " " + k + "=" + PercentEncode(v);
+  return line;
+}
+
+std::string FormatAngleRow(const AngleRow& row, bool file_column) {
+  const bool ok = row.ok();
+  auto ang = [&](double v) { return FormatNumber(ok ? v : kNaN, 3); };
+  auto px = [&](double v) { return FormatNumber(ok ? v : kNaN, 2); };
+  std::string s;
+  s.reserve(128);
+  s += std::to_string(row.frame);
+  s += '\t';
+  s += FormatNumber(row.time_s, 4);
+  s += ok ? "\tok" : "\tlost";
+  for (double v : {row.upper_deg, row.fore_deg, row.yaw_deg, row.bend_deg}) {
+    s += '\t';
+    s += ang(v);
+  }
+  for (double v : {row.upper_cx, row.upper_cy, row.fore_cx, row.fore_cy}) {
+    s += '\t';
+    s += px(v);
+  }
+  if (file_column) {
+    s += '\t';
+    s += row.file;
+  }
+  return s;
+}
+
+Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFile* out) {
+  *out = AngleFile();
+  auto err = [&](int line_no, const std::string& what) {
+    return Status::Error(source_name + ":" + std::to_string(line_no) + ": " + what);
+  };
+  std::string line;
+  int line_no = 0;
+  bool have_header = false;
+  std::size_t header_columns = 0;
+  int last_frame = -1;
+  bool seen_meta = false;
+  while (true) {
+    line.clear();
+    // Bounded getline: never holds more than kMaxAngleLineLength + 1 characters of one line.
+    bool got_any = false;
+    bool too_long = false;
+    for (int c = in.get(); c != EOF; c = in.get()) {
+      got_any = true;
+      if (c == '\n') break;
+      if (line.size() > kMaxAngleLineLength) {
+        too_long = true;
+        continue;
+      }
+      line += static_cast<char>(c);
+    }
+    if (!got_any) break;
+    ++line_no;
+    if (too_long || line.size() > kMaxAngleLineLength) {
+      return err(line_no, "line is longer than " + std::to_string(kMaxAngleLineLength) +
+                              " characters");
+    }
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find('\0') != std::string::npos) return err(line_no, "line contains a NUL byte");
+
+    if (!line.empty() && line[0] == '#') {
+      if (line.rfind("# armmimic angles v", 0) == 0 && line != kAngleFileMagic) {
+        return err(line_no, "unsupported angle file version \"" + line.substr(2) +
+                                "\" (this reader knows v1)");
+      }
+      if (!have_header && !seen_meta && line.find('=') != std::string::npos &&
+          line.rfind("# units:", 0) != 0) {
+        seen_meta = true;
+        std::istringstream words(line.substr(1));
+        std::string word;
+        while (words >> word) {
+          const auto eq = word.find('=');
+          if (eq == std::string::npos || eq == 0) continue;
+          out->meta.emplace_back(word.substr(0, eq), PercentDecode(word.substr(eq + 1)));
+          if (word.substr(0, eq) == "complete" && word.substr(eq + 1) == "no") {
+            out->complete = false;
+          }
+        }
+      }
+      continue;
+    }
+    if (!have_header) {
+      if (line.empty()) return err(line_no, "expected the column header, found an empty line");
+      const std::vector<std::string> cols = SplitTabs(line);
+      for (std::size_t i = 0; i < 11; ++i) {
+        if (i >= cols.size() || cols[i] != kAngleColumns[i]) {
+          std::string expected;
+          for (std::size_t j = 0; j < 11; ++j) expected += (j ? "\\t" : "") + std::string(kAngleColumns[j]);
+          return err(line_no, "bad column header: column " + std::to_string(i + 1) + " is \"" +
+                                  (i < cols.size() ? cols[i] : std::string()) +
+                                  "\", expected the header " + expected);
+        }
+      }
+      header_columns = cols.size();
+      out->has_file_column = cols.size() > 11 && cols[11] == "file";
+      have_header = true;
+      continue;
+    }
+    if (line.empty()) continue;  // a blank line (e.g. at the end) carries no row
+    const std::vector<std::string> f = SplitTabs(line);
+    if (f.size() != header_columns) {
+      return err(line_no, "row has " + std::to_string(f.size()) + " fields, the header has " +
+                              std::to_string(header_columns));
+    }
+    AngleRow row;
+    if (!ParseFrameIndex(f[0], &row.frame)) {
+      return err(line_no, "frame \"" + f[0] + "\" is not a non-negative integer");
+    }
+    if (row.frame <= last_frame) {
+      return err(line_no, "frame " + f[0] + (row.frame == last_frame ? " is repeated" : " is out of order") +
+                              " (previous row is frame " + std::to_string(last_frame) + ")");
+    }
+    last_frame = row.frame;
+    if (!ParseNumber(f[1], false, &row.time_s)) {
+      return err(line_no, "time_s \"" + f[1] + "\" is not a finite number");
+    }
+    if (f[2] == "ok") {
+      row.status = RowStatus::kOk;
+    } else if (f[2] == "lost") {
+      row.status = RowStatus::kLost;
+    } else {
+      return err(line_no, "status \"" + f[2] + "\" is neither ok nor lost");
+    }
+    double* values[8] = {&row.upper_deg, &row.fore_deg, &row.yaw_deg,  &row.bend_deg,
+                         &row.upper_cx,  &row.upper_cy, &row.fore_cx, &row.fore_cy};
+    for (int i = 0; i < 8; ++i) {
+      if (!ParseNumber(f[3 + i], true, values[i])) {
+        return err(line_no, std::string(kAngleColumns[3 + i]) + " \"" + f[3 + i] +
+                                "\" is not a number (use '.' decimals, or nan)");
+      }
+      if (row.status == RowStatus::kLost && i < 4 && !std::isnan(*values[i])) {
+        return err(line_no, std::string("status is lost but ") + kAngleColumns[3 + i] +
+                                " is a number (lost rows carry nan angles)");
+      }
+    }
+    for (int i = 0; i < 4; ++i) {
+      if (!std::isnan(*values[i]) && (*values[i] <= -180.0 - 1e-9 || *values[i] > 180.0 + 1e-9)) {
+        return err(line_no, std::string(kAngleColumns[3 + i]) + " " + f[3 + i] +
+                                " is outside (-180, 180]");
+      }
+    }
+    if (!std::isnan(row.yaw_deg) && row.yaw_deg < 0) {
+      return err(line_no, "yaw_deg " + f[5] + " is negative (yaw is always >= 0)");
+    }
+    if (out->has_file_column) row.file = f[11];
+    out->rows.push_back(std::move(row));
+  }
+  if (!have_header) {
+    return Status::Error(source_name + ": no column header found (is this an armmimic angle file?)");
+  }
+  return Status::Ok();
+}
+
+Status ReadAngleFile(const std::string& path, AngleFile* out) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Status::Error(path + ": cannot open (" + std::strerror(errno) + ")");
+  return ParseAngleFile(in, path, out);
+}
+
+struct AngleFileWriter::Impl {
+  AtomicFile file;
+  std::string path;
+  AngleMeta meta;
+  bool file_column = false;
+  bool open = false;
+  int rows = 0;
+};
+
+AngleFileWriter::AngleFileWriter() : impl_(std::make_unique<Impl>()) {}
+AngleFileWriter::~AngleFileWriter() = default;
+
+int AngleFileWriter::rows_written() const { return impl_->rows; }
+
+namespace {
+std::string HeaderText(const AngleMeta& meta, bool file_column) {
+  std::string s = std::string(kAngleFileMagic) + "\n" + FormatMetaLine(meta) + "\n" +
+                  kAngleFileUnits + "\n";
+  for (int i = 0; i < 11; ++i) s += (i ? "\t" : "") + std::string(kAngleColumns[i]);
+  if (file_column) s += "\tfile";
+  return s + "\n";
+}
+}  // namespace
+
+Status AngleFileWriter::Open(const std::string& path, const AngleMeta& meta, bool file_column) {
+  impl_ = std::make_unique<Impl>();
+  Status st = impl_->file.Open(path);
+  if (!st) return st;
+  impl_->path = path;
+  impl_->meta = meta;
+  impl_->file_column = file_column;
+  const std::string header = HeaderText(meta, file_column);
+  if (std::fputs(header.c_str(), impl_->file.file()) < 0) {
+    return Status::Error(path + ": write failed (" + std::strerror(errno) + ")");
+  }
+  impl_->open = true;
+  return Status::Ok();
+}
+
+Status AngleFileWriter::Write(const AngleRow& row) {
+  if (!impl_->open) return Status::Error("angle file is not open");
+  if (impl_->file_column && row.file.find_first_of("\t\n\r") != std::string::npos) {
+    return Status::Error(impl_->path + ": file name \"" + row.file + "\" contains a tab or newline");
+  }
+  const std::string s = FormatAngleRow(row, impl_->file_column) + "\n";
+  if (std::fputs(s.c_str(), impl_->file.file()) < 0) {
+    return Status::Error(impl_->path + ": write failed (" + std::strerror(errno) + ")");
+  }
+  ++impl_->rows;
+  return Status::Ok();
+}
+
+Status AngleFileWriter::Commit(bool complete) {
+  if (!impl_->open) return Status::Error("angle file is not open");
+  impl_->open = false;
+  if (complete) return impl_->file.Commit();
+  // Rewrite with complete=no in the meta line, keeping every row written so far.
+  std::fflush(impl_->file.file());
+  AtomicFile marked;
+  Status st = marked.Open(impl_->path);
+  if (!st) return st;
+  AngleMeta meta = impl_->meta;
+  meta.emplace_back("complete", "no");
+  const std::string header = HeaderText(meta, impl_->file_column);
+  std::fputs(header.c_str(), marked.file());
+  std::ifstream rows(impl_->file.temp_path(), std::ios::binary);
+  std::string line;
+  int skip = 4;  // the header lines of the unmarked temporary
+  while (std::getline(rows, line)) {
+    if (skip > 0) {
+      --skip;
+      continue;
+    }
+    std::fputs((line + "\n").c_str(), marked.file());
+  }
+  impl_->file.Discard();
+  return marked.Commit();
+}
+
+}  // namespace armmimic

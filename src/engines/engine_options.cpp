@@ -1,0 +1,33 @@
+#include "armmimic/engines/engine_options.h"
+
+namespace armmimic {
+
+const char* EngineName(EngineKind kind) {
+  switch (kind) {
+    case EngineKind::kBgsub: return "bgsub";
+    case EngineKind::kLk: return "lk";
+    case EngineKind::kMarker: return "marker";
+  }
+  return "?";
+}
+
+bool ParseEngineKind(const std::string& name, EngineKind* out) {
+  for (EngineKind k : {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kMarker}) {
+    if (name == EngineName(k)) {
+      *out = k;
+      return true;
+    }
+  }
+  return false;
+}
+
+Status EngineOptions::Check() const {
+  switch (kind) {
+    case EngineKind::kBgsub: return bgsub.Check();
+    case EngineKind::kLk: return lk.Check();
+    case EngineKind::kMarker: return marker.Check();
+  }
+  return Status::Ok();
+}
+
+}  // namespace armmimic

@@ -1,0 +1,2 @@
+// Placeholder so the GUI library has a source until its widgets land.
+#pragma once

@@ -1,0 +1,37 @@
+// Helpers shared by the test suites: temporary folders and running armmimic-cli.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace armmimic::test {
+
+// A fresh folder under $TMPDIR, removed with its contents when the object goes.
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::string& path() const { return path_; }
+  std::string file(const std::string& name) const { return path_ + "/" + name; }
+
+ private:
+  std::string path_;
+};
+
+struct CliResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+// Runs armmimic-cli with `args` (no shell), capturing stdout and stderr. `stdin_text` is fed to
+// its standard input.
+CliResult RunCli(const std::vector<std::string>& args, const std::string& stdin_text = "");
+
+std::string ReadFile(const std::string& path);
+void WriteFile(const std::string& path, const std::string& bytes);
+std::string SourcePath(const std::string& relative);  // path inside the source tree
+
+}  // namespace armmimic::test

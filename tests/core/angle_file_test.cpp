@@ -1,0 +1,179 @@
+#include "armmimic/core/angle_file.h"
+
+#include <clocale>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "test_util.h"
+
+namespace armmimic {
+namespace {
+
+const char* kHeader =
+    "frame\ttime_s\tstatus\tupper_deg\tfore_deg\tyaw_deg\tbend_deg\tupper_cx\tupper_cy\tfore_cx\tfore_cy";
+
+Status Parse(const std::string& text, AngleFile* f) {
+  std::istringstream in(text);
+  return ParseAngleFile(in, "a.tsv", f);
+}
+
+TEST(AngleFile, RoundTripKeepsEveryValue) {
+  test::TempDir dir;
+  const std::string path = dir.file("angles.tsv");
+  AngleFileWriter w;
+  ASSERT_TRUE(w.Open(path, {{"engine", "bgsub"}, {"source", "my scene.avi"}, {"fps", "30"}}, false).ok());
+  AngleRow r1;
+  r1.frame = 105;
+  r1.time_s = 3.5;
+  r1.status = RowStatus::kOk;
+  r1.upper_deg = -90;
+  r1.fore_deg = 12.3456;
+  r1.yaw_deg = kNaN;
+  r1.bend_deg = 102.3456;
+  r1.upper_cx = 160.25;
+  r1.upper_cy = 100.5;
+  r1.fore_cx = 170;
+  r1.fore_cy = 80;
+  AngleRow r2;
+  r2.frame = 106;
+  r2.time_s = 3.5333;
+  ASSERT_TRUE(w.Write(r1).ok());
+  ASSERT_TRUE(w.Write(r2).ok());
+  ASSERT_TRUE(w.Commit().ok());
+
+  const std::string text = test::ReadFile(path);
+  EXPECT_EQ(text.rfind("# armmimic angles v1\n# engine=bgsub source=my%20scene.avi fps=30\n", 0), 0u);
+  EXPECT_NE(text.find(std::string(kHeader) + "\n"), std::string::npos);
+
+  AngleFile f;
+  ASSERT_TRUE(ReadAngleFile(path, &f).ok());
+  EXPECT_EQ(f.Meta("source"), "my scene.avi");
+  EXPECT_TRUE(f.complete);
+  ASSERT_EQ(f.rows.size(), 2u);
+  EXPECT_EQ(f.rows[0].frame, 105);
+  EXPECT_TRUE(f.rows[0].ok());
+  EXPECT_DOUBLE_EQ(f.rows[0].upper_deg, -90);
+  EXPECT_NEAR(f.rows[0].fore_deg, 12.346, 1e-9);
+  EXPECT_TRUE(std::isnan(f.rows[0].yaw_deg));
+  EXPECT_DOUBLE_EQ(f.rows[0].upper_cx, 160.25);
+  EXPECT_FALSE(f.rows[1].ok());
+  EXPECT_TRUE(std::isnan(f.rows[1].upper_deg));
+}
+
+TEST(AngleFile, WritesDotDecimalsUnderACommaLocale) {
+  const char* old = std::setlocale(LC_ALL, nullptr);
+  const std::string saved = old ? old : "C";
+  if (!std::setlocale(LC_NUMERIC, "de_DE.UTF-8")) GTEST_SKIP() << "no de_DE locale here";
+  EXPECT_EQ(FormatNumber(-12.5, 3), "-12.500");
+  std::setlocale(LC_ALL, saved.c_str());
+}
+
+TEST(AngleFile, FormatNumberNeverWritesNegativeZero) {
+  EXPECT_EQ(FormatNumber(-0.0001, 3), "0.000");
+  EXPECT_EQ(FormatNumber(kNaN, 3), "nan");
+}
+
+TEST(AngleFile, MarkerFileColumnRoundTrips) {
+  std::string text = "# armmimic angles v1\n" + std::string(kHeader) + "\tfile\n" +
+                     "0\t0.0000\tok\tnan\tnan\t12.000\t-3.000\tnan\tnan\tnan\tnan\timg_000.png\n";
+  AngleFile f;
+  ASSERT_TRUE(Parse(text, &f).ok());
+  ASSERT_TRUE(f.has_file_column);
+  EXPECT_EQ(f.rows[0].file, "img_000.png");
+  EXPECT_DOUBLE_EQ(f.rows[0].yaw_deg, 12);
+}
+
+TEST(AngleFile, UnknownTrailingColumnsAreIgnored) {
+  std::string text = std::string(kHeader) + "\textra\n" +
+                     "3\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t7\twhatever\n";
+  AngleFile f;
+  ASSERT_TRUE(Parse(text, &f).ok()) << Parse(text, &f).message();
+  EXPECT_EQ(f.rows.size(), 1u);
+  EXPECT_FALSE(f.has_file_column);
+}
+
+struct BadCase {
+  const char* name;
+  std::string body;
+  const char* expect;  // substring of the message
+};
+
+TEST(AngleFile, MalformedFilesNameTheLine) {
+  const std::string h = std::string("# armmimic angles v1\n") + kHeader + "\n";
+  const std::vector<BadCase> cases = {
+      {"bad number", h + "0\t0\tok\t1,5\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: upper_deg \"1,5\""},
+      {"wrong header", "# armmimic angles v1\nframe\ttime\tstatus\n", "a.tsv:2: bad column header"},
+      {"short row", h + "0\t0\tok\t1\n", "a.tsv:3: row has 4 fields"},
+      {"huge line", h + std::string(70000, '1') + "\n", "a.tsv:3: line is longer"},
+      {"bad status", h + "0\t0\tmaybe\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: status"},
+      {"inf", h + "0\t0\tok\tinf\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: upper_deg"},
+      {"nan time", h + "0\tnan\tok\t1\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: time_s"},
+      {"duplicate frame", h + "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n" +
+                              "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:4: frame 4 is repeated"},
+      {"out of order", h + "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n" +
+                           "2\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:4: frame 2 is out of order"},
+      {"lost with angle", h + "0\t0\tlost\t5\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: status is lost"},
+      {"negative frame", h + "-1\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: frame"},
+      {"out of range", h + "0\t0\tok\t270\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: upper_deg 270"},
+      {"negative yaw", h + "0\t0\tok\tnan\tnan\t-3\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: yaw_deg"},
+      {"version 2", "# armmimic angles v2\n" + std::string(kHeader) + "\n", "a.tsv:1: unsupported"},
+      {"empty", "", "a.tsv: no column header"},
+  };
+  for (const auto& c : cases) {
+    AngleFile f;
+    const Status st = Parse(c.body, &f);
+    EXPECT_FALSE(st.ok()) << c.name;
+    EXPECT_NE(st.message().find(c.expect), std::string::npos) << c.name << ": " << st.message();
+  }
+}
+
+TEST(AngleFile, MissingFileNamesThePath) {
+  AngleFile f;
+  const Status st = ReadAngleFile("/nonexistent/x.tsv", &f);
+  ASSERT_FALSE(st.ok());
+  EXPECT_NE(st.message().find("/nonexistent/x.tsv"), std::string::npos);
+}
+
+TEST(AngleFile, WriterLeavesTargetUntouchedUntilCommit) {
+  test::TempDir dir;
+  const std::string path = dir.file("a.tsv");
+  test::WriteFile(path, "previous");
+  {
+    AngleFileWriter w;
+    ASSERT_TRUE(w.Open(path, {{"engine", "lk"}}, false).ok());
+    AngleRow r;
+    ASSERT_TRUE(w.Write(r).ok());
+    EXPECT_EQ(test::ReadFile(path), "previous");
+  }  // destroyed without Commit
+  EXPECT_EQ(test::ReadFile(path), "previous");
+}
+
+TEST(AngleFile, IncompleteCommitKeepsRowsAndMarksHeader) {
+  test::TempDir dir;
+  const std::string path = dir.file("a.tsv");
+  AngleFileWriter w;
+  ASSERT_TRUE(w.Open(path, {{"engine", "lk"}}, false).ok());
+  for (int i = 0; i < 3; ++i) {
+    AngleRow r;
+    r.frame = i;
+    ASSERT_TRUE(w.Write(r).ok());
+  }
+  ASSERT_TRUE(w.Commit(false).ok());
+  AngleFile f;
+  ASSERT_TRUE(ReadAngleFile(path, &f).ok());
+  EXPECT_FALSE(f.complete);
+  EXPECT_EQ(f.rows.size(), 3u);
+}
+
+TEST(AngleFile, WriterNamesMissingDirectory) {
+  AngleFileWriter w;
+  const Status st = w.Open("/nonexistent-dir/a.tsv", {}, false);
+  ASSERT_FALSE(st.ok());
+  EXPECT_NE(st.message().find("/nonexistent-dir"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace armmimic
