@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Builds armmimic and runs the whole test suite through ctest.
+#   scripts/test.sh [BUILD_DIR] [extra cmake args...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD_DIR="${1:-build}"
+scripts/build.sh "$@" >&2
+ctest --test-dir "$BUILD_DIR" --output-on-failure -j "${ARMMIMIC_TEST_JOBS:-$(nproc)}"
