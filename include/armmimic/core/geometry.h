@@ -11,12 +11,14 @@ namespace armmimic {
 
 // Spatial and central moments of a binary region (eqs. 3-1..3-8).
 struct RegionMoments {
-  double m00 = 0, m10 = 0, m01 = 0;        // area and first moments
-  double cx = 0, cy = 0;                   // centre of mass, pixels (x right, y down)
-  double mu20 = 0, mu02 = 0, mu11 = 0;     // second central moments
+  double m00 = 0, m10 = 0, m01 = 0;     // area and first moments
+  double cx = 0, cy = 0;                // centre of mass, pixels (x right, y down)
+  double mu20 = 0, mu02 = 0, mu11 = 0;  // second central moments
 };
 
-// Moments of the non-zero pixels of an 8-bit mask (optionally only inside `roi`).
+// Moments of the non-zero pixels of an 8-bit single-channel mask (optionally only inside `roi`,
+// which is clipped to the image). Every pixel counts 1; coordinates (and cx, cy) are full-image
+// pixels even with a ROI. One pass, no allocation. An empty region gives m00 = 0 and all zeros.
 RegionMoments ComputeMoments(const cv::Mat& mask);
 RegionMoments ComputeMoments(const cv::Mat& mask, const cv::Rect& roi);
 
@@ -41,10 +43,10 @@ std::vector<cv::Point> ConvexHull(const std::vector<cv::Point>& points);
 // A convexity defect: the stretch of `contour` between two consecutive hull points that lies
 // inside the hull, and its deepest point.
 struct ConvexityDefect {
-  int start_index = 0;     // contour index of the hull point where the defect starts
-  int end_index = 0;       // contour index of the hull point where it ends
-  int deepest_index = 0;   // contour index of the point farthest from the hull edge
-  double depth_px = 0;     // its distance to the hull edge
+  int start_index = 0;    // contour index of the hull point where the defect starts
+  int end_index = 0;      // contour index of the hull point where it ends
+  int deepest_index = 0;  // contour index of the point farthest from the hull edge
+  double depth_px = 0;    // its distance to the hull edge
 };
 // `hull_indices` as returned by ConvexHullIndices(contour). Sorted deepest first.
 std::vector<ConvexityDefect> ConvexityDefects(const std::vector<cv::Point>& contour,
@@ -52,23 +54,27 @@ std::vector<ConvexityDefect> ConvexityDefects(const std::vector<cv::Point>& cont
 
 // One connected component found by flood fill.
 struct Component {
-  int label = 0;           // value in the label image (1-based)
+  int label = 0;  // value in the label image (1-based)
   int area_px = 0;
-  cv::Rect box;            // bounding box
-  cv::Point seed;          // first pixel found (raster order)
+  cv::Rect box;    // bounding box
+  cv::Point seed;  // first pixel found (raster order)
 };
 
-// 4-connected flood-fill labelling of an 8-bit single-channel image. Starting from each
-// unlabelled pixel with value in [min_value, max_value], it grows over 4-neighbours whose value
-// differs from the seed's by at most `range` (floating range, as cv::floodFill without
-// FLOODFILL_FIXED_RANGE would be relative to neighbours; here it is relative to the seed).
-// `labels` receives CV_32S labels (0 = background). Components are returned in label order.
+// 4-connected flood-fill labelling of an 8-bit single-channel image. Scanning in raster order,
+// each unlabelled pixel with value in [min_value, max_value] seeds a component, which grows over
+// 4-neighbours whose value is also in [min_value, max_value] and differs from the SEED's value
+// by at most `range` (relative to the seed, like cv::floodFill with FLOODFILL_FIXED_RANGE; not
+// relative to each neighbour). `labels` (may be null) receives CV_32S labels (0 = background).
+// Components are returned in label order.
 std::vector<Component> FloodFillComponents(const cv::Mat& gray, int min_value, int max_value,
                                            int range, cv::Mat* labels);
 // The same for a binary mask: every non-zero pixel is foreground, 4-connected.
 std::vector<Component> MaskComponents(const cv::Mat& mask, cv::Mat* labels);
 
-// Median filter with an odd square window (thesis Fig. 3-8); borders replicate.
+// Median filter of an 8-bit single-channel image with an odd square window (thesis Fig. 3-8);
+// borders replicate. Throws std::invalid_argument for an even or non-positive ksize or a
+// non-CV_8UC1 image. The second form writes into *out (reusing its buffer; out != &gray).
 cv::Mat MedianFilter(const cv::Mat& gray, int ksize);
+void MedianFilter(const cv::Mat& gray, int ksize, cv::Mat* out);
 
 }  // namespace armmimic

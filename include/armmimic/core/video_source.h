@@ -18,11 +18,11 @@ enum class SourceKind { kVideo, kImages, kCamera };
 
 struct VideoInfo {
   SourceKind kind = SourceKind::kVideo;
-  std::string path;        // the video, the folder, or the first image
-  int frame_count = 0;     // frames actually decodable as far as known; -1 for a camera
-  double fps = 0;          // 0 when unknown (images)
-  cv::Size size;           // frame size in pixels
-  std::string codec;       // FOURCC for videos, e.g. "MJPG"; empty otherwise
+  std::string path;     // the video, the folder, or the first image
+  int frame_count = 0;  // frames actually decodable as far as known; -1 for a camera
+  double fps = 0;       // 0 when unknown (images)
+  cv::Size size;        // frame size in pixels
+  std::string codec;    // FOURCC for videos, e.g. "MJPG"; empty otherwise
 };
 
 class VideoSource {
@@ -33,12 +33,16 @@ class VideoSource {
   // "camera:N" / a stream URL (rtsp://, http://). Returns nullptr with *status set on failure:
   // missing file, unreadable, corrupt, zero frames, unsupported format.
   static std::unique_ptr<VideoSource> Open(const std::vector<std::string>& inputs, Status* status);
+  static std::unique_ptr<VideoSource> Open(const std::string& input, Status* status) {
+    return Open(std::vector<std::string>{input}, status);
+  }
 
   virtual const VideoInfo& info() const = 0;
   // Reads the next frame. Returns false at the end (status ok) or on a decode error (status
   // names the file and frame). Frames are CV_8UC3 BGR.
   virtual bool Read(Frame* frame, Status* status) = 0;
-  // Positions so that the next Read() returns frame `index`.
+  // Positions so that the next Read() returns frame `index` (0 <= index; for videos and images
+  // index < frame_count). Cameras cannot seek and return an error.
   virtual Status Seek(int index) = 0;
 };
 

@@ -1,0 +1,109 @@
+#include "armmimic/core/image_io.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <sys/stat.h>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "armmimic/core/atomic_file.h"
+
+namespace armmimic {
+namespace {
+
+std::string LowerExtension(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  const auto dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+// Converts any depth/channel count OpenCV decodes into 8-bit BGR.
+Status ToBgr8(const cv::Mat& in, const std::string& path, cv::Mat* bgr) {
+  cv::Mat img = in;
+  if (img.depth() != CV_8U) {
+    double scale = 1.0;
+    if (img.depth() == CV_16U) scale = 1.0 / 257.0;
+    if (img.depth() == CV_32F || img.depth() == CV_64F) scale = 255.0;
+    img.convertTo(img, CV_MAKETYPE(CV_8U, img.channels()), scale);
+  }
+  switch (img.channels()) {
+    case 1:
+      cv::cvtColor(img, *bgr, cv::COLOR_GRAY2BGR);
+      return Status::Ok();
+    case 3:
+      *bgr = img;
+      return Status::Ok();
+    case 4:
+      cv::cvtColor(img, *bgr, cv::COLOR_BGRA2BGR);
+      return Status::Ok();
+    default:
+      return Status::Error(path + ": unsupported image with " + std::to_string(img.channels()) +
+                           " channels");
+  }
+}
+
+}  // namespace
+
+bool HasImageExtension(const std::string& path) {
+  static const char* const kExts[] = {".png", ".jpg",  ".jpeg", ".bmp",
+                                      ".tif", ".tiff", ".pgm",  ".ppm"};
+  const std::string ext = LowerExtension(path);
+  return std::any_of(std::begin(kExts), std::end(kExts), [&](const char* e) { return ext == e; });
+}
+
+Status ReadImage(const std::string& path, cv::Mat* bgr) {
+  if (path.empty()) return Status::Error("image path is empty");
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) {
+    return Status::Error(path + ": cannot open image (" + std::strerror(errno) + ")");
+  }
+  if (S_ISDIR(st.st_mode)) return Status::Error(path + ": is a directory, not an image");
+  if (st.st_size == 0) return Status::Error(path + ": empty file (0 bytes), not an image");
+  cv::Mat raw;
+  try {
+    raw = cv::imread(path, cv::IMREAD_UNCHANGED);
+  } catch (const cv::Exception& e) {
+    return Status::Error(path + ": cannot decode image (" + e.msg + ")");
+  }
+  if (raw.empty()) {
+    return Status::Error(path + ": not a readable image (unknown format or corrupt data)");
+  }
+  cv::Mat out;
+  Status s = ToBgr8(raw, path, &out);
+  if (!s) return s;
+  *bgr = out;
+  return Status::Ok();
+}
+
+Status WriteImageAtomically(const std::string& path, const cv::Mat& image) {
+  if (path.empty()) return Status::Error("image path is empty");
+  if (image.empty()) return Status::Error(path + ": nothing to write (empty image)");
+  const std::string ext = LowerExtension(path);
+  if (ext.empty()) {
+    return Status::Error(path + ": no file extension; use .png, .jpg, .bmp, .tif, .pgm or .ppm");
+  }
+  if (!cv::haveImageWriter("x" + ext)) {
+    return Status::Error(path + ": cannot write images with extension " + ext);
+  }
+  std::vector<uchar> bytes;
+  try {
+    if (!cv::imencode(ext, image, bytes)) {
+      return Status::Error(path + ": encoding as " + ext + " failed");
+    }
+  } catch (const cv::Exception& e) {
+    return Status::Error(path + ": encoding as " + ext + " failed (" + e.msg + ")");
+  }
+  return WriteFileAtomically(path, std::string(bytes.begin(), bytes.end()));
+}
+
+}  // namespace armmimic
