@@ -12,6 +12,7 @@
 
 #include <iosfwd>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -75,10 +76,11 @@ struct SafetyState {
   // Tracked as lines pass.
   bool have_position = false;  // last_deg is known (after the first checked move)
   JointArray last_deg{};
-  double last_time_s = kNaN;        // time of the last timed move
-  double monitor_speed_pct = kNaN;  // top-level "SPEED n"; NaN until one was sent
-  double program_speed_pct = 100;   // "SPEED n" inside a program or "DO SPEED n"
-  bool in_editor = false;           // between "EDIT name" and "E"
+  double last_time_s = kNaN;              // time of the last timed move
+  double monitor_speed_pct = kNaN;        // top-level "SPEED n"; NaN until one was sent
+  double program_speed_pct = 100;         // "SPEED n" inside a program or "DO SPEED n"
+  bool in_editor = false;                 // between "EDIT name" and "E"
+  std::set<std::string> edited_programs;  // upper-case names uploaded (and so checked) in this run
 
   static SafetyState For(const JointLimits& limits, const ControllerProfile& profile);
 };

@@ -1,0 +1,504 @@
+#include "armmimic/robot/val_program.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "armmimic/core/angle_file.h"
+
+namespace armmimic::robot {
+namespace {
+
+std::string Trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t\r");
+  if (a == std::string::npos) return "";
+  const auto b = s.find_last_not_of(" \t\r");
+  return s.substr(a, b - a + 1);
+}
+
+std::string Upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+bool ParseDouble(const std::string& text, double* out) {
+  const std::string t = Trim(text);
+  if (t.empty()) return false;
+  const char* first = t.data();
+  const char* last = t.data() + t.size();
+  if (*first == '+') ++first;
+  double v = 0;
+  const auto r = std::from_chars(first, last, v);
+  if (r.ec != std::errc() || r.ptr != last || !std::isfinite(v)) return false;
+  *out = v;
+  return true;
+}
+
+bool ParseList(const std::string& text, std::vector<double>* out) {
+  out->clear();
+  std::stringstream ss(text);
+  std::string part;
+  while (std::getline(ss, part, ',')) {
+    double v = 0;
+    if (!ParseDouble(part, &v)) return false;
+    out->push_back(v);
+  }
+  return !text.empty() && text.back() != ',';
+}
+
+std::string Replace(std::string text, const std::string& key, const std::string& value) {
+  const std::string token = "{" + key + "}";
+  for (auto pos = text.find(token); pos != std::string::npos; pos = text.find(token, pos)) {
+    text.replace(pos, token.size(), value);
+    pos += value.size();
+  }
+  return text;
+}
+
+std::string JoinJoints(const JointArray& values, int decimals) {
+  std::string s;
+  for (int j = 0; j < kJoints; ++j) {
+    if (j) s += ',';
+    s += FormatJointDeg(values[j], decimals);
+  }
+  return s;
+}
+
+std::string FormatSeconds(double s) { return FormatNumber(s, 3); }
+
+// Rounds up to whole milliseconds (times are written with three decimals).
+double CeilMs(double s) { return std::ceil(s * 1000.0 - 1e-6) / 1000.0; }
+
+double RoundTo(double v, int decimals) {
+  const double scale = std::pow(10.0, decimals);
+  return std::round(v * scale) / scale;
+}
+
+// The command keywords the checker understands. A keyword may be abbreviated to any prefix of two
+// letters or more that is unique among them (VAL accepts unique prefixes); "E" alone leaves the
+// editor.
+enum class Keyword { kNone, kDo, kDrive, kEdit, kExecute, kMove, kSpeed, kEndEdit };
+
+Keyword MatchKeyword(const std::string& token) {
+  const std::string t = Upper(token);
+  if (t == "E") return Keyword::kEndEdit;
+  if (t.size() < 2) return Keyword::kNone;
+  static const std::pair<const char*, Keyword> kWords[] = {
+      {"DO", Keyword::kDo},           {"DRIVE", Keyword::kDrive}, {"EDIT", Keyword::kEdit},
+      {"EXECUTE", Keyword::kExecute}, {"MOVE", Keyword::kMove},   {"SPEED", Keyword::kSpeed}};
+  Keyword found = Keyword::kNone;
+  int matches = 0;
+  for (const auto& [word, kw] : kWords) {
+    if (std::string(word).rfind(t, 0) == 0) {
+      found = kw;
+      ++matches;
+    }
+  }
+  return matches == 1 ? found : Keyword::kNone;
+}
+
+// Splits "WORD rest" at the first space.
+void SplitWord(const std::string& text, std::string* word, std::string* rest) {
+  const auto sp = text.find(' ');
+  *word = text.substr(0, sp);
+  *rest = sp == std::string::npos ? "" : Trim(text.substr(sp + 1));
+}
+
+bool ValidName(const std::string& name) {
+  if (name.empty() || name.size() > 15) return false;
+  for (char c : name) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '.') return false;
+  }
+  return true;
+}
+
+std::string Num(double v) {
+  // Short form for messages: up to three decimals, trailing zeros dropped.
+  std::string s = FormatNumber(v, 3);
+  while (s.find('.') != std::string::npos && (s.back() == '0' || s.back() == '.')) {
+    const bool dot = s.back() == '.';
+    s.pop_back();
+    if (dot) break;
+  }
+  return s;
+}
+
+Status CheckSpeedSetting(double monitor_pct, double program_pct, const SafetyState& s) {
+  const double eff = (std::isnan(monitor_pct) ? 100.0 : monitor_pct) * program_pct / 100.0;
+  for (int j = 0; j < kJoints; ++j) {
+    const double joint_speed = eff / 100.0 * s.joint_speed_at_100_deg_s[j];
+    if (joint_speed > s.limits.max_speed_deg_s[j] * (1 + 1e-9)) {
+      return Status::Error("speed " + Num(eff) + "% would let J" + std::to_string(j + 1) +
+                           " move at " + Num(joint_speed) + " deg/s, over its limit of " +
+                           Num(s.limits.max_speed_deg_s[j]) + " deg/s");
+    }
+  }
+  return Status::Ok();
+}
+
+Status CheckTarget(const JointArray& target, double time_s, SafetyState& s) {
+  if (std::isnan(s.monitor_speed_pct)) {
+    return Status::Error("motion before any SPEED line: the controller's speed is unknown");
+  }
+  for (int j = 0; j < kJoints; ++j) {
+    if (target[j] < s.limits.min_deg[j] || target[j] > s.limits.max_deg[j]) {
+      return Status::Error("J" + std::to_string(j + 1) + " target " + Num(target[j]) +
+                           " is outside the limit " + DescribeLimit(s.limits, j));
+    }
+  }
+  if (!std::isnan(time_s) && !std::isnan(s.last_time_s) && s.have_position) {
+    const double dt = time_s - s.last_time_s;
+    if (!(dt > 0)) {
+      return Status::Error("t=" + Num(time_s) +
+                           " is not after the previous move's t=" + Num(s.last_time_s));
+    }
+    for (int j = 0; j < kJoints; ++j) {
+      const double delta = std::abs(target[j] - s.last_deg[j]);
+      if (delta > s.limits.max_speed_deg_s[j] * dt + s.tolerance_deg) {
+        return Status::Error("J" + std::to_string(j + 1) + " moves " + Num(delta) + " deg in " +
+                             Num(dt) + " s (" + Num(delta / dt) + " deg/s), over its limit of " +
+                             Num(s.limits.max_speed_deg_s[j]) + " deg/s");
+      }
+    }
+  }
+  s.last_deg = target;
+  s.have_position = true;
+  if (!std::isnan(time_s)) s.last_time_s = time_s;
+  return Status::Ok();
+}
+
+}  // namespace
+
+std::string FormatJointDeg(double deg, int decimals) { return FormatNumber(deg, decimals); }
+
+int SpeedSettingFor(const JointLimits& limits, const ControllerProfile& profile) {
+  double pct = 100;
+  for (int j = 0; j < kJoints; ++j) {
+    pct = std::min(pct, 100.0 * limits.max_speed_deg_s[j] / profile.joint_speed_at_100_deg_s[j]);
+  }
+  return std::max(1, static_cast<int>(std::floor(pct + 1e-9)));
+}
+
+Status ParseValProgram(std::istream& in, const std::string& source_name, int max_line_length,
+                       ValProgram* out) {
+  ValProgram p;
+  p.source_name = source_name;
+  std::string raw;
+  int line_no = 0;
+  double pending_time = kNaN;
+  int pending_line = 0;
+  while (std::getline(in, raw)) {
+    ++line_no;
+    const std::string where = source_name + ":" + std::to_string(line_no) + ": ";
+    if (!raw.empty() && raw.back() == '\r') raw.pop_back();
+    for (unsigned char c : raw) {
+      if ((c < 0x20 && c != '\t') || c >= 0x7f) {
+        return Status::Error(where + "non-ASCII or control character (VAL lines are plain ASCII)");
+      }
+    }
+    const std::string line = Trim(raw);
+    if (line.empty()) continue;
+    if (line[0] == ';') {
+      const std::string text = Trim(line.substr(1));
+      p.comments.emplace_back(line_no, text);
+      if (text.rfind("t=", 0) == 0 && text.find(' ') == std::string::npos) {
+        double t = 0;
+        if (!ParseDouble(text.substr(2), &t) || t < 0) {
+          return Status::Error(where + "'; " + text + "' is not a timing comment (; t=SECONDS)");
+        }
+        if (!std::isnan(pending_time)) {
+          return Status::Error(source_name + ":" + std::to_string(pending_line) +
+                               ": timing comment not followed by a command line");
+        }
+        pending_time = t;
+        pending_line = line_no;
+      } else if (p.lines.empty() && line_no > 1) {
+        std::stringstream ss(text);
+        std::string token;
+        while (ss >> token) {
+          const auto eq = token.find('=');
+          if (eq != std::string::npos && eq > 0)
+            p.header[token.substr(0, eq)] = token.substr(eq + 1);
+        }
+      }
+      continue;
+    }
+    if (static_cast<int>(line.size()) > max_line_length) {
+      return Status::Error(where + "line is " + std::to_string(line.size()) +
+                           " characters, over the controller's limit of " +
+                           std::to_string(max_line_length));
+    }
+    ValLine l;
+    l.line_no = line_no;
+    l.text = line;
+    l.time_s = pending_time;
+    pending_time = kNaN;
+    p.lines.push_back(l);
+  }
+  if (in.bad()) return Status::Error(source_name + ": read error");
+  if (!std::isnan(pending_time)) {
+    return Status::Error(source_name + ":" + std::to_string(pending_line) +
+                         ": timing comment not followed by a command line");
+  }
+  if (p.lines.empty()) return Status::Error(source_name + ": no command lines to send");
+  const auto min_it = p.header.find("limits_min_deg");
+  const auto max_it = p.header.find("limits_max_deg");
+  const auto speed_it = p.header.find("speed_limit_deg_s");
+  const int present =
+      (min_it != p.header.end()) + (max_it != p.header.end()) + (speed_it != p.header.end());
+  if (present > 0) {
+    std::vector<double> mins, maxs, speeds;
+    if (present != 3 || !ParseList(min_it->second, &mins) || !ParseList(max_it->second, &maxs) ||
+        !ParseList(speed_it->second, &speeds) || mins.size() != kJoints || maxs.size() != kJoints ||
+        speeds.size() != kJoints) {
+      return Status::Error(source_name +
+                           ": header limits need limits_min_deg, limits_max_deg and "
+                           "speed_limit_deg_s, six comma-separated numbers each");
+    }
+    JointLimits lim;
+    std::copy(mins.begin(), mins.end(), lim.min_deg.begin());
+    std::copy(maxs.begin(), maxs.end(), lim.max_deg.begin());
+    std::copy(speeds.begin(), speeds.end(), lim.max_speed_deg_s.begin());
+    const Status check = lim.Check();
+    if (!check.ok()) return Status::Error(source_name + ": header limits: " + check.message());
+    p.header_limits = lim;
+    p.has_header_limits = true;
+  }
+  *out = std::move(p);
+  return Status::Ok();
+}
+
+Status ReadValProgram(const std::string& path, ValProgram* out, int max_line_length) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Status::Error(path + ": cannot open the VAL program");
+  return ParseValProgram(in, path, max_line_length, out);
+}
+
+Status FormatValProgram(const Trajectory& trajectory, const ControllerProfile& profile,
+                        const JointLimits& limits, const std::vector<std::string>& header,
+                        std::string* text) {
+  if (trajectory.keyframes.empty()) return Status::Error("the trajectory has no keyframes");
+  const int speed = SpeedSettingFor(limits, profile);
+  const int dec = profile.decimals;
+  std::string out;
+  auto comment = [&](const std::string& c) { out += "; " + c + "\n"; };
+  Status status;
+  auto command = [&](const std::string& line, const std::string& what) {
+    if (static_cast<int>(line.size()) > profile.max_line_length) {
+      if (status.ok()) {
+        status = Status::Error(what + ": '" + line + "' is " + std::to_string(line.size()) +
+                               " characters, over the profile's max_line_length of " +
+                               std::to_string(profile.max_line_length));
+      }
+    }
+    out += line + "\n";
+  };
+  auto list = [&](const JointArray& v) { return JoinJoints(v, 2); };
+
+  out += std::string(kValMagic) + "\n";
+  for (const std::string& h : header) comment(h);
+  comment("limits_min_deg=" + list(limits.min_deg));
+  comment("limits_max_deg=" + list(limits.max_deg));
+  comment("speed_limit_deg_s=" + list(limits.max_speed_deg_s));
+  comment("profile=" + profile.name + " mode=" + SendModeName(profile.mode) + " speed=" +
+          std::to_string(speed) + " keyframes=" + std::to_string(trajectory.keyframes.size()));
+  command(Replace(profile.speed_template, "speed", std::to_string(speed)), "speed line");
+  const bool program = profile.mode == SendMode::kProgram;
+  if (program) command(Replace(profile.edit_template, "name", profile.program_name), "edit line");
+
+  JointArray prev{};
+  double prev_t = 0;
+  for (std::size_t k = 0; k < trajectory.keyframes.size(); ++k) {
+    const Keyframe& kf = trajectory.keyframes[k];
+    JointArray rounded{};
+    for (int j = 0; j < kJoints; ++j) {
+      rounded[j] = RoundTo(kf.joint_deg[j], dec);
+      if (!std::isfinite(kf.joint_deg[j]) || rounded[j] < limits.min_deg[j] ||
+          rounded[j] > limits.max_deg[j]) {
+        return Status::Error("keyframe " + std::to_string(k) + " (frame " +
+                             std::to_string(kf.frame) + "): J" + std::to_string(j + 1) +
+                             " target " + Num(kf.joint_deg[j]) + " is outside " +
+                             DescribeLimit(limits, j));
+      }
+    }
+    // Written times are whole milliseconds, and never closer than the speed limits allow for
+    // the written (rounded) angles, so that send's check of this very file passes.
+    double t = CeilMs(kf.time_s);
+    if (k > 0) {
+      double need = 0;
+      for (int j = 0; j < kJoints; ++j) {
+        need = std::max(need, std::abs(rounded[j] - prev[j]) / limits.max_speed_deg_s[j]);
+      }
+      t = std::max({t, CeilMs(prev_t + need), prev_t + 0.001});
+    }
+    comment("t=" + FormatSeconds(t));
+    std::string line = program ? profile.program_move_template : profile.move_template;
+    for (int j = 0; j < kJoints; ++j) {
+      line = Replace(line, "j" + std::to_string(j + 1), FormatJointDeg(rounded[j], dec));
+    }
+    command(line, "keyframe " + std::to_string(k));
+    prev = rounded;
+    prev_t = t;
+  }
+  if (program) {
+    command(profile.end_edit_line, "end edit line");
+    command(Replace(profile.execute_template, "name", profile.program_name), "execute line");
+  }
+  if (!status.ok()) return status;
+  *text = std::move(out);
+  return Status::Ok();
+}
+
+SafetyState SafetyState::For(const JointLimits& limits, const ControllerProfile& profile) {
+  SafetyState s;
+  s.limits = limits;
+  s.joint_speed_at_100_deg_s = profile.joint_speed_at_100_deg_s;
+  s.max_line_length = profile.max_line_length;
+  const double step = std::pow(10.0, -profile.decimals);
+  s.tolerance_deg = std::max(0.011, 1.1 * step);
+  return s;
+}
+
+Status CheckLine(const std::string& line, SafetyState& state) {
+  return CheckLine(line, kNaN, state);
+}
+
+Status CheckLine(const std::string& raw_line, double time_s, SafetyState& state) {
+  if (static_cast<int>(raw_line.size()) > state.max_line_length) {
+    return Status::Error("line is " + std::to_string(raw_line.size()) +
+                         " characters, over the limit of " + std::to_string(state.max_line_length));
+  }
+  for (unsigned char c : raw_line) {
+    if (c < 0x20 || c >= 0x7f) return Status::Error("control or non-ASCII character in the line");
+  }
+  const std::string line = Trim(raw_line);
+  if (line.empty()) return Status::Ok();
+  if (line[0] == ';') return Status::Error("comment lines are never sent");
+
+  std::string word, rest;
+  SplitWord(line, &word, &rest);
+  Keyword kw = MatchKeyword(word);
+  bool via_do = false;
+  if (kw == Keyword::kDo) {
+    via_do = true;
+    SplitWord(rest, &word, &rest);
+    kw = MatchKeyword(word);
+    if (kw != Keyword::kMove && kw != Keyword::kDrive && kw != Keyword::kSpeed) {
+      return Status::Error("'" + line + "': only DO MOVE, DO DRIVE and DO SPEED can be checked");
+    }
+  }
+  const std::string cmd = "'" + line + "': ";
+  switch (kw) {
+    case Keyword::kMove: {
+      const std::string u = Upper(rest);
+      if (u.rfind("#PPOINT", 0) != 0) {
+        return Status::Error(cmd + "only moves to #PPOINT(j1,...,j6) can be checked");
+      }
+      std::string args = Trim(rest.substr(7));
+      if (args.size() < 2 || args.front() != '(' || args.back() != ')') {
+        return Status::Error(cmd + "expected #PPOINT(j1,j2,j3,j4,j5,j6)");
+      }
+      std::vector<double> v;
+      if (!ParseList(args.substr(1, args.size() - 2), &v) || v.size() != kJoints) {
+        return Status::Error(cmd + "#PPOINT needs six numbers");
+      }
+      JointArray target{};
+      std::copy(v.begin(), v.end(), target.begin());
+      const Status s = CheckTarget(target, time_s, state);
+      return s.ok() ? s : Status::Error(cmd + s.message());
+    }
+    case Keyword::kDrive: {
+      std::vector<double> v;
+      if (!ParseList(rest, &v) || v.size() != 3) {
+        return Status::Error(cmd + "expected DRIVE joint,change,speed");
+      }
+      const int joint = static_cast<int>(v[0]);
+      if (v[0] != joint || joint < 1 || joint > kJoints) {
+        return Status::Error(cmd + "joint must be 1..6");
+      }
+      if (!(v[2] > 0 && v[2] <= 100)) return Status::Error(cmd + "speed must be in (0,100]");
+      if (!state.have_position) {
+        return Status::Error(cmd +
+                             "DRIVE needs a known joint position (send a checked MOVE first)");
+      }
+      if (std::isnan(state.monitor_speed_pct)) {
+        return Status::Error(cmd +
+                             "motion before any SPEED line: the controller's speed is unknown");
+      }
+      const int j = joint - 1;
+      const double target = state.last_deg[j] + v[1];
+      if (!state.limits.Inside(j, target)) {
+        return Status::Error(cmd + "J" + std::to_string(joint) + " would reach " + Num(target) +
+                             ", outside the limit " + DescribeLimit(state.limits, j));
+      }
+      const double joint_speed =
+          state.monitor_speed_pct / 100.0 * v[2] / 100.0 * state.joint_speed_at_100_deg_s[j];
+      if (joint_speed > state.limits.max_speed_deg_s[j] * (1 + 1e-9)) {
+        return Status::Error(cmd + "J" + std::to_string(joint) + " would move at " +
+                             Num(joint_speed) + " deg/s, over its limit of " +
+                             Num(state.limits.max_speed_deg_s[j]) + " deg/s");
+      }
+      state.last_deg[j] = target;
+      state.last_time_s = kNaN;  // a DRIVE takes its own time
+      return Status::Ok();
+    }
+    case Keyword::kSpeed: {
+      double pct = 0;
+      if (!ParseDouble(rest, &pct) || !(pct > 0)) {
+        return Status::Error(cmd + "expected SPEED followed by one number > 0");
+      }
+      const bool program_speed = via_do || state.in_editor;
+      const double monitor = program_speed ? state.monitor_speed_pct : pct;
+      const double prog = program_speed ? pct : state.program_speed_pct;
+      const Status s = CheckSpeedSetting(monitor, prog, state);
+      if (!s.ok()) return Status::Error(cmd + s.message());
+      if (program_speed) {
+        state.program_speed_pct = pct;
+      } else {
+        state.monitor_speed_pct = pct;
+      }
+      return Status::Ok();
+    }
+    case Keyword::kEdit:
+      if (state.in_editor) return Status::Error(cmd + "EDIT while already editing");
+      if (!ValidName(rest)) return Status::Error(cmd + "expected EDIT followed by a program name");
+      state.in_editor = true;
+      state.edited_programs.insert(Upper(rest));
+      return Status::Ok();
+    case Keyword::kEndEdit:
+      if (!rest.empty() || !state.in_editor) {
+        return Status::Error(cmd + "E (leave the editor) outside EDIT ... E");
+      }
+      state.in_editor = false;
+      return Status::Ok();
+    case Keyword::kExecute:
+      if (state.in_editor) return Status::Error(cmd + "EXECUTE inside EDIT ... E");
+      if (!state.edited_programs.count(Upper(rest))) {
+        return Status::Error(cmd +
+                             "only a program uploaded and checked in this run may be executed");
+      }
+      if (std::isnan(state.monitor_speed_pct)) {
+        return Status::Error(cmd +
+                             "EXECUTE before any SPEED line: the controller's speed is unknown");
+      }
+      return Status::Ok();
+    default:
+      return Status::Error(cmd + "not a command the safety check can verify; it is not sent");
+  }
+}
+
+Status CheckProgram(const ValProgram& program, SafetyState& state) {
+  for (const ValLine& l : program.lines) {
+    const Status s = CheckLine(l.text, l.time_s, state);
+    if (!s.ok()) {
+      return Status::Error(program.source_name + ":" + std::to_string(l.line_no) + ": " +
+                           s.message());
+    }
+  }
+  return Status::Ok();
+}
+
+}  // namespace armmimic::robot
