@@ -1,0 +1,62 @@
+// Mapping from measured arm angles to PUMA joints (thesis 4.4.1.2): each joint is
+// sign * source + offset, with a mirror option.
+//
+// Arm engines (bgsub, lk):  J1 = yaw, J2 = upper-arm elevation, J3 = elbow flexion.
+//   elevation = the upper arm's angle from hanging, in [0,180] on either side of the body:
+//               |Wrap180(upper_deg + 90)| (hanging 0, horizontal 90, raised 180).
+//   flexion   = |bend_deg| (0 straight, 150 fully flexed; the 2-D bend's sign is not anatomy).
+//   Defaults J1 = +yaw, J2 = -elevation, J3 = -flexion: every human pose lands inside the
+//   default limits (J2 in [-180,0] of [-200,20], J3 in [-180,0] of [-225,45]).
+// Marker engine: J1 = yaw, J2 = bend, J3 held (kept aligned with J2). Default J2 = -bend - 90
+//   (bend in [-110,110] fits [-200,20]).
+// mirror: the person is seen mirrored (the robot faces them): yaw turns J1 the other way and
+//   signed sources (upper, bend) are mirrored (upper -> 180 - upper, bend -> -bend).
+// J4..J6 are held at hold_deg.
+#pragma once
+
+#include <string>
+
+#include "armmimic/core/angle_file.h"
+#include "armmimic/core/status.h"
+#include "armmimic/robot/limits.h"
+
+namespace armmimic::robot {
+
+enum class SourceKind { kArm, kMarker };
+
+// kMarker when the file has the marker's file column or says engine=marker.
+SourceKind DetectSourceKind(const AngleFile& angles);
+const char* SourceKindName(SourceKind kind);  // "arm" / "marker"
+
+struct JointMap {
+  double sign = 1;  // +1 or -1
+  double offset_deg = 0;
+};
+
+struct MappingOptions {
+  SourceKind kind = SourceKind::kArm;
+  JointMap j1{1, 0};
+  JointMap j2{-1, 0};
+  JointMap j3{-1, 0};
+  bool mirror = false;
+  // Arm only: J2 from the elevation (default) or from the continuous signed upper_deg; J3 from
+  // the flexion (default) or from the signed bend_deg.
+  bool j2_elevation = true;
+  bool j3_flexion = true;
+  JointArray hold_deg{};  // J4..J6 targets (entries 3..5); J1..J3 entries unused
+
+  static MappingOptions Default(SourceKind kind);
+  // sign is +1 or -1, offsets and holds finite.
+  Status Check() const;
+  // One line for headers and summaries: "arm j1=+yaw+0 j2=-elevation+0 j3=-flexion+0 ...".
+  std::string Describe() const;
+
+  // Maps one sample. `upper_deg` and `bend_deg` may be unwrapped (any multiple of 360 added);
+  // `yaw_deg` must be finite (the planner holds the last yaw while it is NaN).
+  JointArray Map(double upper_deg, double bend_deg, double yaw_deg) const;
+};
+
+// "SIGN,OFFSET" with SIGN + or - (or +1/-1), e.g. "-1,-90" or "+,0". Error text or "".
+std::string ParseJointMap(const std::string& value, JointMap* out);
+
+}  // namespace armmimic::robot
