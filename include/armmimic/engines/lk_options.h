@@ -1,17 +1,59 @@
 // Options of the Lucas-Kanade tracking engine (thesis chapter 6), with thesis defaults.
+// docs/lk.md maps every field to the thesis step it configures.
 #pragma once
+
+#include <string>
 
 #include "armmimic/core/status.h"
 
 namespace armmimic {
 
+// Which side of the body box the moving arm is on (decides the shoulder at 1/6 or 5/6 width).
+enum class LkArmSide { kAuto, kLeft, kRight };  // left/right as seen on screen
+
 struct LkOptions {
-  int standstill_frames = 60;      // used only to locate the shoulder (6.1)
+  // --- setup (6.1): the background and the standstill only locate the shoulder ---
+  int standstill_frames = 60;         // frames averaged into the standstill image
+  int body_threshold = 45;            // grey-level difference standstill vs background (body box)
+  double shoulder_height = 0.6;       // shoulder at 3/5 of the body box height, from its bottom
+  double shoulder_inset = 1.0 / 6;    // and at 1/6 (or 5/6) of its width
+  LkArmSide side = LkArmSide::kAuto;  // kAuto: the side where the first motion happens
+
+  // --- known starting posture ---
   double initial_upper_deg = -90;  // known starting directions (the hanging arm)
   double initial_fore_deg = -90;
-  int still_frames_drop = 10;      // a feature still for more than this many frames is dropped
-  bool thesis_mode = false;        // true: integrate increments only, as in the thesis
+
+  // --- Shi-Tomasi corners (6.2.1): minimal eigenvalue, 3x3 non-maximum suppression ---
+  int max_corners = 300;        // strongest corners kept per detection
+  double quality_level = 0.01;  // a corner's eigenvalue >= quality * the strongest one
+  double min_distance_px = 5;   // minimum distance between corners
+  int block_size = 3;           // eigenvalue neighbourhood (3x3)
+
+  // --- pyramidal iterative LK (6.2.2) ---
+  int window_px = 15;       // LK search window (square)
+  int pyramid_levels = 3;   // pyramid levels above the full image
+  int max_iterations = 20;  // per level
+  double epsilon = 0.03;    // stop when the update is smaller than this (pixels)
+
+  // --- which features are the arm (6.2.3) ---
+  double motion_threshold_px = 1.0;  // a feature that moved more than this is on the arm
+  int still_frames_drop = 10;        // a feature still for more than this many frames is dropped
+
+  // --- improvements over the thesis (6.4); ignored in thesis_mode ---
+  bool thesis_mode = false;        // true: 2-means and summed increments only, as the thesis
+  double confirm_motion_px = 4.0;  // a feature joins the fit once the model moved it this far
+  double outlier_px = 3.0;         // residual (pixels) above which a feature is an outlier
+  int outlier_frames_drop = 3;     // consecutive outlier frames before a feature is dropped
+  int reseed_interval = 5;         // frames between re-seeding corners on the arm
+  int min_part_features = 12;      // re-seed at once when a part has fewer features
+  double arm_width_ratio = 0.14;   // half-width of the arm band / arm length (re-seed mask)
+  double joint_weight = 3.0;       // weight of the shoulder/elbow pseudo-feature in the fits
+  double bend_for_elbow_deg = 20;  // the elbow split is learned only when bent this much
+
   Status Check() const;
 };
+
+const char* LkArmSideName(LkArmSide side);  // "auto", "left", "right"
+bool ParseLkArmSide(const std::string& name, LkArmSide* out);
 
 }  // namespace armmimic

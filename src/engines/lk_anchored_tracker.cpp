@@ -1,0 +1,431 @@
+// The anchored tracker: the improvement over thesis 6.4. Every feature keeps its reference
+// position in its part's own frame (origin at the shoulder or the elbow, x along the part), taken
+// from the pose when the feature was seeded. Each frame the absolute motion of each part is
+// re-fitted (eq. 6-16) from the reference positions to the tracked ones, so the angles are not
+// sums of increments and the error does not grow with the sequence length. Features whose
+// residual stays large (shadows, the body behind the arm, noise) are dropped; new ones are
+// seeded on the arm along the current estimate; the elbow position is learned from which
+// features follow which part once the elbow bends.
+#include <algorithm>
+#include <cmath>
+
+#include <opencv2/imgproc.hpp>
+
+#include "lk_fit.h"
+#include "lk_flow.h"
+#include "lk_tracker.h"
+
+namespace armmimic::lk {
+namespace {
+
+enum Part { kUpper = 0, kFore = 1 };
+
+struct Feature {
+  cv::Point2f p;          // current position
+  cv::Point2f prev;       // position in the previous frame
+  cv::Point2d seed_p;     // position when seeded
+  double seed_upper = 0;  // pose when seeded
+  double seed_fore = 0;
+  int side = 0;            // shoulder candidate it was seeded for
+  int label = kUpper;      // which part it follows
+  bool confirmed = false;  // followed its part's motion far enough to be trusted
+  int still = 0;           // consecutive frames without motion
+  int outlier = 0;         // consecutive frames with a large residual
+  // Per-frame scratch.
+  cv::Point2d cu, cf;     // reference position in the upper-arm and forearm frames
+  double ru = 0, rf = 0;  // residuals under the two fits
+  bool in_fit = false;
+};
+
+// Position of `d` in a part's frame whose x axis points along direction `deg`.
+cv::Point2d ToPartFrame(const cv::Point2d& d, double deg) {
+  const cv::Point2d u = DirectionVector(deg);
+  const cv::Point2d v(-u.y, u.x);  // image-axes normal: (sin, cos) of the CCW angle
+  return {d.dot(u), d.dot(v)};
+}
+
+// The motion that puts a part's frame at `origin` with direction `deg`.
+Motion2D PartMotion(double deg, const cv::Point2d& origin) {
+  Motion2D m;
+  const cv::Point2d u = DirectionVector(deg);
+  m.a = u.x;
+  m.b = u.y;
+  m.t = origin;
+  return m;
+}
+
+double SegmentDistance(const cv::Point2d& p, const cv::Point2d& a, const cv::Point2d& b) {
+  const cv::Point2d ab = b - a;
+  const double len2 = ab.dot(ab);
+  double t = len2 > 0 ? (p - a).dot(ab) / len2 : 0;
+  t = std::clamp(t, 0.0, 1.0);
+  const cv::Point2d q = a + t * ab;
+  return std::hypot(p.x - q.x, p.y - q.y);
+}
+
+double Median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  const std::size_t mid = v.size() / 2;
+  std::nth_element(v.begin(), v.begin() + mid, v.end());
+  return v[mid];
+}
+
+double Dist(const cv::Point2d& a, const cv::Point2d& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+class AnchoredTracker : public Tracker {
+ public:
+  explicit AnchoredTracker(const LkOptions& options) : o_(options), flow_(options) {}
+
+  TrackerPose Start(const TrackerStart& start) override {
+    size_ = start.gray.size();
+    flow_.Reset(start.gray);
+    shoulders_ = start.shoulders;
+    head_limit_y_ = start.head_limit_y;
+    arm_len_ = start.arm_length_px > 0 ? start.arm_length_px : 0.4 * size_.height;
+    lu_ = 0.5 * arm_len_;
+    lf_ = arm_len_ - lu_;
+    upper_deg_ = Wrap180(o_.initial_upper_deg);
+    fore_deg_ = Wrap180(o_.initial_fore_deg);
+    side_ = shoulders_.size() == 1 ? 0 : -1;
+    feats_.clear();
+    frame_ = 0;
+    for (int s = 0; s < static_cast<int>(shoulders_.size()); ++s) {
+      shoulder_ = shoulders_[s];
+      SetPoseMotions();
+      Seed(start.gray, s, 1.25);
+    }
+    if (side_ == 0) shoulder_ = shoulders_[0];
+    SetPoseMotions();
+    last_seed_ = 0;
+    return MakePose();
+  }
+
+  TrackerPose Track(const cv::Mat& gray) override {
+    ++frame_;
+    TrackFeatures(gray);
+    if (side_ < 0) {
+      std::vector<cv::Point2f> seeds, now;
+      for (const Feature& f : feats_) {
+        seeds.emplace_back(static_cast<float>(f.seed_p.x), static_cast<float>(f.seed_p.y));
+        now.push_back(f.p);
+      }
+      side_ = DecideSide(shoulders_, seeds, now, 2 * o_.motion_threshold_px, head_limit_y_, 3);
+      if (side_ < 0) return MakePose();
+      shoulder_ = shoulders_[side_];
+      feats_.erase(std::remove_if(feats_.begin(), feats_.end(),
+                                  [&](const Feature& f) { return f.side != side_; }),
+                   feats_.end());
+      SetPoseMotions();
+    }
+    FitPose();
+    UpdateFeatures();
+    LearnElbow();
+    const bool sparse =
+        CountPart(kUpper) < o_.min_part_features || CountPart(kFore) < o_.min_part_features;
+    if (frame_ - last_seed_ >= o_.reseed_interval || (sparse && frame_ - last_seed_ >= 1)) {
+      Seed(gray, side_, 1.1);
+      last_seed_ = frame_;
+    }
+    return MakePose();
+  }
+
+ private:
+  void SetPoseMotions() {
+    tu_ = PartMotion(upper_deg_, shoulder_);
+    tf_ = PartMotion(fore_deg_, Elbow());
+  }
+  cv::Point2d Elbow() const { return tu_.Apply({lu_, 0}); }
+  cv::Point2d Wrist() const { return tf_.Apply({lf_, 0}); }
+  double HalfWidth() const { return std::max(3.0, o_.arm_width_ratio * arm_len_); }
+
+  void TrackFeatures(const cv::Mat& gray) {
+    std::vector<cv::Point2f> pts, next;
+    std::vector<unsigned char> found;
+    pts.reserve(feats_.size());
+    for (const Feature& f : feats_) pts.push_back(f.p);
+    flow_.Track(gray, pts, &next, &found);
+    std::size_t w = 0;
+    for (std::size_t i = 0; i < feats_.size(); ++i) {
+      if (!found[i]) continue;
+      Feature f = feats_[i];
+      f.prev = f.p;
+      f.p = next[i];
+      const cv::Point2f d = f.p - f.prev;
+      f.still = std::hypot(d.x, d.y) < o_.motion_threshold_px ? f.still + 1 : 0;
+      feats_[w++] = f;
+    }
+    feats_.resize(w);
+  }
+
+  // Reference positions of every feature for the current shoulder and upper-arm length.
+  void ComputeReferences() {
+    for (Feature& f : feats_) {
+      const cv::Point2d elbow_at_seed = shoulder_ + lu_ * DirectionVector(f.seed_upper);
+      f.cu = ToPartFrame(f.seed_p - shoulder_, f.seed_upper);
+      f.cf = ToPartFrame(f.seed_p - elbow_at_seed, f.seed_fore);
+    }
+  }
+
+  // Fits one part (eq. 6-16) from the features in it plus its joint as a pseudo-feature, drops
+  // outliers and fits again. Sets in_fit for the features kept.
+  bool FitPart(int part, const cv::Point2d& joint_px, bool bootstrap, Motion2D* out) {
+    std::vector<cv::Point2d> from, to;
+    std::vector<double> w;
+    std::vector<int> idx;
+    for (int i = 0; i < static_cast<int>(feats_.size()); ++i) {
+      Feature& f = feats_[i];
+      if (f.label != part) continue;
+      bool use = f.confirmed;
+      if (!use && bootstrap) {
+        const cv::Point2d d = cv::Point2d(f.p) - f.seed_p;
+        use = std::hypot(d.x, d.y) > o_.motion_threshold_px;
+      }
+      if (!use) continue;
+      idx.push_back(i);
+      from.push_back(part == kUpper ? f.cu : f.cf);
+      to.emplace_back(f.p);
+      w.push_back(1.0);
+    }
+    if (idx.empty()) return false;
+    from.emplace_back(0, 0);
+    to.push_back(joint_px);
+    w.push_back(o_.joint_weight);
+    Motion2D m;
+    for (int pass = 0; pass < 2; ++pass) {
+      if (!FitMotion(from, to, w, &m)) return false;
+      std::vector<double> r(idx.size());
+      for (std::size_t k = 0; k < idx.size(); ++k) r[k] = Dist(m.Apply(from[k]), to[k]);
+      const double limit = std::max(o_.outlier_px, 2.5 * Median(r));
+      int kept = 0;
+      for (std::size_t k = 0; k < idx.size(); ++k) {
+        w[k] = r[k] <= limit ? 1.0 : 0.0;
+        kept += w[k] > 0;
+      }
+      if (kept == 0) return false;
+    }
+    if (!FitMotion(from, to, w, &m)) return false;
+    for (std::size_t k = 0; k < idx.size(); ++k) feats_[idx[k]].in_fit = w[k] > 0;
+    *out = m;
+    return true;
+  }
+
+  void FitOnce() {
+    for (Feature& f : feats_) f.in_fit = false;
+    const bool boot_upper = CountConfirmed(kUpper) < 3;
+    const bool boot_fore = CountConfirmed(kFore) < 3;
+    Motion2D tu = tu_;
+    const bool upper_ok = FitPart(kUpper, shoulder_, boot_upper, &tu);
+    if (upper_ok) tu_ = tu;
+    const double bend = AngleDiff(fore_deg_, upper_deg_);
+    Motion2D tf;
+    if (FitPart(kFore, Elbow(), boot_fore, &tf)) {
+      tf_ = tf;
+    } else {
+      // No forearm features: it keeps its bend and hangs from the upper arm's elbow.
+      const double scale = tu_.Scale();
+      tf_ = PartMotion(Wrap180(tu_.RotationCcwDeg() + bend), Elbow());
+      tf_.a *= scale;
+      tf_.b *= scale;
+    }
+  }
+
+  void Residuals() {
+    for (Feature& f : feats_) {
+      f.ru = Dist(tu_.Apply(f.cu), cv::Point2d(f.p));
+      f.rf = Dist(tf_.Apply(f.cf), cv::Point2d(f.p));
+    }
+  }
+
+  void FitPose() {
+    ComputeReferences();
+    FitOnce();
+    // Relabel: a feature follows the part whose motion explains it clearly better.
+    Residuals();
+    bool changed = false;
+    for (Feature& f : feats_) {
+      if (std::abs(f.ru - f.rf) < 1.0) continue;
+      const int label = f.ru < f.rf ? kUpper : kFore;
+      if (label != f.label && (f.confirmed || f.in_fit)) {
+        f.label = label;
+        changed = true;
+      }
+    }
+    if (changed) FitOnce();
+    Residuals();
+    upper_deg_ = Wrap180(tu_.RotationCcwDeg());
+    fore_deg_ = Wrap180(tf_.RotationCcwDeg());
+  }
+
+  void UpdateFeatures() {
+    std::vector<double> r;
+    for (const Feature& f : feats_) {
+      if (f.in_fit) r.push_back(f.label == kUpper ? f.ru : f.rf);
+    }
+    const double limit = std::max(o_.outlier_px, 2.5 * Median(r));
+    const double band = 2 * HalfWidth();
+    const cv::Point2d elbow = Elbow(), wrist = Wrist();
+    std::size_t w = 0;
+    for (std::size_t i = 0; i < feats_.size(); ++i) {
+      Feature f = feats_[i];
+      const Motion2D& m = f.label == kUpper ? tu_ : tf_;
+      const cv::Point2d ref = f.label == kUpper ? f.cu : f.cf;
+      const cv::Point2d predicted = m.Apply(ref);
+      const double res = Dist(predicted, cv::Point2d(f.p));
+      const double moved_by_model = Dist(predicted, f.seed_p);
+      bool keep = true;
+      if (f.confirmed) {
+        f.outlier = res > limit ? f.outlier + 1 : 0;
+        keep = f.outlier <= o_.outlier_frames_drop;
+      } else if (moved_by_model > o_.confirm_motion_px) {
+        if (res < o_.outlier_px) {
+          f.confirmed = true;
+        } else if (res > std::max(2 * o_.outlier_px, 0.5 * moved_by_model) ||
+                   f.still > o_.still_frames_drop) {
+          keep = false;  // the part moved, the feature did not follow: background or shadow
+        }
+      } else if (f.still > o_.still_frames_drop) {
+        // Thesis rule for features not (yet) on the arm: far from it and still, dropped.
+        const double d =
+            std::min(SegmentDistance(f.p, shoulder_, elbow), SegmentDistance(f.p, elbow, wrist));
+        keep = d <= band;
+      }
+      if (keep) feats_[w++] = f;
+    }
+    feats_.resize(w);
+  }
+
+  // Once the elbow bends, the features seeded on a straight arm tell where it is: those that
+  // follow the upper arm lie before it, those that follow the forearm beyond it.
+  void LearnElbow() {
+    if (std::abs(AngleDiff(fore_deg_, upper_deg_)) < o_.bend_for_elbow_deg) return;
+    std::vector<std::pair<double, int>> samples;
+    for (const Feature& f : feats_) {
+      if (!f.confirmed || f.outlier > 0) continue;
+      if (std::abs(AngleDiff(f.seed_fore, f.seed_upper)) > 10) continue;
+      if (std::abs(f.ru - f.rf) < 1.5) continue;
+      samples.emplace_back(f.cu.x, f.ru < f.rf ? kUpper : kFore);
+    }
+    int n_upper = 0;
+    for (const auto& s : samples) n_upper += s.second == kUpper;
+    const int n_fore = static_cast<int>(samples.size()) - n_upper;
+    if (n_upper < 3 || n_fore < 3) return;
+    std::sort(samples.begin(), samples.end());
+    // Errors of a split before sample k: forearm samples before it + upper samples after it.
+    int fore_before = 0, upper_after = n_upper;
+    int best_err = upper_after, best_k = 0;
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+      if (samples[k].second == kUpper)
+        --upper_after;
+      else
+        ++fore_before;
+      const int err = fore_before + upper_after;
+      if (err < best_err) {
+        best_err = err;
+        best_k = static_cast<int>(k) + 1;
+      }
+    }
+    if (best_k <= 0 || best_k >= static_cast<int>(samples.size())) return;
+    const double split = 0.5 * (samples[best_k - 1].first + samples[best_k].first);
+    if (split <= 0.15 * arm_len_ || split >= 0.85 * arm_len_) return;
+    lu_ = 0.9 * lu_ + 0.1 * split;
+    // The forearm reaches as far as its farthest features (robustly).
+    std::vector<double> reach;
+    for (const Feature& f : feats_) {
+      if (f.confirmed && f.label == kFore && f.outlier == 0) reach.push_back(f.cf.x);
+    }
+    if (reach.size() >= 5) {
+      std::sort(reach.begin(), reach.end());
+      const double far = reach[reach.size() * 9 / 10];
+      if (far > 0.2 * arm_len_) lf_ = 0.9 * lf_ + 0.1 * far;
+    }
+  }
+
+  int CountPart(int part) const {
+    int n = 0;
+    for (const Feature& f : feats_) n += f.label == part && (f.confirmed || f.in_fit);
+    return n;
+  }
+  int CountConfirmed(int part) const {
+    int n = 0;
+    for (const Feature& f : feats_) n += f.label == part && f.confirmed;
+    return n;
+  }
+
+  // Seeds corners in a band along the current estimate of the arm (both parts), reaching
+  // `reach` times the estimated lengths.
+  void Seed(const cv::Mat& gray, int side, double reach) {
+    const int room = o_.max_corners - static_cast<int>(feats_.size());
+    if (room <= 0) return;
+    const cv::Point2d s = shoulder_;
+    const cv::Point2d e = s + lu_ * tu_.Scale() * DirectionVector(upper_deg_);
+    const cv::Point2d w = e + reach * lf_ * tf_.Scale() * DirectionVector(fore_deg_);
+    cv::Mat mask(gray.size(), CV_8U, cv::Scalar(0));
+    const int thickness = std::max(3, static_cast<int>(2 * HalfWidth() + 1));
+    cv::line(mask, cv::Point(cvRound(s.x), cvRound(s.y)), cv::Point(cvRound(e.x), cvRound(e.y)),
+             cv::Scalar(255), thickness);
+    cv::line(mask, cv::Point(cvRound(e.x), cvRound(e.y)), cv::Point(cvRound(w.x), cvRound(w.y)),
+             cv::Scalar(255), thickness);
+    std::vector<cv::Point2f> existing;
+    existing.reserve(feats_.size());
+    for (const Feature& f : feats_) existing.push_back(f.p);
+    const std::vector<cv::Point2f> corners = DetectCorners(gray, mask, existing, room, o_);
+    for (const cv::Point2f& c : corners) {
+      Feature f;
+      f.p = f.prev = c;
+      f.seed_p = c;
+      f.seed_upper = upper_deg_;
+      f.seed_fore = fore_deg_;
+      f.side = side;
+      f.label = SegmentDistance(c, s, e) <= SegmentDistance(c, e, w) ? kUpper : kFore;
+      feats_.push_back(f);
+    }
+  }
+
+  TrackerPose MakePose() const {
+    TrackerPose pose;
+    pose.ok = true;
+    pose.upper_deg = upper_deg_;
+    pose.fore_deg = fore_deg_;
+    if (side_ < 0) {
+      pose.note = "waiting for the first motion to decide the arm's side";
+      return pose;
+    }
+    pose.have_shoulder = true;
+    pose.shoulder = shoulder_;
+    pose.elbow = Elbow();
+    pose.wrist = Wrist();
+    for (const Feature& f : feats_) {
+      if (!(f.confirmed || f.in_fit)) continue;
+      (f.label == kUpper ? pose.upper_features : pose.fore_features).push_back(f.p);
+    }
+    pose.upper_com = pose.upper_features.empty() ? 0.5 * (pose.shoulder + pose.elbow)
+                                                 : MeanPoint(pose.upper_features);
+    pose.fore_com = pose.fore_features.empty() ? 0.5 * (pose.elbow + pose.wrist)
+                                               : MeanPoint(pose.fore_features);
+    pose.note = "anchored: " + std::to_string(pose.upper_features.size()) + " upper, " +
+                std::to_string(pose.fore_features.size()) + " forearm features";
+    return pose;
+  }
+
+  LkOptions o_;
+  PyramidFlow flow_;
+  cv::Size size_;
+  std::vector<cv::Point2d> shoulders_;
+  int side_ = -1;
+  cv::Point2d shoulder_;
+  double head_limit_y_ = -1;
+  double arm_len_ = 0, lu_ = 0, lf_ = 0;
+  double upper_deg_ = -90, fore_deg_ = -90;
+  Motion2D tu_, tf_;
+  std::vector<Feature> feats_;
+  int frame_ = 0;
+  int last_seed_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Tracker> CreateAnchoredTracker(const LkOptions& options) {
+  return std::make_unique<AnchoredTracker>(options);
+}
+
+}  // namespace armmimic::lk

@@ -1,0 +1,66 @@
+#include "lk_flow.h"
+
+#include <opencv2/imgproc.hpp>
+#include <opencv2/video/tracking.hpp>
+
+namespace armmimic::lk {
+
+std::vector<cv::Point2f> DetectCorners(const cv::Mat& gray, const cv::Mat& mask,
+                                       const std::vector<cv::Point2f>& existing, int max_count,
+                                       const LkOptions& options) {
+  std::vector<cv::Point2f> corners;
+  if (max_count <= 0 || gray.empty()) return corners;
+  cv::Mat allowed;
+  if (mask.empty()) {
+    allowed = cv::Mat(gray.size(), CV_8U, cv::Scalar(255));
+  } else {
+    allowed = mask.clone();
+  }
+  const int radius = std::max(1, static_cast<int>(options.min_distance_px + 0.5));
+  for (const cv::Point2f& p : existing) {
+    cv::circle(allowed, cv::Point(cvRound(p.x), cvRound(p.y)), radius, cv::Scalar(0), cv::FILLED);
+  }
+  if (cv::countNonZero(allowed) == 0) return corners;
+  // Minimal eigenvalue (useHarrisDetector = false); the function keeps the local maxima of a
+  // 3x3 dilation, drops those below quality_level * the strongest, then enforces min distance.
+  cv::goodFeaturesToTrack(gray, corners, max_count, options.quality_level, options.min_distance_px,
+                          allowed, options.block_size, false);
+  return corners;
+}
+
+PyramidFlow::PyramidFlow(const LkOptions& options)
+    : window_(options.window_px, options.window_px),
+      levels_(options.pyramid_levels),
+      criteria_(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, options.max_iterations,
+                options.epsilon) {}
+
+void PyramidFlow::Build(const cv::Mat& gray, std::vector<cv::Mat>* pyramid) const {
+  cv::buildOpticalFlowPyramid(gray, *pyramid, window_, levels_, true);
+}
+
+void PyramidFlow::Reset(const cv::Mat& gray) {
+  prev_gray_ = gray.clone();
+  Build(prev_gray_, &prev_pyramid_);
+}
+
+void PyramidFlow::Track(const cv::Mat& gray, const std::vector<cv::Point2f>& points,
+                        std::vector<cv::Point2f>* tracked, std::vector<unsigned char>* found) {
+  cv::Mat next = gray.clone();
+  Build(next, &next_pyramid_);
+  tracked->clear();
+  found->clear();
+  if (!points.empty() && !prev_pyramid_.empty()) {
+    std::vector<float> err;
+    cv::calcOpticalFlowPyrLK(prev_pyramid_, next_pyramid_, points, *tracked, *found, err, window_,
+                             levels_, criteria_);
+    const float w = static_cast<float>(gray.cols - 1), h = static_cast<float>(gray.rows - 1);
+    for (std::size_t i = 0; i < tracked->size(); ++i) {
+      const cv::Point2f& p = (*tracked)[i];
+      if (!(p.x >= 0 && p.y >= 0 && p.x <= w && p.y <= h)) (*found)[i] = 0;
+    }
+  }
+  prev_gray_ = next;
+  std::swap(prev_pyramid_, next_pyramid_);
+}
+
+}  // namespace armmimic::lk

@@ -1,0 +1,57 @@
+// The two arm trackers of the LK engine behind one small interface: the thesis path (summed
+// increments of 2-means clusters, thesis 6.3) and the anchored path (absolute re-fit of every
+// part against reference positions, the improvement over thesis 6.4). Coordinates are those of
+// the analysed image (the ROI); the engine adds the ROI offset.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "armmimic/core/angles.h"
+#include "armmimic/engines/lk_options.h"
+
+namespace armmimic::lk {
+
+struct TrackerStart {
+  cv::Mat gray;  // the frame with the known starting posture (CV_8U)
+  // One shoulder when known; two (left, right) when the side is decided by the first motion.
+  std::vector<cv::Point2d> shoulders;
+  double arm_length_px = 0;  // prior: shoulder to wrist
+  double head_limit_y = -1;  // motion above this line (the head) does not decide the side
+};
+
+struct TrackerPose {
+  bool ok = false;
+  std::string note;
+  double upper_deg = kNaN;
+  double fore_deg = kNaN;
+  bool have_shoulder = false;  // false while the side is still undecided
+  cv::Point2d shoulder{kNaN, kNaN}, elbow{kNaN, kNaN}, wrist{kNaN, kNaN};
+  cv::Point2d upper_com{kNaN, kNaN}, fore_com{kNaN, kNaN};
+  std::vector<cv::Point2f> upper_features, fore_features;
+};
+
+class Tracker {
+ public:
+  virtual ~Tracker() = default;
+  virtual TrackerPose Start(const TrackerStart& start) = 0;
+  virtual TrackerPose Track(const cv::Mat& gray) = 0;
+};
+
+std::unique_ptr<Tracker> CreateThesisTracker(const LkOptions& options);
+std::unique_ptr<Tracker> CreateAnchoredTracker(const LkOptions& options);
+
+// Of `shoulders`, the one whose side moved first: the index whose half of the picture (split
+// halfway between the shoulders) holds at least `min_count` features that moved more than
+// `min_motion_px` from where they started, below `head_limit_y`; -1 while undecided.
+int DecideSide(const std::vector<cv::Point2d>& shoulders, const std::vector<cv::Point2f>& start,
+               const std::vector<cv::Point2f>& now, double min_motion_px, double head_limit_y,
+               int min_count);
+
+// Mean of `points`, or nan when empty.
+cv::Point2d MeanPoint(const std::vector<cv::Point2f>& points);
+
+}  // namespace armmimic::lk
