@@ -1,15 +1,207 @@
-// Placeholder until the bgsub engine lands; replaced wholesale by its implementation.
-#include <stdexcept>
+// The background-subtraction engine (thesis chapter 5) behind the Engine interface: the
+// standstill phase, then one measurement per frame. See docs/bgsub.md for the steps.
+#include <cmath>
+#include <sstream>
 
+#include <opencv2/imgproc.hpp>
+
+#include "armmimic/core/angles.h"
+#include "bgsub_arm.h"
+#include "bgsub_masks.h"
+#include "bgsub_scene.h"
 #include "engine_factories.h"
 
 namespace armmimic {
+namespace {
 
-Status BgsubOptions::Check() const { return Status::Ok(); }
+std::string SizeText(const cv::Size& s) {
+  return std::to_string(s.width) + "x" + std::to_string(s.height);
+}
+
+std::string Num(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+cv::Point2d Offset(const cv::Point2d& p, const cv::Point& o) { return {p.x + o.x, p.y + o.y}; }
+
+std::vector<cv::Point> Offset(std::vector<cv::Point> pts, const cv::Point& o) {
+  for (cv::Point& p : pts) p += o;
+  return pts;
+}
+
+class BgsubEngine final : public Engine {
+ public:
+  explicit BgsubEngine(const BgsubOptions& options) : options_(options) {}
+
+  EngineKind kind() const override { return EngineKind::kBgsub; }
+
+  Status Begin(const EngineContext& context) override {
+    const cv::Size size = context.frame_size;
+    if (size.width <= 0 || size.height <= 0) return Status::Error("bgsub: the frame size is empty");
+    if (context.background.empty()) {
+      return Status::Error("bgsub needs a background image (--background or --background-frames)");
+    }
+    if (context.background.size() != size) {
+      return Status::Error("bgsub: the background image is " + SizeText(context.background.size()) +
+                           " but the video is " + SizeText(size));
+    }
+    if (context.arm_length.empty()) return Status::Error("bgsub needs an --arm-length image");
+    if (context.arm_length.size() != size) {
+      return Status::Error("bgsub: the --arm-length image is " +
+                           SizeText(context.arm_length.size()) + " but the video is " +
+                           SizeText(size));
+    }
+    frame_size_ = size;
+    region_ = cv::Rect(0, 0, size.width, size.height);
+    if (context.roi) {
+      region_ &= *context.roi;
+      if (region_.area() < 16) {
+        return Status::Error(
+            "--roi " + std::to_string(context.roi->x) + "," + std::to_string(context.roi->y) + "," +
+            std::to_string(context.roi->width) + "," + std::to_string(context.roi->height) +
+            " lies outside the " + SizeText(size) + " frame");
+      }
+    }
+    scene_ = bgsub::SceneModel();
+    bgsub::ToGray(context.background(region_), &scene_.background);
+    bgsub::ToGray(context.arm_length(region_), &arm_length_gray_);
+    if (context.shoulder_px) {
+      scene_.fixed_shoulder =
+          cv::Point2d(context.shoulder_px->x - region_.x, context.shoulder_px->y - region_.y);
+    }
+    standstill_sum_ = cv::Mat::zeros(region_.size(), CV_32FC1);
+    standstill_count_ = 0;
+    was_bent_ = false;
+    begun_ = true;
+    return Status::Ok();
+  }
+
+  ArmMeasurement Process(const Frame& frame) override {
+    if (!begun_) throw std::logic_error("BgsubEngine::Process called before Begin");
+    ArmMeasurement m;
+    m.frame = frame.index;
+    m.time_s = frame.time_s;
+    m.file = frame.name;
+    if (frame.image.size() != frame_size_) {
+      m.phase = MeasurementPhase::kLost;
+      m.note = "frame is " + SizeText(frame.image.size()) + ", expected " + SizeText(frame_size_);
+      return m;
+    }
+    bgsub::ToGray(frame.image(region_), &gray_);
+    // The standstill (5.2.2): the mean of the first standstill_frames frames; no rows.
+    if (standstill_count_ < options_.standstill_frames) {
+      cv::accumulate(gray_, standstill_sum_);
+      ++standstill_count_;
+      m.phase = MeasurementPhase::kSetup;
+      m.note = "standstill " + std::to_string(standstill_count_) + "/" +
+               std::to_string(options_.standstill_frames);
+      if (standstill_count_ == options_.standstill_frames) FinishStandstill();
+      FillSceneOverlay(&m);
+      return m;
+    }
+    Measure(&m);
+    return m;
+  }
+
+  AngleMeta Describe() const override {
+    return {{"threshold", std::to_string(options_.threshold)},
+            {"standstill_frames", std::to_string(options_.standstill_frames)},
+            {"straight_ratio", Num(options_.straight_ratio)},
+            {"closing", std::to_string(options_.closing_size)},
+            {"mode", options_.thesis_mode ? "thesis" : "improved"}};
+  }
+
+ private:
+  void FinishStandstill() {
+    standstill_sum_.convertTo(scene_.standstill, CV_8UC1, 1.0 / standstill_count_);
+    bgsub::BuildScene(arm_length_gray_, options_, &buffers_, &scene_);
+  }
+
+  void FillSceneOverlay(ArmMeasurement* m) const {
+    const cv::Point o = region_.tl();
+    if (scene_.body_box) m->body_box = *scene_.body_box + o;
+    if (auto s = scene_.Shoulder(scene_.side, options_)) m->shoulder_px = Offset(*s, o);
+  }
+
+  void Measure(ArmMeasurement* m) {
+    m->phase = MeasurementPhase::kLost;
+    FillSceneOverlay(m);
+    if (!scene_.note.empty() && !scene_.body_box && !scene_.fixed_shoulder) {
+      m->note = scene_.note;
+      return;
+    }
+    cv::Rect box;
+    std::string note;
+    // Side unknown (no arm in the arm-length image): the largest moving region decides it.
+    const bool largest_only = scene_.side == 0 && !scene_.fixed_shoulder;
+    if (!bgsub::FindArmMask(gray_, scene_, options_, largest_only, &buffers_, &box, &note)) {
+      m->note = note;
+      return;
+    }
+    int side = scene_.side;
+    if (side == 0 && scene_.body_box) {
+      const RegionMoments rm = ComputeMoments(buffers_.arm, box);
+      side = rm.cx >= scene_.body_box->x + 0.5 * scene_.body_box->width ? 1 : -1;
+    }
+    const std::optional<cv::Point2d> shoulder = scene_.Shoulder(side, options_);
+    if (!shoulder) {
+      m->note = "no shoulder: no body in the standstill and no --shoulder";
+      return;
+    }
+    const bgsub::ArmGeometry g =
+        bgsub::AnalyzeArm(buffers_.arm, box, *shoulder, options_, was_bent_);
+    if (!g.found) {
+      m->note = g.note;
+      return;
+    }
+    was_bent_ = g.bent;
+    const cv::Point o = region_.tl();
+    m->phase = MeasurementPhase::kOk;
+    m->note = g.note;
+    m->upper_deg = Wrap180(g.upper_deg);
+    m->fore_deg = Wrap180(g.fore_deg);
+    m->bend_deg = g.bent ? AngleDiff(g.fore_deg, g.upper_deg) : 0.0;
+    m->yaw_deg = g.bent ? kNaN : Yaw(g);
+    m->upper_com_px = Offset(g.upper_com_px, o);
+    m->fore_com_px = Offset(g.fore_com_px, o);
+    m->shoulder_px = Offset(*shoulder, o);
+    m->elbow_px = Offset(g.elbow_px, o);
+    m->wrist_px = Offset(g.wrist_px, o);
+    m->bent = g.bent;
+    m->arm_contour = Offset(g.contour, o);
+    m->arm_hull = Offset(g.hull, o);
+  }
+
+  // yaw = acos(a/b) (5.2.6): a from this frame, b from the arm-length image. Improved: the arm's
+  // reach from the shoulder along its axis, which a partly hidden arm does not shorten.
+  double Yaw(const bgsub::ArmGeometry& g) const {
+    const bool extent = !options_.thesis_mode && options_.extent_yaw;
+    const double a = extent ? g.reach_px : g.axes.major;
+    const double b = extent ? scene_.ref_reach_px : scene_.ref_major_px;
+    if (!(b > 0) || !std::isfinite(a)) return kNaN;
+    return DegFromRad(std::acos(std::min(1.0, std::max(0.0, a / b))));
+  }
+
+  BgsubOptions options_;
+  bool begun_ = false;
+  cv::Size frame_size_;
+  cv::Rect region_;
+  bgsub::SceneModel scene_;
+  cv::Mat arm_length_gray_;
+  cv::Mat standstill_sum_;
+  int standstill_count_ = 0;
+  bool was_bent_ = false;
+  cv::Mat gray_;
+  bgsub::Buffers buffers_;
+};
+
+}  // namespace
 
 namespace internal {
-std::unique_ptr<Engine> CreateBgsubEngine(const BgsubOptions&) {
-  throw std::logic_error("the bgsub engine is not built yet");
+std::unique_ptr<Engine> CreateBgsubEngine(const BgsubOptions& options) {
+  return std::make_unique<BgsubEngine>(options);
 }
 }  // namespace internal
 }  // namespace armmimic

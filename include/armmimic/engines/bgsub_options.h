@@ -1,4 +1,5 @@
 // Options of the background-subtraction engine (thesis chapter 5), with thesis defaults.
+// thesis_mode=true runs the thesis path only; the improvements of docs/bgsub.md are the default.
 #pragma once
 
 #include "armmimic/core/status.h"
@@ -6,12 +7,26 @@
 namespace armmimic {
 
 struct BgsubOptions {
+  // --- The thesis path (chapter 5) ---
   int threshold = 45;              // grey-level difference threshold (5.2.2, 5.2.4)
+  int background_frames = 45;      // frames averaged into the background image (5.2.1)
   int standstill_frames = 60;      // frames averaged into the standstill image (5.2.2)
   double straight_ratio = 0.30;    // defect depth < 30 % of the semi-major axis: straight arm
-  int closing_size = 5;            // morphological closing kernel (pixels)
+  int closing_size = 5;            // morphological closing kernel (pixels; 0 or 1: none)
+  int min_arm_area_px = 40;        // a smaller moving region is no arm (lost)
+  double shoulder_height = 0.6;    // shoulder at 3/5 of the body box height, from its bottom
+  double shoulder_side = 1.0 / 6;  // ... and 1/6 of its width in from the moving arm's side
   bool thesis_mode = false;        // true: the thesis path only, none of the improvements
-  Status Check() const;
+
+  // --- Improvements (section 5.3 failures), used only when thesis_mode is false ---
+  bool compensate_drift = true;   // subtract the global brightness drift before thresholding
+  bool reject_head = true;        // ignore movement above the shoulders between them
+  double near_shoulder = 0.5;     // keep the blob nearest the shoulder, within this * arm length
+  bool two_line_split = true;     // refine the upper/fore split by distance to the two segments
+  bool extent_yaw = true;         // yaw from the arm's reach along its axis, not the ellipse
+  double bend_hysteresis = 0.05;  // straight/bent switches at straight_ratio -/+ this
+
+  Status Check() const;  // messages name the CLI flag where there is one
 };
 
 }  // namespace armmimic

@@ -1,0 +1,183 @@
+// armmimic-cli analyze INPUT... -o ANGLES.tsv --engine bgsub|lk|marker: video or images in, an
+// angle file v1 out (docs/cli.md). Ctrl-C keeps the rows so far in a file marked complete=no.
+#include <signal.h>
+
+#include <atomic>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <set>
+
+#include "args.h"
+#include "armmimic/engines/analysis.h"
+#include "command.h"
+#include "progress.h"
+
+namespace armmimic::cli {
+namespace {
+
+std::atomic<bool> g_interrupted{false};
+
+extern "C" void OnInterrupt(int) { g_interrupted.store(true); }
+
+// Installs the SIGINT handler for the lifetime of the object.
+class InterruptGuard {
+ public:
+  InterruptGuard() {
+    g_interrupted.store(false);
+    struct sigaction sa {};
+    sa.sa_handler = OnInterrupt;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_);
+  }
+  ~InterruptGuard() { sigaction(SIGINT, &old_, nullptr); }
+
+ private:
+  struct sigaction old_ {};
+};
+
+std::string BaseName(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// The flags each engine uses; any other engine flag given is a usage error.
+const std::map<std::string, std::set<EngineKind>>& EngineFlags() {
+  static const std::map<std::string, std::set<EngineKind>> flags = {
+      {"--background", {EngineKind::kBgsub, EngineKind::kLk}},
+      {"--background-frames", {EngineKind::kBgsub, EngineKind::kLk}},
+      {"--arm-length", {EngineKind::kBgsub}},
+      {"--start", {EngineKind::kBgsub, EngineKind::kLk}},
+      {"--standstill-frames", {EngineKind::kBgsub, EngineKind::kLk}},
+      {"--threshold", {EngineKind::kBgsub}},
+      {"--shoulder", {EngineKind::kBgsub, EngineKind::kLk}},
+      {"--roi", {EngineKind::kBgsub, EngineKind::kLk}},
+      {"--initial-upper", {EngineKind::kLk}},
+      {"--initial-fore", {EngineKind::kLk}},
+      {"--reference", {EngineKind::kMarker}},
+      {"--low", {EngineKind::kMarker}},
+      {"--high", {EngineKind::kMarker}},
+  };
+  return flags;
+}
+
+int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global) {
+  AnalysisOptions o;
+  std::string output;
+  std::string engine_name;
+  int standstill = 60;
+  int threshold = o.engine.bgsub.threshold;
+  bool thesis = false;
+  cv::Point2d shoulder;
+  cv::Rect roi;
+  ArgParser p(
+      "analyze",
+      "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine bgsub\n"
+      "          (--background BG.png | --background-frames K) --arm-length ARM.png\n"
+      "          [--start F] [--standstill-frames 60] [--threshold 45]\n"
+      "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine lk\n"
+      "          (--background BG.png | --background-frames K | --shoulder X,Y) [--start F]\n"
+      "          [--standstill-frames 60] [--initial-upper -90] [--initial-fore -90]\n"
+      "  armmimic-cli analyze INPUT... -o ANGLES.tsv --engine marker --reference REF.png\n"
+      "          [--low 20] [--high 80]\n"
+      "  Arm engines also take [--roi X,Y,W,H] [--shoulder X,Y] [--thesis].",
+      "Turns a video (or images) into an angle file v1, one row per analysed frame.\n"
+      "bgsub/lk: frames [F, F+standstill) are the standstill (no rows); every later frame is a\n"
+      "row. marker: one row per input image, in input order. Ctrl-C keeps the rows so far in a\n"
+      "valid file marked complete=no (exit 1).");
+  p.Positionals(&o.inputs, "INPUT", 1, -1);
+  p.String("-o,--output", &output, "ANGLES.tsv", "the angle file to write (required)");
+  p.String("--engine", &engine_name, "NAME", "bgsub, lk or marker (required)");
+  p.String("--background", &o.background_path, "BG.png", "bgsub/lk: the empty scene image");
+  p.Int("--background-frames", &o.background_frames, "K",
+        "bgsub/lk: estimate the background from frames [0, K) of the video", 1, 1000000);
+  p.String("--arm-length", &o.arm_length_path, "ARM.png",
+           "bgsub: straight horizontal arm at zero yaw (gives b)");
+  p.Int("--start", &o.start, "F", "bgsub/lk: first standstill frame (default 0)", 0);
+  p.Int("--standstill-frames", &standstill, "N", "bgsub/lk: standstill length (default 60)", 1,
+        100000);
+  p.Int("--threshold", &threshold, "T", "bgsub: grey-level difference threshold (default 45)", 1,
+        254);
+  p.Custom("--shoulder", "X,Y", "bgsub/lk: fixed shoulder position in pixels",
+           [&](const std::string& v) {
+             const std::string e = ParsePointArg(v, &shoulder);
+             if (e.empty()) o.shoulder_px = shoulder;
+             return e;
+           });
+  p.Custom("--roi", "X,Y,W,H", "bgsub/lk: analyse only this rectangle", [&](const std::string& v) {
+    const std::string e = ParseRectArg(v, &roi);
+    if (e.empty()) o.roi = roi;
+    return e;
+  });
+  p.Double("--initial-upper", &o.engine.lk.initial_upper_deg, "DEG",
+           "lk: upper-arm direction at the start (default -90)");
+  p.Double("--initial-fore", &o.engine.lk.initial_fore_deg, "DEG",
+           "lk: forearm direction at the start (default -90)");
+  p.String("--reference", &o.reference_path, "REF.png",
+           "marker: joint at zero yaw and zero bend (gives N)");
+  p.Int("--low", &o.engine.marker.low, "L", "marker: lower grey level of the markers (default 20)",
+        0, 255);
+  p.Int("--high", &o.engine.marker.high, "H",
+        "marker: upper grey level of the markers (default 80)", 0, 255);
+  p.Flag("--thesis", &thesis, "run the thesis method only, without the improvements");
+  if (auto code = p.Parse(args)) return *code;
+
+  if (engine_name.empty()) return p.UsageError("missing --engine (bgsub, lk or marker)");
+  if (!ParseEngineKind(engine_name, &o.engine.kind)) {
+    return p.UsageError("--engine: unknown engine '" + engine_name + "' (bgsub, lk or marker)");
+  }
+  if (output.empty()) return p.UsageError("missing -o ANGLES.tsv (the angle file to write)");
+  for (const auto& [flag, engines] : EngineFlags()) {
+    if (p.Given(flag) && !engines.count(o.engine.kind)) {
+      return p.UsageError(flag + " is not used by --engine " + engine_name);
+    }
+  }
+  o.engine.bgsub.standstill_frames = standstill;
+  o.engine.lk.standstill_frames = standstill;
+  o.engine.bgsub.threshold = threshold;
+  if (o.background_frames > 0) o.engine.bgsub.background_frames = o.background_frames;
+  o.engine.bgsub.thesis_mode = thesis;
+  o.engine.lk.thesis_mode = thesis;
+  o.engine.marker.thesis_mode = thesis;
+  if (Status st = o.Check(); !st) return p.UsageError(st.message());
+
+  InterruptGuard guard;
+  ProgressBar bar("analyze", -1, global.ShowProgress());
+  AnalysisCallbacks cb;
+  cb.cancel = &g_interrupted;
+  int frames_read = 0;
+  cb.on_phase = [&](const std::string& phase) { bar.SetLabel(phase); };
+  cb.on_progress = [&](int done, int total) {
+    bar.SetTotal(total);
+    bar.Update(done);
+    frames_read = done;
+  };
+  AnalysisSummary summary;
+  const Status st = AnalyzeToFile(o, output, cb, &summary);
+  bar.Finish();
+  if (!st) {
+    std::cerr << "armmimic-cli analyze: " << st.message() << "\n";
+    return kExitFailure;
+  }
+  const std::string source = summary.video.path.empty() ? o.inputs[0] : summary.video.path;
+  if (summary.cancelled) {
+    std::cerr << "analyze: interrupted; " << summary.frames << " rows kept in " << output
+              << " (marked complete=no)\n";
+    return kExitFailure;
+  }
+  if (!global.quiet) {
+    char rate[64];
+    std::snprintf(rate, sizeof(rate), "%.2f s, %.0f frames/s", summary.seconds,
+                  summary.seconds > 0 ? frames_read / summary.seconds : 0.0);
+    std::cerr << "analyze: " << summary.frames << " rows (" << summary.ok << " ok, " << summary.lost
+              << " lost) from " << BaseName(source) << " in " << rate << " -> " << output << "\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+ARMMIMIC_REGISTER_COMMAND(analyze, "analyze", "turn a video or images into an angle file", 20,
+                          RunAnalyze);
+
+}  // namespace armmimic::cli

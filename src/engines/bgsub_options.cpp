@@ -1,0 +1,54 @@
+#include "armmimic/engines/bgsub_options.h"
+
+#include <sstream>
+
+namespace armmimic {
+namespace {
+
+template <typename T>
+std::string Str(T v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+Status BgsubOptions::Check() const {
+  if (threshold < 1 || threshold > 254) {
+    return Status::Error("--threshold must be between 1 and 254 (got " + Str(threshold) + ")");
+  }
+  if (background_frames < 1) {
+    return Status::Error("--background-frames must be at least 1 (got " + Str(background_frames) +
+                         ")");
+  }
+  if (standstill_frames < 1) {
+    return Status::Error("--standstill-frames must be at least 1 (got " + Str(standstill_frames) +
+                         ")");
+  }
+  if (!(straight_ratio > 0 && straight_ratio < 1)) {
+    return Status::Error("bgsub straight_ratio must be in (0, 1) (got " + Str(straight_ratio) +
+                         ")");
+  }
+  if (closing_size < 0 || closing_size > 51) {
+    return Status::Error("bgsub closing_size must be in [0, 51] (got " + Str(closing_size) + ")");
+  }
+  if (min_arm_area_px < 1) {
+    return Status::Error("bgsub min_arm_area_px must be at least 1 (got " + Str(min_arm_area_px) +
+                         ")");
+  }
+  if (!(shoulder_height >= 0 && shoulder_height <= 1) ||
+      !(shoulder_side >= 0 && shoulder_side <= 0.5)) {
+    return Status::Error("bgsub shoulder_height must be in [0, 1] and shoulder_side in [0, 0.5]");
+  }
+  if (!(near_shoulder > 0)) {
+    return Status::Error("bgsub near_shoulder must be positive (got " + Str(near_shoulder) + ")");
+  }
+  if (!(bend_hysteresis >= 0 && bend_hysteresis < straight_ratio)) {
+    return Status::Error("bgsub bend_hysteresis must be in [0, straight_ratio) (got " +
+                         Str(bend_hysteresis) + ")");
+  }
+  return Status::Ok();
+}
+
+}  // namespace armmimic

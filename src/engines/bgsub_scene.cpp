@@ -1,0 +1,131 @@
+#include "bgsub_scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <opencv2/imgproc.hpp>
+
+#include "bgsub_masks.h"
+
+namespace armmimic::bgsub {
+namespace {
+
+cv::Rect Expand(const cv::Rect& r, double fraction, const cv::Size& limit) {
+  const int dx = static_cast<int>(r.width * fraction), dy = static_cast<int>(r.height * fraction);
+  return cv::Rect(r.x - dx, r.y - dy, r.width + 2 * dx, r.height + 2 * dy) &
+         cv::Rect(0, 0, limit.width, limit.height);
+}
+
+}  // namespace
+
+std::optional<cv::Point2d> SceneModel::Shoulder(int arm_side, const BgsubOptions& options) const {
+  if (fixed_shoulder) return fixed_shoulder;
+  if (!body_box || arm_side == 0) return std::nullopt;
+  const cv::Rect& b = *body_box;
+  const double fx = arm_side > 0 ? 1.0 - options.shoulder_side : options.shoulder_side;
+  return cv::Point2d(b.x + fx * b.width, b.y + (1.0 - options.shoulder_height) * b.height);
+}
+
+double SceneModel::ArmLengthScale() const {
+  if (std::isfinite(ref_reach_px) && ref_reach_px > 0) return ref_reach_px;
+  if (body_box) return 0.5 * body_box->height;
+  return 0.25 * std::max(background.cols, background.rows);
+}
+
+bool FindArmMask(const cv::Mat& gray, const SceneModel& scene, const BgsubOptions& options,
+                 bool largest_only, Buffers* buf, cv::Rect* box, std::string* note) {
+  const bool improved = !options.thesis_mode;
+  // Two-step differencing (5.2.4), optionally after removing a global brightness drift.
+  int off_bg = 0, off_still = 0;
+  if (improved && options.compensate_drift) {
+    const cv::Rect exclude =
+        scene.body_box ? Expand(*scene.body_box, 0.25, gray.size()) : cv::Rect();
+    off_bg = BrightnessDrift(gray, scene.background, exclude);
+    off_still = BrightnessDrift(gray, scene.standstill, exclude);
+  }
+  DifferenceMask(gray, scene.background, off_bg, options.threshold, &buf->person);
+  DifferenceMask(gray, scene.standstill, off_still, options.threshold, &buf->moved);
+  cv::bitwise_and(buf->person, buf->moved, buf->candidate);
+
+  // Movement of the head: above the shoulders and between them.
+  std::optional<cv::Point2d> shoulder = scene.Shoulder(scene.side, options);
+  if (improved && options.reject_head && scene.body_box && !largest_only) {
+    const cv::Rect& b = *scene.body_box;
+    const double left = b.x + options.shoulder_side * b.width;
+    const double right = b.x + (1.0 - options.shoulder_side) * b.width;
+    const double inset = 0.2 * (right - left);
+    const int top_y = static_cast<int>(b.y + (1.0 - options.shoulder_height) * b.height);
+    cv::Rect head(static_cast<int>(left + inset), 0, static_cast<int>(right - left - 2 * inset),
+                  top_y);
+    head &= cv::Rect(0, 0, gray.cols, gray.rows);
+    if (head.area() > 0) buf->candidate(head).setTo(0);
+  }
+
+  // Flood-fill connected regions (core MaskComponents).
+  buf->components = MaskComponents(buf->candidate, &buf->labels);
+  int pick = -1;
+  if (largest_only || !improved || !shoulder) {
+    pick = LargestComponent(buf->components);
+  } else {
+    const double radius = options.near_shoulder * scene.ArmLengthScale();
+    for (int i = 0; i < static_cast<int>(buf->components.size()); ++i) {
+      const Component& c = buf->components[static_cast<std::size_t>(i)];
+      if (DistanceToBox(*shoulder, c.box) > radius) continue;
+      if (pick < 0 || c.area_px > buf->components[static_cast<std::size_t>(pick)].area_px) pick = i;
+    }
+  }
+  if (pick < 0) {
+    *note = buf->components.empty() ? "nothing moved" : "no moving region near the shoulder";
+    return false;
+  }
+  const Component& c = buf->components[static_cast<std::size_t>(pick)];
+  if (c.area_px < options.min_arm_area_px) {
+    *note = "moving region smaller than " + std::to_string(options.min_arm_area_px) + " px";
+    return false;
+  }
+  ComponentMask(buf->labels, c, &buf->arm);
+  // Morphological closing fills the small gaps the threshold leaves.
+  const int pad = options.closing_size;
+  *box = cv::Rect(c.box.x - pad, c.box.y - pad, c.box.width + 2 * pad, c.box.height + 2 * pad) &
+         cv::Rect(0, 0, gray.cols, gray.rows);
+  Close(&buf->arm, c.box, options.closing_size);
+  return true;
+}
+
+void BuildScene(const cv::Mat& arm_length_gray, const BgsubOptions& options, Buffers* buf,
+                SceneModel* scene) {
+  // mask2: the standing body, the largest region of |standstill - background| > threshold.
+  DifferenceMask(scene->standstill, scene->background, 0, options.threshold, &buf->person);
+  std::vector<Component> body = MaskComponents(buf->person, nullptr);
+  const int largest = LargestComponent(body);
+  if (largest >= 0 && body[static_cast<std::size_t>(largest)].area_px >= options.min_arm_area_px) {
+    scene->body_box = body[static_cast<std::size_t>(largest)].box;
+  } else if (!scene->fixed_shoulder) {
+    scene->note = "no body in the standstill frames (check the background and --threshold)";
+  }
+
+  // The arm-length image: the straight horizontal arm at zero yaw gives b (5.2.3).
+  if (arm_length_gray.empty()) return;
+  cv::Rect box;
+  std::string note;
+  if (!FindArmMask(arm_length_gray, *scene, options, /*largest_only=*/true, buf, &box, &note)) {
+    if (scene->note.empty()) scene->note = "arm-length image: " + note + "; yaw is not measured";
+    return;
+  }
+  const RegionMoments m = ComputeMoments(buf->arm, box);
+  if (scene->side == 0) {
+    const double centre_x =
+        scene->body_box ? scene->body_box->x + 0.5 * scene->body_box->width
+                        : (scene->fixed_shoulder ? scene->fixed_shoulder->x : 0.5 * buf->arm.cols);
+    scene->side = m.cx >= centre_x ? 1 : -1;
+  }
+  const std::optional<cv::Point2d> shoulder = scene->Shoulder(scene->side, options);
+  if (!shoulder) return;
+  const ArmGeometry g = AnalyzeArm(buf->arm, box, *shoulder, options, /*was_bent=*/false);
+  if (!g.found) return;
+  scene->ref_major_px = g.axes.major;
+  scene->ref_reach_px =
+      ReachAlong(g.contour, *shoulder, ResolveDirection(g.axis_deg, *shoulder, {m.cx, m.cy}));
+}
+
+}  // namespace armmimic::bgsub
