@@ -1,0 +1,117 @@
+// WriteArmScene: the scene folder (scene.avi, armlength.png, background.png, truth.tsv).
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
+
+#include <unistd.h>
+
+#include <opencv2/videoio.hpp>
+
+#include "armmimic/core/angle_file.h"
+#include "armmimic/core/image_io.h"
+#include "armmimic/synth/arm_scene.h"
+
+namespace armmimic::synth {
+namespace {
+
+std::string Num(double v, int decimals) { return FormatNumber(v, decimals); }
+
+// Removes a temporary file unless released.
+class TempGuard {
+ public:
+  explicit TempGuard(std::string path) : path_(std::move(path)) {}
+  ~TempGuard() {
+    if (!path_.empty()) std::remove(path_.c_str());
+  }
+  void Release() { path_.clear(); }
+
+ private:
+  std::string path_;
+};
+
+}  // namespace
+
+Status WriteArmScene(const ArmSceneOptions& options, const std::string& outdir,
+                     const std::function<void(int, int)>& progress) {
+  Status st = options.Check();
+  if (!st.ok()) return st;
+  std::error_code ec;
+  std::filesystem::create_directories(outdir, ec);
+  if (ec || !std::filesystem::is_directory(outdir)) {
+    return Status::Error(outdir + ": cannot create the output folder" +
+                         (ec ? " (" + ec.message() + ")" : std::string(" (not a folder)")));
+  }
+  const ArmSceneRenderer renderer(options);
+  const std::string video_path = outdir + "/scene.avi";
+  const std::string temp_path =
+      outdir + "/.scene." + std::to_string(static_cast<long>(::getpid())) + ".tmp.avi";
+  TempGuard guard(temp_path);
+  {
+    const std::string& c = options.codec;
+    int api = cv::CAP_FFMPEG;
+    std::vector<int> params;
+    if (c == "MJPG") {
+      // OpenCV's own MJPEG writer: always present and honours the quality setting.
+      api = cv::CAP_OPENCV_MJPEG;
+      params = {cv::VIDEOWRITER_PROP_QUALITY, options.jpeg_quality};
+    }
+    const int fourcc = cv::VideoWriter::fourcc(c[0], c[1], c[2], c[3]);
+    cv::VideoWriter writer;
+    try {
+      writer.open(temp_path, api, fourcc, options.fps, options.size, params);
+    } catch (const cv::Exception&) {
+      writer.release();
+    }
+    if (!writer.isOpened()) {
+      return Status::Error(video_path + ": codec " + c +
+                           " has no encoder for AVI in this OpenCV build (try --codec MJPG)");
+    }
+    const int n = renderer.frame_count();
+    for (int f = 0; f < n; ++f) {
+      writer.write(renderer.Render(f));
+      if (progress) progress(f + 1, n);
+    }
+    writer.release();
+  }
+  std::error_code size_ec;
+  if (std::filesystem::file_size(temp_path, size_ec) == 0 || size_ec) {
+    return Status::Error(video_path + ": the " + options.codec + " encoder wrote no data");
+  }
+  ArmTruth arm_truth;
+  const cv::Mat arm_length = renderer.ArmLengthImage(&arm_truth);
+  st = WriteImageAtomically(outdir + "/armlength.png", arm_length);
+  if (!st.ok()) return st;
+  st = WriteImageAtomically(outdir + "/background.png", renderer.EmptyBackground());
+  if (!st.ok()) return st;
+
+  TruthFile truth;
+  truth.meta = {{"scene", "arm"},
+                {"seed", std::to_string(options.seed)},
+                {"width", std::to_string(options.size.width)},
+                {"height", std::to_string(options.size.height)},
+                {"fps", Num(options.fps, 3)},
+                {"background_frames", std::to_string(options.background_frames)},
+                {"standstill_frames", std::to_string(options.standstill_frames)},
+                {"motion_frames", std::to_string(options.motion_frames)},
+                {"motion", ArmMotionName(options.motion)},
+                {"side", ArmSideName(options.side)},
+                {"noise", Num(options.noise_sigma, 2)},
+                {"codec", options.codec},
+                {"contrast", Num(options.clothing_contrast, 2)},
+                {"drift", Num(options.lighting_drift, 3)},
+                {"shadow", options.shadow ? "yes" : "no"},
+                {"head_motion", options.head_motion ? "yes" : "no"},
+                {"upper_length_px", Num(renderer.upper_length_px(), 2)},
+                {"fore_length_px", Num(renderer.fore_length_px(), 2)}};
+  for (int f = 0; f < renderer.frame_count(); ++f) truth.rows.push_back(renderer.Truth(f).ToRow());
+  st = WriteTruthFile(outdir + "/truth.tsv", truth);
+  if (!st.ok()) return st;
+  // The video last, so a complete scene.avi means a complete folder.
+  if (std::rename(temp_path.c_str(), video_path.c_str()) != 0) {
+    return Status::Error(video_path + ": cannot rename the finished video into place");
+  }
+  guard.Release();
+  return Status::Ok();
+}
+
+}  // namespace armmimic::synth
