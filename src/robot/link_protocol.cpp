@@ -391,6 +391,13 @@ void LinkProtocol::SendNext(double now_s) {
     return;
   }
   const LinkLine& line = lines_[next_];
+  if (gate_) {
+    const std::string why = gate_(line);
+    if (!why.empty()) {
+      Fail(LinkError::kRefused, Where() + ": not sent: " + why);
+      return;
+    }
+  }
   if (on_sent_) on_sent_(line);
   out_ += line.text + settings_.terminator;
   written_ = true;

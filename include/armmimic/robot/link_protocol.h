@@ -44,7 +44,7 @@ struct LinkLine {
 };
 
 enum class LinkState { kIdle, kWaking, kWaitingReply, kDone, kFailed };
-enum class LinkError { kNone, kControllerError, kTimeout, kNotReady, kAborted };
+enum class LinkError { kNone, kControllerError, kTimeout, kNotReady, kAborted, kRefused };
 
 class LinkProtocol {
  public:
@@ -77,6 +77,10 @@ class LinkProtocol {
   // Lines received that were neither echo, prompt, error nor reply (e.g. stale prompts).
   int noise_lines() const { return noise_; }
 
+  // The last word before a line is written: returns "" to let it go, or why it may not (the
+  // stream then stops with kRefused and the line is never written). send uses it for the
+  // safety check of every line.
+  void SetGate(std::function<std::string(const LinkLine&)> gate) { gate_ = std::move(gate); }
   // Called before a line is written (for the journal's "sent" record) and after it is
   // acknowledged (with its reply lines).
   void SetSentCallback(std::function<void(const LinkLine&)> callback) {
@@ -122,6 +126,7 @@ class LinkProtocol {
   std::vector<std::string> replies_;
   std::vector<std::string> last_replies_;
   int noise_ = 0;
+  std::function<std::string(const LinkLine&)> gate_;
   std::function<void(const LinkLine&)> on_sent_;
   std::function<void(const LinkLine&, const std::vector<std::string>&)> on_ack_;
 };
