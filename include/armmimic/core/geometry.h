@@ -35,8 +35,10 @@ struct SemiAxes {
 SemiAxes ComputeSemiAxes(const RegionMoments& m);
 
 // Convex hull by Sklansky's three-coins scan (section 3.6), returned as indices into `points`,
-// counter-clockwise in image coordinates, starting at the left-most point. Degenerate inputs
-// (fewer than 3 distinct points, collinear points) return the extreme points.
+// starting at the left-most (then top-most) point, in cv::convexHull's default order: positive
+// signed area in raw (x, y), which is clockwise as seen on screen since y points down. Points
+// on hull edges and repeated points are not vertices. Degenerate inputs (fewer than 3 distinct
+// points, collinear points) return the distinct extreme points (0, 1 or 2).
 std::vector<int> ConvexHullIndices(const std::vector<cv::Point>& points);
 std::vector<cv::Point> ConvexHull(const std::vector<cv::Point>& points);
 

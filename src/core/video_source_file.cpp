@@ -1,0 +1,214 @@
+// VideoSource over a video file, decoded by OpenCV's FFmpeg backend.
+#include <cmath>
+
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "video_source_impl.h"
+
+namespace armmimic::internal {
+namespace {
+
+// Reads that fail in a row before the stream counts as ended: a damaged frame fails alone and
+// the decoder resumes at the next one.
+constexpr int kRetriesAfterFailure = 3;
+// Forward seeks up to this many frames decode their way there instead of asking the demuxer.
+constexpr int kMaxDecodeForward = 64;
+
+std::string FourccText(double value) {
+  const int v = static_cast<int>(value);
+  std::string s;
+  for (int i = 0; i < 4; ++i) {
+    const char c = static_cast<char>((v >> (8 * i)) & 0xFF);
+    if (c >= 32 && c < 127) s += c;
+  }
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+// Converts a decoded frame to 8-bit BGR in place; false for a layout we cannot use.
+bool ToBgr(cv::Mat* img) {
+  switch (img->channels()) {
+    case 3:
+      break;
+    case 1:
+      cv::cvtColor(*img, *img, cv::COLOR_GRAY2BGR);
+      break;
+    case 4:
+      cv::cvtColor(*img, *img, cv::COLOR_BGRA2BGR);
+      break;
+    default:
+      return false;
+  }
+  if (img->depth() != CV_8U) img->convertTo(*img, CV_8UC3, img->depth() == CV_16U ? 1 / 257.0 : 1);
+  return true;
+}
+
+class VideoFileSource : public VideoSource {
+ public:
+  explicit VideoFileSource(const std::string& path) { info_.path = path; }
+
+  Status Init() {
+    Status st = OpenCapture();
+    if (!st) return st;
+    cv::Mat first;
+    if (!Decode(&first)) {
+      return Status::Error(info_.path +
+                           ": no frame could be decoded (a video with zero frames, or damaged)");
+    }
+    if (!ToBgr(&first)) return Status::Error(info_.path + ": unsupported pixel layout");
+    info_.kind = SourceKind::kVideo;
+    info_.size = first.size();
+    const double fps = cap_.get(cv::CAP_PROP_FPS);
+    info_.fps = std::isfinite(fps) && fps > 0 && fps < 1000 ? fps : 0;
+    const double count = cap_.get(cv::CAP_PROP_FRAME_COUNT);
+    info_.frame_count =
+        std::isfinite(count) && count >= 1 ? static_cast<int>(std::lround(count)) : -1;
+    info_.codec = FourccText(cap_.get(cv::CAP_PROP_FOURCC));
+    // Keep the proving frame for the first Read() rather than rewinding the demuxer.
+    pending_ = first;
+    pending_index_ = 0;
+    next_ = 0;
+    cap_next_ = 1;
+    return Status::Ok();
+  }
+
+  const VideoInfo& info() const override { return info_; }
+
+  bool Read(Frame* frame, Status* status) override {
+    Status local;
+    Status& st = status ? *status : local;
+    st = Status::Ok();
+    cv::Mat img;
+    if (!pending_.empty() && pending_index_ == next_) {
+      img = pending_;
+      pending_.release();
+    } else {
+      pending_.release();
+      if (!Decode(&img)) {
+        const int failed = next_;
+        ++cap_next_;  // the decoder has moved past the frame it could not decode
+        // Not yet at the announced end: a damaged frame, or the file stops early?
+        if (info_.frame_count > 0 && failed < info_.frame_count) {
+          for (int i = 0; i < kRetriesAfterFailure; ++i) {
+            cv::Mat after;
+            const bool ok = Decode(&after);
+            ++cap_next_;
+            if (ok) {
+              pending_ = after;
+              pending_index_ = cap_next_ - 1;
+              next_ = pending_index_;
+              st = Status::Error(info_.path + ": frame " + std::to_string(failed) +
+                                 " cannot be decoded (damaged data; " + std::to_string(i + 1) +
+                                 " frame(s) lost)");
+              return false;
+            }
+          }
+        }
+        // The stream ended: from now on the count is what was really there.
+        if (info_.frame_count < 0 || failed < info_.frame_count) info_.frame_count = failed;
+        cap_next_ = next_ = failed;
+        return false;
+      }
+      ++cap_next_;
+    }
+    if (!ToBgr(&img)) {
+      st = Status::Error(info_.path + ": frame " + std::to_string(next_) +
+                         " has an unsupported pixel layout");
+      return false;
+    }
+    if (img.size() != info_.size) {
+      st = Status::Error(info_.path + ": frame " + std::to_string(next_) + " changes size");
+      return false;
+    }
+    frame->image = img;
+    frame->index = next_;
+    frame->time_s = info_.fps > 0 ? next_ / info_.fps : 0;
+    frame->name.clear();
+    ++next_;
+    return true;
+  }
+
+  Status Seek(int index) override {
+    if (index < 0 || (info_.frame_count >= 0 && index > info_.frame_count)) {
+      return Status::Error(info_.path + ": cannot seek to frame " + std::to_string(index) +
+                           "; the video has " + std::to_string(info_.frame_count) + " frames");
+    }
+    if (!pending_.empty() && pending_index_ == index) {
+      next_ = index;
+      return Status::Ok();
+    }
+    pending_.release();
+    if (index < cap_next_ || index - cap_next_ > kMaxDecodeForward) {
+      bool placed = false;
+      try {
+        placed = cap_.set(cv::CAP_PROP_POS_FRAMES, index) &&
+                 std::lround(cap_.get(cv::CAP_PROP_POS_FRAMES)) == index;
+      } catch (const cv::Exception&) {
+        placed = false;
+      }
+      if (placed) {
+        cap_next_ = next_ = index;
+        return Status::Ok();
+      }
+      // The demuxer cannot place us exactly: start again and decode forward.
+      Status st = OpenCapture();
+      if (!st) return st;
+      cap_next_ = 0;
+    }
+    while (cap_next_ < index) {
+      if (!cap_.grab()) {
+        const int reached = cap_next_;
+        next_ = cap_next_;
+        return Status::Error(info_.path + ": cannot seek to frame " + std::to_string(index) +
+                             "; decoding stops at frame " + std::to_string(reached));
+      }
+      ++cap_next_;
+    }
+    next_ = index;
+    return Status::Ok();
+  }
+
+ private:
+  Status OpenCapture() {
+    cap_.release();
+    bool opened = false;
+    try {
+      opened = cap_.open(info_.path, cv::CAP_FFMPEG);
+    } catch (const cv::Exception& e) {
+      return Status::Error(info_.path + ": cannot open as a video (" + e.msg + ")");
+    }
+    if (!opened) {
+      return Status::Error(info_.path +
+                           ": cannot open as a video (not a video file, damaged header, or a "
+                           "codec this build cannot decode)");
+    }
+    return Status::Ok();
+  }
+
+  bool Decode(cv::Mat* img) {
+    try {
+      return cap_.read(*img) && !img->empty();
+    } catch (const cv::Exception&) {
+      return false;
+    }
+  }
+
+  VideoInfo info_;
+  cv::VideoCapture cap_;
+  cv::Mat pending_;  // a frame already decoded, to be returned when next_ == pending_index_
+  int pending_index_ = -1;
+  int next_ = 0;      // index of the frame the next Read() returns
+  int cap_next_ = 0;  // index of the frame the capture decodes next
+};
+
+}  // namespace
+
+std::unique_ptr<VideoSource> OpenVideoFileSource(const std::string& path, Status* status) {
+  auto src = std::make_unique<VideoFileSource>(path);
+  *status = src->Init();
+  if (!*status) return nullptr;
+  return src;
+}
+
+}  // namespace armmimic::internal
