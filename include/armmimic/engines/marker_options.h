@@ -1,4 +1,5 @@
-// Options of the marker-joint engine (thesis chapter 4), with thesis defaults.
+// Options of the marker-joint engine (thesis chapter 4), with thesis defaults. Areas are given
+// for a 320x240 image and scale with the image area.
 #pragma once
 
 #include "armmimic/core/status.h"
@@ -6,12 +7,27 @@
 namespace armmimic {
 
 struct MarkerOptions {
-  int median_size = 5;             // median filter window
-  int low = 20;                    // two-level threshold: markers are in [low, high]
+  int median_size = 5;  // median filter window (4.2.1)
+  int low = 20;         // two-level threshold: marker pixels are in [low, high] (4.2.2)
   int high = 80;
-  int flood_range = 10;            // flood-fill value range (+/-)
-  bool thesis_mode = false;        // true: the three largest survivors, no geometry check
-  Status Check() const;
+  int flood_range = 10;  // flood-fill value range (+/-), relative to the seed (4.2.3)
+  int min_area = 10;     // elimination heuristics (4.2.4), pixels at 320x240
+  int max_area = 200;
+  double min_aspect = 0.2;  // bounding-box width / height
+  double max_aspect = 3.0;
+  double min_fill = 0.7;  // area / bounding-box area
+  // true: the thesis path only (the three largest survivors, bounding-box centres, no geometry
+  // check, no correction for the markers' depth on the cylinder).
+  bool thesis_mode = false;
+  // Beyond the thesis: a view is lost when the more turned lower marker shows less than this
+  // share of its full-face area (it is nearly edge-on, thesis: past about 35 degrees of yaw).
+  double min_foreshortening = 0.3;
+  // Geometry check: how far (relative to e) the upper marker may be from where the lower pair
+  // puts it, and the accepted range of n / N.
+  double geometry_tolerance = 0.15;
+  double min_width_ratio = 0.6;
+  double max_width_ratio = 1.1;
+  Status Check() const;  // messages name the flag (--low, --high, ...)
 };
 
 }  // namespace armmimic

@@ -1,0 +1,324 @@
+// Marker candidates, sub-pixel centres and the choice of the three markers (docs/marker.md).
+#include "marker_detect.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include <opencv2/imgproc.hpp>
+
+#include "armmimic/core/angles.h"
+
+namespace armmimic::internal {
+namespace {
+
+cv::Point2d BoxCentre(const cv::Rect& r) {
+  return {r.x + (r.width - 1) / 2.0, r.y + (r.height - 1) / 2.0};
+}
+
+int Find(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+}  // namespace
+
+void MedianWhereDark(const cv::Mat& gray, int ksize, int high, cv::Mat* out, cv::Mat* tile_out) {
+  out->create(gray.size(), CV_8UC1);
+  out->setTo(255);
+  const int r = ksize / 2;
+  constexpr int kTile = 40;
+  const cv::Rect image(0, 0, gray.cols, gray.rows);
+  for (int ty = 0; ty < gray.rows; ty += kTile) {
+    for (int tx = 0; tx < gray.cols; tx += kTile) {
+      const cv::Rect tile = cv::Rect(tx, ty, kTile, kTile) & image;
+      const cv::Rect crop =
+          cv::Rect(tile.x - r, tile.y - r, tile.width + 2 * r, tile.height + 2 * r) & image;
+      double darkest = 0;
+      cv::minMaxLoc(gray(crop), &darkest);
+      if (darkest > high) continue;  // no window here holds a pixel <= high
+      MedianFilter(gray(crop), ksize, tile_out);
+      (*tile_out)(cv::Rect(tile.tl() - crop.tl(), tile.size())).copyTo((*out)(tile));
+    }
+  }
+}
+
+std::vector<MarkerBlob> FindMarkerCandidates(const cv::Mat& bgr, const MarkerOptions& options,
+                                             MarkerScratch* s) {
+  if (bgr.channels() == 3) {
+    cv::cvtColor(bgr, s->gray, cv::COLOR_BGR2GRAY);
+  } else {
+    bgr.copyTo(s->gray);
+  }
+  MedianWhereDark(s->gray, options.median_size, options.high, &s->filtered, &s->tile);
+  s->components =
+      FloodFillComponents(s->filtered, options.low, options.high, options.flood_range, &s->labels);
+  const double scale = static_cast<double>(bgr.cols) * bgr.rows / (320.0 * 240.0);
+  const double min_area = options.min_area * scale;
+  const double max_area = options.max_area * scale;
+
+  // A marker's antialiased rim seeds components of its own (the range is relative to the seed):
+  // small components whose boxes overlap are fragments of one blob and are merged.
+  std::vector<int> small;
+  for (int i = 0; i < static_cast<int>(s->components.size()); ++i) {
+    const Component& c = s->components[i];
+    if (c.area_px <= max_area && c.box.area() <= 4 * max_area) small.push_back(i);
+  }
+  std::sort(small.begin(), small.end(),
+            [&](int a, int b) { return s->components[a].box.x < s->components[b].box.x; });
+  std::vector<int> parent(small.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (std::size_t i = 0; i < small.size(); ++i) {
+    const cv::Rect& a = s->components[small[i]].box;
+    for (std::size_t j = i + 1; j < small.size(); ++j) {
+      const cv::Rect& b = s->components[small[j]].box;
+      if (b.x >= a.x + a.width) break;
+      if (b.y < a.y + a.height && a.y < b.y + b.height) {
+        parent[Find(parent, static_cast<int>(j))] = Find(parent, static_cast<int>(i));
+      }
+    }
+  }
+  std::vector<MarkerBlob> merged(small.size());
+  std::vector<bool> used(small.size(), false);
+  for (std::size_t i = 0; i < small.size(); ++i) {
+    const int root = Find(parent, static_cast<int>(i));
+    const Component& c = s->components[small[i]];
+    MarkerBlob& m = merged[root];
+    m.box = used[root] ? (m.box | c.box) : c.box;
+    m.area_px += c.area_px;
+    used[root] = true;
+  }
+  std::vector<MarkerBlob> out;
+  for (std::size_t i = 0; i < merged.size(); ++i) {
+    if (!used[i]) continue;
+    MarkerBlob& m = merged[i];
+    const double aspect = static_cast<double>(m.box.width) / m.box.height;
+    const double fill = static_cast<double>(m.area_px) / m.box.area();
+    if (m.area_px < min_area || m.area_px > max_area) continue;
+    if (aspect < options.min_aspect || aspect > options.max_aspect) continue;
+    if (fill < options.min_fill) continue;
+    m.centre = BoxCentre(m.box);
+    out.push_back(m);
+  }
+  std::sort(out.begin(), out.end(), [](const MarkerBlob& a, const MarkerBlob& b) {
+    return a.area_px != b.area_px ? a.area_px > b.area_px : a.box.y < b.box.y;
+  });
+  return out;
+}
+
+bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_ratio,
+                  MarkerBlob* blob) {
+  const cv::Rect w(blob->box.x - 2, blob->box.y - 2, blob->box.width + 4, blob->box.height + 4);
+  if (w.x < 0 || w.y < 0 || w.x + w.width > gray.cols || w.y + w.height > gray.rows) return false;
+  const double xc = blob->centre.x;
+  const double yc = blob->centre.y;
+  // The ring of pixels around the blob, fitted by a plane (the surface's shading), twice: the
+  // second time without the pixels far off the first fit (another surface, clutter).
+  std::vector<cv::Point> ring;
+  ring.reserve(2 * (w.width + w.height));
+  for (int x = w.x; x < w.x + w.width; ++x) {
+    ring.emplace_back(x, w.y);
+    ring.emplace_back(x, w.y + w.height - 1);
+  }
+  for (int y = w.y + 1; y < w.y + w.height - 1; ++y) {
+    ring.emplace_back(w.x, y);
+    ring.emplace_back(w.x + w.width - 1, y);
+  }
+  cv::Vec3d plane(0, 0, 0);
+  auto level = [&](double x, double y) {
+    return plane[0] + plane[1] * (x - xc) + plane[2] * (y - yc);
+  };
+  double threshold = 1e9;
+  for (int pass = 0; pass < 2; ++pass) {
+    cv::Matx33d a = cv::Matx33d::zeros();
+    cv::Vec3d b(0, 0, 0);
+    int used = 0;
+    for (const cv::Point& p : ring) {
+      const double v = gray.at<uchar>(p);
+      if (pass > 0 && std::abs(v - level(p.x, p.y)) > threshold) continue;
+      const cv::Vec3d f(1, p.x - xc, p.y - yc);
+      a += f * f.t();
+      b += f * v;
+      ++used;
+    }
+    if (used < 6) return false;
+    cv::Vec3d solved;
+    if (!cv::solve(a, b, solved, cv::DECOMP_CHOLESKY)) return false;
+    plane = solved;
+    std::vector<double> residuals;
+    residuals.reserve(ring.size());
+    for (const cv::Point& p : ring)
+      residuals.push_back(std::abs(gray.at<uchar>(p) - level(p.x, p.y)));
+    std::nth_element(residuals.begin(), residuals.begin() + residuals.size() / 2, residuals.end());
+    threshold = std::max(4.0, 3 * 1.4826 * residuals[residuals.size() / 2]);
+  }
+  double darkest = 255;
+  for (int y = blob->box.y; y < blob->box.y + blob->box.height; ++y) {
+    const uchar* row = filtered.ptr<uchar>(y);
+    for (int x = blob->box.x; x < blob->box.x + blob->box.width; ++x)
+      darkest = std::min<double>(darkest, row[x]);
+  }
+  const double surround = level(xc, yc);
+  const double core = core_ratio > 0 ? core_ratio * surround : darkest;
+  if (surround - core < 10) return false;
+  double sum = 0, sx = 0, sy = 0;
+  for (int y = w.y; y < w.y + w.height; ++y) {
+    const uchar* row = gray.ptr<uchar>(y);
+    for (int x = w.x; x < w.x + w.width; ++x) {
+      const double s = level(x, y);
+      const double m = core_ratio > 0 ? core_ratio * s : core;
+      const double c = std::clamp((s - row[x]) / std::max(1.0, s - m), 0.0, 1.0);
+      sum += c;
+      sx += c * x;
+      sy += c * y;
+    }
+  }
+  if (sum < 1) return false;
+  blob->centre = {sx / sum, sy / sum};
+  blob->coverage_px = sum;
+  blob->surround = surround;
+  // The marker's own level: the median image around the centre.
+  const cv::Point c(cvRound(blob->centre.x), cvRound(blob->centre.y));
+  double core_sum = 0;
+  int core_n = 0;
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      const cv::Point p(c.x + dx, c.y + dy);
+      if (!blob->box.contains(p)) continue;
+      core_sum += filtered.at<uchar>(p);
+      ++core_n;
+    }
+  }
+  blob->core = core_n ? core_sum / core_n : darkest;
+  blob->refined = true;
+  return true;
+}
+
+namespace {
+
+MarkerTriple Ordered(const MarkerBlob& upper, const MarkerBlob& a, const MarkerBlob& b) {
+  MarkerTriple t;
+  t.upper = upper;
+  t.left = a.centre.x <= b.centre.x ? a : b;
+  t.right = a.centre.x <= b.centre.x ? b : a;
+  return t;
+}
+
+bool ThreeLargest(const std::vector<MarkerBlob>& blobs, MarkerTriple* out) {
+  if (blobs.size() < 3) return false;
+  int top = 0;
+  for (int i = 1; i < 3; ++i) {
+    if (blobs[i].centre.y < blobs[top].centre.y) top = i;
+  }
+  const int a = top == 0 ? 1 : 0;
+  const int b = top == 2 ? 1 : 2;
+  *out = Ordered(blobs[top], blobs[a], blobs[b]);
+  return true;
+}
+
+}  // namespace
+
+bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, bool thesis_mode,
+                           MarkerTriple* out) {
+  if (thesis_mode) return ThreeLargest(blobs, out);
+  const int count = std::min<int>(static_cast<int>(blobs.size()), 16);
+  double best = 1e9;
+  for (int i = 0; i < count; ++i) {
+    for (int j = 0; j < count; ++j) {
+      const MarkerBlob& a = blobs[i];
+      const MarkerBlob& b = blobs[j];
+      const double n = b.centre.x - a.centre.x;
+      if (i == j || n < 4) continue;
+      const double dy = std::abs(a.centre.y - b.centre.y);
+      if (dy > 0.15 * n + 2) continue;
+      const cv::Point2d mid = (a.centre + b.centre) * 0.5;
+      const double size_diff = std::abs(a.area_px - b.area_px) / double(a.area_px + b.area_px);
+      for (int k = 0; k < count; ++k) {
+        if (k == i || k == j) continue;
+        const MarkerBlob& c = blobs[k];
+        if (c.centre.y > mid.y - 0.3 * n) continue;
+        const double off = std::abs(c.centre.x - mid.x);
+        if (off > 0.2 * n + 2) continue;
+        const double score = off / n + dy / n + 0.5 * size_diff;
+        if (score < best) {
+          best = score;
+          *out = Ordered(c, a, b);
+        }
+      }
+    }
+  }
+  return best < 1e9;
+}
+
+bool ChooseTriple(const std::vector<MarkerBlob>& blobs, const MarkerReference& ref,
+                  const MarkerOptions& options, MarkerTriple* out) {
+  if (options.thesis_mode) return ThreeLargest(blobs, out);
+  const int count = std::min<int>(static_cast<int>(blobs.size()), 24);
+  const double big_n = ref.n_px;
+  const double e = ref.e_px;
+  double best = 1e9;
+  for (int i = 0; i < count; ++i) {
+    for (int j = 0; j < count; ++j) {
+      const MarkerBlob& a = blobs[i];
+      const MarkerBlob& b = blobs[j];
+      if (i == j || b.centre.x <= a.centre.x) continue;
+      const double ratio = (b.centre.x - a.centre.x) / big_n;
+      if (ratio < options.min_width_ratio || ratio > options.max_width_ratio) continue;
+      const double dy = std::abs(a.centre.y - b.centre.y);
+      if (dy > 0.1 * big_n + 2) continue;
+      if (std::min(a.area_px, b.area_px) * 5 < std::max(a.area_px, b.area_px)) continue;
+      const double cos_yaw = std::min(1.0, ratio);
+      const cv::Point2d mid = (a.centre + b.centre) * 0.5;
+      const double pivot_y = mid.y - e;
+      for (int k = 0; k < count; ++k) {
+        if (k == i || k == j) continue;
+        const MarkerBlob& c = blobs[k];
+        if (c.centre.y > mid.y - 0.5 * e) continue;
+        const double dx = (c.centre.x - mid.x) / cos_yaw;
+        const double resid = std::abs(std::hypot(dx, pivot_y - c.centre.y) - e) / e;
+        if (resid > options.geometry_tolerance) continue;
+        const double score = resid + dy / big_n;
+        if (score < best) {
+          best = score;
+          *out = Ordered(c, a, b);
+        }
+      }
+    }
+  }
+  return best < 1e9;
+}
+
+MarkerAngles ComputeMarkerAngles(const MarkerTriple& t, const MarkerReference& ref,
+                                 bool thesis_mode) {
+  MarkerAngles out;
+  const double n = t.right.centre.x - t.left.centre.x;
+  const double ratio = std::clamp(n / ref.n_px, 0.0, 1.0);
+  const double yaw = std::acos(ratio);  // eq. 4-1
+  out.yaw_deg = DegFromRad(yaw);
+  const cv::Point2d mid = (t.left.centre + t.right.centre) * 0.5;
+  out.pivot_px = {mid.x, mid.y - ref.e_px};
+  double dx = t.upper.centre.x - mid.x;
+  double signed_yaw = yaw;
+  if (!thesis_mode && t.left.coverage_px > 0 && t.right.coverage_px > 0) {
+    const double al = t.left.coverage_px;
+    const double ar = t.right.coverage_px;
+    out.foreshortening = std::min(al, ar) / ref.face_area_px;
+    // The turned-away marker shows less area; that gives the sign acos cannot.
+    const double tan_alpha = std::tan(RadFromDeg(ref.alpha_deg));
+    const double yaw_area = std::atan(((al - ar) / (al + ar)) / std::max(0.05, tan_alpha));
+    signed_yaw = yaw_area < 0 ? -yaw : yaw;
+    // The upper marker sits on the front surface, R(1 - cos alpha) nearer the camera than the
+    // lower pair's midpoint: after yaw it is shifted sideways by that depth times sin(yaw).
+    const double depth = 0.5 * ref.n_px * std::tan(0.5 * RadFromDeg(ref.alpha_deg));
+    dx -= depth * std::sin(signed_yaw);
+    out.pivot_px.x += depth * std::sin(signed_yaw);
+  }
+  out.signed_yaw_deg = DegFromRad(signed_yaw);
+  const double cos_yaw = std::max(1e-3, std::cos(yaw));
+  // Eqs. 4-2..4-5: the upper marker's offset from the pivot; the horizontal part shrinks by
+  // cos(yaw) (a = e / cos(yaw) in the thesis).
+  out.bend_deg = DegFromRad(std::atan2(-dx / cos_yaw, out.pivot_px.y - t.upper.centre.y));
+  return out;
+}
+
+}  // namespace armmimic::internal

@@ -1,0 +1,84 @@
+// Private: the steps of the marker-joint engine (docs/marker.md), as pure functions so tests
+// and the benchmark can reach them through the engine only.
+#pragma once
+
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "armmimic/core/geometry.h"
+#include "armmimic/engines/marker_options.h"
+
+namespace armmimic::internal {
+
+// A candidate marker: one flood-fill component, or fragments of one merged.
+struct MarkerBlob {
+  cv::Rect box;
+  int area_px = 0;
+  cv::Point2d centre;      // bounding-box centre (thesis), then the refined centre
+  double coverage_px = 0;  // refined: antialiasing-aware area (sum of coverage)
+  double surround = 0;     // refined: background level at the centre
+  double core = 0;         // refined: marker level at the centre (median image)
+  bool refined = false;
+};
+
+// Per-image buffers reused from frame to frame.
+struct MarkerScratch {
+  cv::Mat gray, filtered, labels, tile;
+  std::vector<Component> components;
+};
+
+// The thesis' median filter (4.2.1), computed only where it can matter: a pixel whose window
+// holds no value <= `high` has a median above `high` and gets 255, which thresholds the same.
+void MedianWhereDark(const cv::Mat& gray, int ksize, int high, cv::Mat* out, cv::Mat* tile);
+
+// Thesis 4.2.1-4.2.4: grey, median filter, flood-fill components in [low, high], fragments of
+// one marker merged, then the area / aspect / fill heuristics (areas scaled to the image).
+// Survivors are sorted by area, largest first.
+std::vector<MarkerBlob> FindMarkerCandidates(const cv::Mat& bgr, const MarkerOptions& options,
+                                             MarkerScratch* scratch);
+
+// Sub-pixel centre and coverage area of a blob: a plane is fitted to the ring around it (the
+// surface's shading), and every pixel of the window counts by how dark it is between the
+// surround and the marker level. `core_ratio` is marker / surround level learnt from the
+// reference (<= 0: take the darkest median-filtered value in the blob). False when the blob
+// touches the image border or has no contrast (the blob keeps its bounding-box centre).
+bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_ratio,
+                  MarkerBlob* blob);
+
+// The three markers, once chosen: upper, then the lower pair left to right.
+struct MarkerTriple {
+  MarkerBlob upper, left, right;
+};
+
+// Reference calibration (4.3.1): N, e and what the refinements need.
+struct MarkerReference {
+  double n_px = 0;          // N: lower markers' horizontal distance at zero yaw
+  double e_px = 0;          // pivot distance: half the upper-to-lower-midpoint height
+  double alpha_deg = 0;     // the lower markers' angle from the front, from their areas
+  double face_area_px = 0;  // the upper marker's area (facing the camera)
+  double core_ratio = 0;    // marker / surround level
+  MarkerTriple markers;
+};
+
+// The reference's markers: the most symmetric triple (two side by side, one centred above).
+// In thesis mode: the three largest, the top-most as upper.
+bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, bool thesis_mode,
+                           MarkerTriple* out);
+// The current image's markers. Thesis mode: the three largest. Otherwise the triple that best
+// fits the joint's geometry given the reference; false when none fits.
+bool ChooseTriple(const std::vector<MarkerBlob>& blobs, const MarkerReference& ref,
+                  const MarkerOptions& options, MarkerTriple* out);
+
+// Eqs. 4-1..4-5 and the yaw correction; see docs/marker.md.
+struct MarkerAngles {
+  double yaw_deg = 0;         // >= 0
+  double signed_yaw_deg = 0;  // sign from the lower markers' areas (default mode)
+  double bend_deg = 0;        // CCW on screen positive, 0 = straight
+  double foreshortening = 1;  // smaller lower-marker area / face area
+  cv::Point2d pivot_px;
+};
+MarkerAngles ComputeMarkerAngles(const MarkerTriple& t, const MarkerReference& ref,
+                                 bool thesis_mode);
+
+}  // namespace armmimic::internal
