@@ -194,6 +194,7 @@ void PumaEmulator::ExecuteLine(const std::string& raw, double now_s) {
     return;
   }
   const int n = ++lines_received_;
+  source_ = Trim(raw);
   if (options_.silent_after >= 0 && !silence_done_ && n == options_.silent_after + 1) {
     silence_done_ = true;
     silenced_ = true;
@@ -367,7 +368,7 @@ std::string PumaEmulator::Instruction(const std::string& text, double now_s,
     }
   }
   (void)monitor_speed;
-  return StartMotion(to, speed, text, now_s);
+  return StartMotion(to, speed, source_, now_s);
 }
 
 std::string PumaEmulator::StartMotion(const robot::JointArray& to, double speed_pct,
@@ -404,6 +405,7 @@ void PumaEmulator::StepProgram(double now_s) {
       return;
     }
     const std::string instr = program[run_pc_++];
+    source_ = run_name_ + " step " + std::to_string(run_pc_) + ": " + instr;
     const std::string err = Instruction(instr, now_s, nullptr);
     if (!err.empty()) {
       mode_ = Mode::kTop;

@@ -125,6 +125,7 @@ class PumaEmulator {
   bool silenced_ = false;
   bool silence_done_ = false;
   double now_s_ = 0;
+  std::string source_;  // the line or program step being executed, for the log
 };
 
 }  // namespace armmimic::sim
