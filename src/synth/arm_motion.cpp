@@ -52,17 +52,16 @@ ArmMotionPlan::ArmMotionPlan(ArmMotion motion, int frames, uint64_t seed,
       keys_ = Repeat({hang, {90, 0, 0}, hang}, cycles);
       break;
     case ArmMotion::kBend:
-      keys_ = Repeat({hang, {-90, 120, 0}, {-45, 40, 0}, {0, 150, 0}, {0, 0, 0}, hang}, cycles);
+      keys_ = Repeat({hang, {-80, 150, 0}, {-10, 40, 0}, hang}, cycles);
       break;
     case ArmMotion::kYaw:
-      keys_ =
-          Repeat({hang, {0, 0, 0}, {0, 0, 70}, {0, 0, 10}, {0, 0, 45}, {0, 0, 0}, hang}, cycles);
+      keys_ = Repeat({hang, {0, 0, 0}, {0, 0, 70}, {0, 0, 0}, {0, 0, 40}}, cycles);
       break;
     case ArmMotion::kMixed: {
       std::mt19937_64 rng(seed * 0x9E3779B97F4A7C15ULL + 0x51ED);
       std::uniform_real_distribution<double> upper(-90.0, 90.0), bend(0.0, 150.0);
       keys_.push_back(hang);
-      const int count = std::max(3, frames / 45);
+      const int count = std::max(2, frames / 60);
       for (int k = 0; k < count; ++k) {
         ArmPose next = hang;
         for (int attempt = 0; attempt < 200; ++attempt) {

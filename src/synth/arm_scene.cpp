@@ -430,7 +430,11 @@ ArmSceneRenderer::ArmSceneRenderer(const ArmSceneOptions& options)
   const cv::Scalar ref = cv::mean(m.background(arm_zone));
   const cv::Vec3f refv(static_cast<float>(ref[0]), static_cast<float>(ref[1]),
                        static_cast<float>(ref[2]));
-  m.shirt = Clamp255(refv + (shirt_base - refv) * static_cast<float>(options.clothing_contrast));
+  // The limbs' shading darkens their middle to about 0.86 of the colour: compensate, so that at
+  // contrast 0 the lit sleeve matches the wall.
+  const cv::Vec3f wall_like = refv / 0.86f;
+  m.shirt = Clamp255(wall_like +
+                     (shirt_base - wall_like) * static_cast<float>(options.clothing_contrast));
   m.BuildBody();
   m.plan = std::make_unique<ArmMotionPlan>(options.motion, options.motion_frames, options.seed,
                                            [&m](const ArmPose& p) { return m.Valid(p); });
