@@ -1,11 +1,21 @@
-// armmimic: the desktop application (placeholder until the GUI issue lands its widgets).
+// armmimic: the desktop application. Load a video, watch the overlay, export the angle file and
+// send the sequence to the PUMA controller.
 #include <QApplication>
-#include <QLabel>
+#include <QStringList>
+
+#include "armmimic/version.h"
+#include "main_window.h"
 
 int main(int argc, char** argv) {
+  QApplication::setHighDpiScaleFactorRoundingPolicy(
+      Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);
   QApplication app(argc, argv);
+  QApplication::setOrganizationName("armmimic");
   QApplication::setApplicationName("armmimic");
-  QLabel label("armmimic");
-  label.show();
+  QApplication::setApplicationVersion(ARMMIMIC_VERSION);
+  armmimic::gui::MainWindow window;
+  window.show();
+  const QStringList args = QApplication::arguments().mid(1);
+  if (!args.isEmpty()) window.openInputs(args);
   return QApplication::exec();
 }

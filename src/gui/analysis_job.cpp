@@ -1,0 +1,145 @@
+#include "analysis_job.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFileInfo>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "armmimic/core/atomic_file.h"
+#include "video_player.h"
+
+namespace armmimic::gui {
+
+void AnalysisWorker::analyze(const AnalysisOptions& options, const QString& output_path,
+                             bool live) {
+  AnalysisCallbacks cb;
+  cb.cancel = cancel_;
+  cb.on_phase = [this](const std::string& text) { emit phase(QString::fromStdString(text)); };
+  cb.on_progress = [this](int done, int total) { emit progress(done, total); };
+  cb.on_measurement = [this, live](const Frame& frame, const ArmMeasurement& m) {
+    if (live) emit liveFrame(frame.index, ImageFromMat(frame.image), frame.time_s);
+    emit measured(m);
+  };
+  AnalysisSummary summary;
+  const Status st = AnalyzeToFile(options, output_path.toStdString(), cb, &summary);
+  emit analysisFinished(st ? QString() : QString::fromStdString(st.message()), summary);
+}
+
+void AnalysisWorker::estimateBackground(const QStringList& inputs, int start, int count,
+                                        const QString& output_path) {
+  std::vector<std::string> list;
+  for (const QString& s : inputs) list.push_back(s.toStdString());
+  AnalysisCallbacks cb;
+  cb.cancel = cancel_;
+  cb.on_progress = [this](int done, int total) { emit progress(done, total); };
+  cv::Mat background;
+  Status st = EstimateBackground(list, start, count, &background, cb);
+  if (st && cancel_->load()) st = Status::Error("background estimation cancelled");
+  if (st) {
+    std::vector<uchar> png;
+    const std::string path = output_path.toStdString();
+    std::string ext = QFileInfo(output_path).suffix().toLower().toStdString();
+    if (ext.empty()) ext = "png";
+    if (!cv::imencode("." + ext, background, png)) {
+      st = Status::Error(path + ": cannot encode the background as ." + ext);
+    } else {
+      st = WriteFileAtomically(path, std::string(png.begin(), png.end()));
+    }
+  }
+  emit backgroundFinished(st ? QString() : QString::fromStdString(st.message()), output_path);
+}
+
+AnalysisJob::AnalysisJob(QObject* parent) : QObject(parent), worker_(new AnalysisWorker(&cancel_)) {
+  qRegisterMetaType<armmimic::AnalysisOptions>();
+  qRegisterMetaType<armmimic::ArmMeasurement>();
+  qRegisterMetaType<armmimic::AnalysisSummary>();
+  worker_->moveToThread(&thread_);
+  connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
+  connect(worker_, &AnalysisWorker::phase, this, &AnalysisJob::phase);
+  connect(worker_, &AnalysisWorker::progress, this, &AnalysisJob::progress);
+  connect(worker_, &AnalysisWorker::measured, this, &AnalysisJob::measured);
+  connect(worker_, &AnalysisWorker::liveFrame, this, &AnalysisJob::liveFrame);
+  connect(worker_, &AnalysisWorker::analysisFinished, this,
+          [this](const QString& error, const AnalysisSummary& summary) {
+            running_ = false;
+            summary_ = summary;
+            if (!error.isEmpty()) {
+              result_path_.clear();
+              emit failed(error);
+              emit finished(false, false);
+              return;
+            }
+            result_path_ = pending_path_;
+            emit finished(true, summary.cancelled);
+          });
+  connect(worker_, &AnalysisWorker::backgroundFinished, this,
+          [this](const QString& error, const QString& path) {
+            running_ = false;
+            if (!error.isEmpty()) {
+              emit failed(error);
+              emit finished(false, cancel_.load());
+              return;
+            }
+            emit backgroundReady(path);
+            emit finished(true, false);
+          });
+  thread_.setObjectName("armmimic-analysis");
+  thread_.start();
+}
+
+AnalysisJob::~AnalysisJob() {
+  cancel_.store(true);
+  thread_.quit();
+  thread_.wait();
+}
+
+bool AnalysisJob::start(const AnalysisOptions& options, bool live) {
+  if (running_) return false;
+  const Status st = options.Check();
+  if (!st) {
+    emit failed(QString::fromStdString(st.message()));
+    return false;
+  }
+  if (!session_.isValid()) {
+    emit failed(
+        tr("cannot create a temporary folder for the results: %1").arg(session_.errorString()));
+    return false;
+  }
+  cancel_.store(false);
+  running_ = true;
+  pending_path_ = QDir(session_.path()).filePath(QString("angles-%1.tsv").arg(++run_));
+  emit started();
+  QMetaObject::invokeMethod(worker_, [w = worker_, options, path = pending_path_, live] {
+    w->analyze(options, path, live);
+  });
+  return true;
+}
+
+bool AnalysisJob::startBackground(const QStringList& inputs, int start, int count,
+                                  const QString& path) {
+  if (running_) return false;
+  cancel_.store(false);
+  running_ = true;
+  emit started();
+  QMetaObject::invokeMethod(worker_, [w = worker_, inputs, start, count, path] {
+    w->estimateBackground(inputs, start, count, path);
+  });
+  return true;
+}
+
+void AnalysisJob::cancel() { cancel_.store(true); }
+
+bool AnalysisJob::waitForFinished(int timeout_ms) {
+  QElapsedTimer t;
+  t.start();
+  while (running_ && t.elapsed() < timeout_ms) {
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+    QThread::msleep(2);
+  }
+  QCoreApplication::processEvents();
+  return !running_;
+}
+
+}  // namespace armmimic::gui

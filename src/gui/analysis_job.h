@@ -1,0 +1,83 @@
+// AnalysisJob: runs armmimic::AnalyzeToFile (the same call as `armmimic-cli analyze`) or
+// EstimateBackground on a worker thread. Cancel is an atomic flag; progress, measurements and the
+// end are signals. The angle file goes to a session folder; exporting copies it, so the GUI's
+// export is byte-for-byte what the CLI writes for the same options.
+#pragma once
+
+#include <atomic>
+
+#include <QImage>
+#include <QObject>
+#include <QString>
+#include <QTemporaryDir>
+#include <QThread>
+
+#include "armmimic/engines/analysis.h"
+
+namespace armmimic::gui {
+
+class AnalysisWorker : public QObject {
+  Q_OBJECT
+ public:
+  explicit AnalysisWorker(std::atomic<bool>* cancel) : cancel_(cancel) {}
+
+ public slots:
+  void analyze(const armmimic::AnalysisOptions& options, const QString& output_path, bool live);
+  void estimateBackground(const QStringList& inputs, int start, int count,
+                          const QString& output_path);
+
+ signals:
+  void phase(const QString& text);
+  void progress(int done, int total);
+  void measured(const armmimic::ArmMeasurement& m);
+  void liveFrame(int index, const QImage& image, double time_s);
+  void analysisFinished(const QString& error, const armmimic::AnalysisSummary& summary);
+  void backgroundFinished(const QString& error, const QString& output_path);
+
+ private:
+  std::atomic<bool>* cancel_;
+};
+
+class AnalysisJob : public QObject {
+  Q_OBJECT
+ public:
+  explicit AnalysisJob(QObject* parent = nullptr);
+  ~AnalysisJob() override;
+
+  bool isRunning() const { return running_; }
+  // Starts an analysis; returns false (and emits failed) when the options do not check out.
+  bool start(const AnalysisOptions& options, bool live = false);
+  bool startBackground(const QStringList& inputs, int start, int count, const QString& path);
+  void cancel();
+  // The angle file of the last finished analysis ("" when none).
+  QString resultPath() const { return result_path_; }
+  const AnalysisSummary& summary() const { return summary_; }
+  bool waitForFinished(int timeout_ms);  // for tests and shutdown; pumps events
+
+ signals:
+  void started();
+  void phase(const QString& text);
+  void progress(int done, int total);
+  void measured(const armmimic::ArmMeasurement& m);
+  void liveFrame(int index, const QImage& image, double time_s);
+  void finished(bool ok, bool cancelled);
+  void backgroundReady(const QString& path);
+  void failed(const QString& message);
+
+ private:
+  QThread thread_;
+  AnalysisWorker* worker_;
+  std::atomic<bool> cancel_{false};
+  QTemporaryDir session_;
+  bool running_ = false;
+  int run_ = 0;
+  QString pending_path_;
+  QString result_path_;
+  AnalysisSummary summary_;
+};
+
+}  // namespace armmimic::gui
+
+Q_DECLARE_METATYPE(armmimic::AnalysisOptions)
+Q_DECLARE_METATYPE(armmimic::ArmMeasurement)
+Q_DECLARE_METATYPE(armmimic::AnalysisSummary)

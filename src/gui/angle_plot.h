@@ -1,0 +1,49 @@
+// AnglePlot: upper arm, forearm and yaw against the frame (Qt Charts). Lost frames show as red
+// marks along the bottom, the video cursor as a vertical line; a click seeks to that frame.
+#pragma once
+
+#include <QChartView>
+
+#include "result_store.h"
+
+class QLineSeries;
+class QScatterSeries;
+class QValueAxis;
+
+namespace armmimic::gui {
+
+class AnglePlot : public QChartView {
+  Q_OBJECT
+ public:
+  explicit AnglePlot(QWidget* parent = nullptr);
+
+  void setFrameRange(int frame_count);
+  // Rebuilds the series from `results` (called on the window's throttle timer).
+  void setResults(const ResultStore& results);
+  void setCursorFrame(int frame);
+  int cursorFrame() const { return cursor_frame_; }
+  int pointCount() const;  // points on the angle series, for tests
+  int lostCount() const;
+  // Frame under a widget position (rounded), for clicks.
+  int frameAt(const QPointF& widget_pos) const;
+
+ signals:
+  void frameClicked(int frame);
+
+ protected:
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+
+ private:
+  void applyTheme();
+  QLineSeries* upper_;
+  QLineSeries* fore_;
+  QLineSeries* yaw_;
+  QScatterSeries* lost_;
+  QLineSeries* cursor_;
+  QValueAxis* x_;
+  QValueAxis* y_;
+  int cursor_frame_ = 0;
+};
+
+}  // namespace armmimic::gui

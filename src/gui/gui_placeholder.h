@@ -1,2 +1,0 @@
-// Placeholder so the GUI library has a source until its widgets land.
-#pragma once

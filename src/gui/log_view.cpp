@@ -1,0 +1,59 @@
+#include "log_view.h"
+
+#include <QApplication>
+#include <QClipboard>
+#include <QDateTime>
+#include <QHBoxLayout>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace armmimic::gui {
+
+LogView::LogView(QWidget* parent) : QWidget(parent), edit_(new QPlainTextEdit(this)) {
+  edit_->setReadOnly(true);
+  edit_->setObjectName("logText");
+  edit_->setMaximumBlockCount(5000);
+  edit_->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
+  auto* copy = new QPushButton(tr("Copy all"), this);
+  auto* clear_button = new QPushButton(tr("Clear"), this);
+  connect(copy, &QPushButton::clicked, this, &LogView::copyAll);
+  connect(clear_button, &QPushButton::clicked, this, &LogView::clear);
+  auto* buttons = new QHBoxLayout;
+  buttons->addStretch();
+  buttons->addWidget(copy);
+  buttons->addWidget(clear_button);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(2, 2, 2, 2);
+  layout->addWidget(edit_);
+  layout->addLayout(buttons);
+}
+
+void LogView::append(const QString& prefix, const QString& text) {
+  const QString stamp = QDateTime::currentDateTime().toString("HH:mm:ss");
+  edit_->appendPlainText(stamp + "  " + prefix + text);
+}
+
+void LogView::info(const QString& text) { append(QString(), text); }
+
+void LogView::error(const QString& text) {
+  auto it = errors_.find(text);
+  if (it != errors_.end()) {
+    ++it.value();
+    return;
+  }
+  errors_.insert(text, 1);
+  append(tr("error: "), text);
+  emit errorShown(text);
+}
+
+QString LogView::text() const { return edit_->toPlainText(); }
+
+void LogView::clear() {
+  edit_->clear();
+  errors_.clear();
+}
+
+void LogView::copyAll() { QApplication::clipboard()->setText(edit_->toPlainText()); }
+
+}  // namespace armmimic::gui

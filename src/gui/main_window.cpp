@@ -1,0 +1,433 @@
+#include "main_window.h"
+
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenu>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QProgressBar>
+#include <QSaveFile>
+#include <QSettings>
+#include <QStatusBar>
+#include <QVBoxLayout>
+
+#include "analysis_job.h"
+#include "angle_plot.h"
+#include "app_actions.h"
+#include "armmimic/core/atomic_file.h"
+#include "engine_settings_panel.h"
+#include "icons.h"
+#include "log_view.h"
+#include "playback_bar.h"
+#include "recent_files.h"
+#include "robot_panel.h"
+#include "video_player.h"
+#include "video_view.h"
+
+namespace armmimic::gui {
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent),
+      actions_(new AppActions(this)),
+      player_(new VideoPlayer(this)),
+      view_(new VideoView),
+      bar_(new PlaybackBar),
+      settings_(new EngineSettingsPanel),
+      plot_(new AnglePlot),
+      log_(new LogView),
+      robot_(new RobotPanel),
+      job_(new AnalysisJob(this)),
+      frame_status_(new QLabel),
+      link_status_(new QLabel),
+      progress_(new QProgressBar),
+      phase_(new QLabel) {
+  setObjectName("mainWindow");
+  setWindowTitle("armmimic");
+  setWindowIcon(MakeIcon(IconKind::kApp));
+  setAcceptDrops(true);
+  auto* central = new QWidget;
+  auto* layout = new QVBoxLayout(central);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->setSpacing(0);
+  layout->addWidget(view_, 1);
+  layout->addWidget(bar_);
+  setCentralWidget(central);
+  bar_->addActions(
+      {actions_->first, actions_->stepBack, actions_->play, actions_->stepForward, actions_->last});
+
+  QList<QAction*> toggles;
+  toggles << dock(tr("Analysis"), "analysisDock", settings_, Qt::LeftDockWidgetArea)
+                 ->toggleViewAction();
+  toggles << dock(tr("Angles"), "plotDock", plot_, Qt::BottomDockWidgetArea)->toggleViewAction();
+  toggles << dock(tr("Robot"), "robotDock", robot_, Qt::RightDockWidgetArea)->toggleViewAction();
+  log_dock_ = dock(tr("Messages"), "logDock", log_, Qt::BottomDockWidgetArea);
+  toggles << log_dock_->toggleViewAction();
+  tabifyDockWidget(findChild<QDockWidget*>("plotDock"), log_dock_);
+  findChild<QDockWidget*>("plotDock")->raise();
+  actions_->populate(this, toggles);
+  recent_ = new RecentFiles(actions_->recentMenu(), this);
+  connect(recent_, &RecentFiles::openRequested, this,
+          [this](const QString& p) { openInputs({p}); });
+
+  progress_->setMaximumWidth(180);
+  progress_->setVisible(false);
+  phase_->setVisible(false);
+  frame_status_->setObjectName("frameStatus");
+  link_status_->setObjectName("linkStatus");
+  statusBar()->addWidget(frame_status_);
+  statusBar()->addPermanentWidget(phase_);
+  statusBar()->addPermanentWidget(progress_);
+  statusBar()->addPermanentWidget(link_status_);
+  link_status_->setText(tr("robot: not connected"));
+
+  throttle_.setSingleShot(true);
+  throttle_.setInterval(40);
+  connect(&throttle_, &QTimer::timeout, this, &MainWindow::refreshViews);
+  wireActions();
+  wireAnalysis();
+  restoreSettings();
+  updateStatus();
+}
+
+MainWindow::~MainWindow() { job_->cancel(); }
+
+QDockWidget* MainWindow::dock(const QString& title, const QString& name, QWidget* w,
+                              Qt::DockWidgetArea area) {
+  auto* d = new QDockWidget(title, this);
+  d->setObjectName(name);
+  d->setWidget(w);
+  addDockWidget(area, d);
+  return d;
+}
+
+void MainWindow::wireActions() {
+  AppActions* a = actions_;
+  connect(a->open, &QAction::triggered, this, [this] {
+    const QStringList files = QFileDialog::getOpenFileNames(
+        this, tr("Open video or images"), lastDir(),
+        tr("Videos and images (*.avi *.mp4 *.mkv *.mov *.png *.jpg *.jpeg *.bmp *.tif *.tiff);;"
+           "All files (*)"));
+    if (!files.isEmpty()) openInputs(files);
+  });
+  connect(a->camera, &QAction::triggered, this, [this] {
+    bool ok = false;
+    const QString src = QInputDialog::getText(
+        this, tr("Capture from camera"), tr("Camera index (0, 1, …) or stream URL (rtsp://…):"),
+        QLineEdit::Normal, "0", &ok);
+    if (!ok || src.trimmed().isEmpty()) return;
+    bool is_index = false;
+    src.trimmed().toInt(&is_index);
+    openInputs({is_index ? "camera:" + src.trimmed() : src.trimmed()});
+  });
+  connect(a->saveFrame, &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save frame with overlay"),
+        lastDir() + QString("/frame-%1.png").arg(player_->currentFrame()),
+        tr("Images (*.png *.jpg)"));
+    if (!path.isEmpty()) saveFrame(path);
+  });
+  connect(a->exportAngles, &QAction::triggered, this, [this] {
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export angle file"), lastDir() + "/angles.tsv",
+                                     tr("Angle files (*.tsv);;All files (*)"));
+    if (!path.isEmpty()) exportAngles(path);
+  });
+  connect(a->exportVal, &QAction::triggered, robot_, &RobotPanel::exportValInteractive);
+  connect(a->quit, &QAction::triggered, this, &QWidget::close);
+  connect(a->play, &QAction::triggered, player_, &VideoPlayer::togglePlay);
+  connect(a->stepBack, &QAction::triggered, player_, [this] { player_->step(-1); });
+  connect(a->stepForward, &QAction::triggered, player_, [this] { player_->step(1); });
+  connect(a->first, &QAction::triggered, player_, &VideoPlayer::first);
+  connect(a->last, &QAction::triggered, player_, &VideoPlayer::last);
+  connect(a->faster, &QAction::triggered, this, [this] { bar_->setSpeed(bar_->speed() * 2); });
+  connect(a->slower, &QAction::triggered, this, [this] { bar_->setSpeed(bar_->speed() / 2); });
+  connect(a->zoomIn, &QAction::triggered, view_, &VideoView::zoomIn);
+  connect(a->zoomOut, &QAction::triggered, view_, &VideoView::zoomOut);
+  connect(a->zoomFit, &QAction::triggered, view_, &VideoView::zoomToFit);
+  connect(a->toolPan, &QAction::triggered, this, [this] { view_->setTool(VideoView::Tool::kPan); });
+  connect(a->toolRoi, &QAction::triggered, this, [this] { view_->setTool(VideoView::Tool::kRoi); });
+  connect(a->toolShoulder, &QAction::triggered, this,
+          [this] { view_->setTool(VideoView::Tool::kShoulder); });
+  connect(a->clearRoi, &QAction::triggered, this, [this] { settings_->setRoi(std::nullopt); });
+  connect(a->clearShoulder, &QAction::triggered, this,
+          [this] { settings_->setShoulder(std::nullopt); });
+  connect(a->analyze, &QAction::triggered, this, &MainWindow::startAnalysis);
+  connect(a->cancel, &QAction::triggered, job_, &AnalysisJob::cancel);
+  connect(a->estimateBackground, &QAction::triggered, this, [this] {
+    bool ok = false;
+    const int k = QInputDialog::getInt(this, tr("Estimate background"),
+                                       tr("Average the first K frames (thesis 5.2.1), K ="), 45, 1,
+                                       100000, 1, &ok);
+    if (!ok) return;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save background image"),
+                                                      lastDir() + "/background.png",
+                                                      tr("Images (*.png *.bmp *.tif)"));
+    if (!path.isEmpty()) estimateBackground(k, path);
+  });
+  connect(actions_, &AppActions::overlayChanged, this,
+          [this] { view_->setOverlayOptions(actions_->overlayOptions()); });
+  connect(a->about, &QAction::triggered, this, [this] {
+    QMessageBox::about(this, tr("About armmimic"),
+                       tr("<b>armmimic</b><p>Makes a PUMA 760 arm mimic a human arm seen on "
+                          "video: marker joint, background subtraction and Lucas–Kanade "
+                          "engines, angle file v1, VAL II over RS-232.</p>"));
+  });
+
+  connect(bar_, &PlaybackBar::seekRequested, player_, &VideoPlayer::seek);
+  connect(bar_, &PlaybackBar::speedChanged, player_, &VideoPlayer::setSpeed);
+  connect(plot_, &AnglePlot::frameClicked, player_, [this](int f) {
+    player_->pause();
+    player_->seek(f);
+  });
+  connect(player_, &VideoPlayer::frameShown, this, &MainWindow::showFrame);
+  connect(player_, &VideoPlayer::playingChanged, this, [this](bool playing) {
+    actions_->play->setIcon(MakeIcon(playing ? IconKind::kPause : IconKind::kPlay));
+  });
+  connect(player_, &VideoPlayer::opened, this, [this](const VideoInfo& info) {
+    bar_->setFrameCount(info.frame_count, info.fps);
+    plot_->setFrameRange(info.frame_count);
+    const QString what = info.kind == SourceKind::kCamera ? tr("camera")
+                         : info.codec.empty()             ? tr("images")
+                                                          : QString::fromStdString(info.codec);
+    log_->info(tr("Opened %1: %2 frames, %3 fps, %4×%5 (%6)")
+                   .arg(QString::fromStdString(info.path))
+                   .arg(info.frame_count)
+                   .arg(info.fps)
+                   .arg(info.size.width)
+                   .arg(info.size.height)
+                   .arg(what));
+    updateStatus();
+  });
+  connect(player_, &VideoPlayer::error, log_, &LogView::error);
+  connect(view_, &VideoView::roiSelected, this, [this](const QRect& r) {
+    settings_->setRoi(cv::Rect(r.x(), r.y(), r.width(), r.height()));
+  });
+  connect(view_, &VideoView::shoulderPicked, this,
+          [this](const QPointF& p) { settings_->setShoulder(cv::Point2d(p.x(), p.y())); });
+  connect(settings_, &EngineSettingsPanel::roiChanged, this,
+          [this](const std::optional<cv::Rect>& r) {
+            view_->setRoi(r ? std::optional<QRect>(QRect(r->x, r->y, r->width, r->height))
+                            : std::nullopt);
+          });
+  connect(settings_, &EngineSettingsPanel::shoulderChanged, this,
+          [this](const std::optional<cv::Point2d>& s) {
+            view_->setShoulder(s ? std::optional<QPointF>(QPointF(s->x, s->y)) : std::nullopt);
+          });
+  connect(log_, &LogView::errorShown, this, [this](const QString& text) {
+    statusBar()->showMessage(text, 10000);
+    log_dock_->show();
+    log_dock_->raise();
+  });
+  connect(robot_, &RobotPanel::message, log_, &LogView::info);
+  connect(robot_, &RobotPanel::errorOccurred, log_, &LogView::error);
+  connect(robot_, &RobotPanel::linkStateChanged, link_status_, &QLabel::setText);
+}
+
+void MainWindow::wireAnalysis() {
+  connect(job_, &AnalysisJob::started, this, [this] { setBusy(true); });
+  connect(job_, &AnalysisJob::phase, this, [this](const QString& p) { phase_->setText(p); });
+  connect(job_, &AnalysisJob::progress, this, [this](int done, int total) {
+    progress_->setRange(0, total > 0 ? total : 0);
+    progress_->setValue(done);
+  });
+  connect(job_, &AnalysisJob::measured, this, [this](const ArmMeasurement& m) {
+    results_.add(m);
+    if (!throttle_.isActive()) throttle_.start();
+  });
+  connect(job_, &AnalysisJob::liveFrame, this, &MainWindow::showFrame);
+  connect(job_, &AnalysisJob::failed, log_, &LogView::error);
+  connect(job_, &AnalysisJob::backgroundReady, this, [this](const QString& path) {
+    settings_->setBackgroundImage(path);
+    log_->info(tr("Background saved to %1 and selected for the analysis").arg(path));
+  });
+  connect(job_, &AnalysisJob::finished, this, [this](bool ok, bool cancelled) {
+    setBusy(false);
+    refreshViews();
+    const AnalysisSummary& s = job_->summary();
+    if (ok && !job_->resultPath().isEmpty()) {
+      log_->info(tr("Analysis %1: %2 rows, %3 ok, %4 lost in %5 s")
+                     .arg(cancelled ? tr("cancelled") : tr("done"))
+                     .arg(s.frames)
+                     .arg(s.ok)
+                     .arg(s.lost)
+                     .arg(s.seconds, 0, 'f', 2));
+      robot_->setAngleFile(job_->resultPath());
+    }
+  });
+}
+
+void MainWindow::setBusy(bool busy) {
+  progress_->setVisible(busy);
+  phase_->setVisible(busy);
+  actions_->analyze->setEnabled(!busy);
+  actions_->estimateBackground->setEnabled(!busy);
+  actions_->cancel->setEnabled(busy);
+  settings_->setEnabled(!busy);
+  if (busy) {
+    progress_->setRange(0, 0);
+    phase_->clear();
+  }
+}
+
+void MainWindow::openInputs(const QStringList& inputs) {
+  if (inputs.isEmpty()) return;
+  if (job_->isRunning()) {
+    log_->error(tr("An analysis is running: cancel it (Esc) before opening another input"));
+    return;
+  }
+  results_.clear();
+  plot_->setResults(results_);
+  view_->setMeasurement(std::nullopt);
+  robot_->setAngleFile(QString());
+  player_->open(inputs);
+  if (!inputs.first().startsWith("camera:") && !inputs.first().contains("://")) {
+    recent_->add(inputs.first());
+    rememberDir(inputs.first());
+  }
+  setWindowTitle(QString("%1 — armmimic").arg(QFileInfo(inputs.first()).fileName()));
+}
+
+bool MainWindow::startAnalysis() {
+  if (!player_->isOpen()) {
+    log_->error(tr("Open a video, images or a camera first (File > Open)"));
+    return false;
+  }
+  AnalysisOptions options = settings_->options();
+  options.inputs.clear();
+  for (const QString& s : player_->inputs()) options.inputs.push_back(s.toStdString());
+  live_ = player_->isLive();
+  if (live_) player_->close();  // the analysis reads the camera itself
+  results_.clear();
+  return job_->start(options, live_);
+}
+
+bool MainWindow::exportAngles(const QString& path) {
+  const QString src = job_->resultPath();
+  if (src.isEmpty()) {
+    log_->error(tr("Nothing to export yet: run the analysis first (F5)"));
+    return false;
+  }
+  QFile in(src);
+  if (!in.open(QIODevice::ReadOnly)) {
+    log_->error(tr("%1: cannot read the analysis result: %2").arg(src, in.errorString()));
+    return false;
+  }
+  const QByteArray bytes = in.readAll();
+  const Status st = WriteFileAtomically(path.toStdString(), bytes.toStdString());
+  if (!st) {
+    log_->error(QString::fromStdString(st.message()));
+    return false;
+  }
+  rememberDir(path);
+  log_->info(tr("Exported the angle file to %1").arg(path));
+  return true;
+}
+
+bool MainWindow::saveFrame(const QString& path) {
+  const QImage image = view_->renderWithOverlay();
+  if (image.isNull()) {
+    log_->error(tr("No frame to save: open a video first"));
+    return false;
+  }
+  QSaveFile file(path);
+  if (!file.open(QIODevice::WriteOnly) || !image.save(&file, nullptr) || !file.commit()) {
+    log_->error(tr("%1: cannot save the frame: %2").arg(path, file.errorString()));
+    return false;
+  }
+  rememberDir(path);
+  log_->info(tr("Saved frame %1 with its overlay to %2").arg(view_->frameIndex()).arg(path));
+  return true;
+}
+
+bool MainWindow::estimateBackground(int frames, const QString& path) {
+  if (!player_->isOpen() || player_->isLive()) {
+    log_->error(tr("Open a video first: the background is the mean of its first frames"));
+    return false;
+  }
+  return job_->startBackground(player_->inputs(), 0, frames, path);
+}
+
+void MainWindow::showFrame(int index, const QImage& image, double time_s) {
+  time_s_ = time_s;
+  const int count = live_ ? -1 : player_->frameCount();
+  view_->setFrame(image, index, count);
+  view_->setMeasurement(results_.at(index));
+  bar_->setPosition(index, time_s);
+  plot_->setCursorFrame(index);
+  updateStatus();
+}
+
+void MainWindow::refreshViews() {
+  plot_->setResults(results_);
+  view_->setMeasurement(results_.at(view_->frameIndex()));
+}
+
+void MainWindow::updateStatus() {
+  if (!player_->isOpen() && !job_->isRunning()) {
+    frame_status_->setText(tr("No video"));
+    return;
+  }
+  const OverlayTexts t = view_->overlayTexts();
+  frame_status_->setText(
+      QString("%1   %2 s   %3").arg(t.frame).arg(time_s_, 0, 'f', 2).arg(t.state));
+}
+
+void MainWindow::restoreSettings() {
+  QSettings s;
+  restoreGeometry(s.value("window/geometry").toByteArray());
+  restoreState(s.value("window/state").toByteArray());
+  settings_->load(s);
+  OverlayOptions o = actions_->overlayOptions();
+  o.contour = s.value("overlay/contour", o.contour).toBool();
+  o.features = s.value("overlay/features", o.features).toBool();
+  actions_->setOverlayOptions(o);
+  bar_->setSpeed(s.value("playback/speed", 1.0).toDouble());
+  robot_->load(s);
+}
+
+void MainWindow::saveSettings() const {
+  QSettings s;
+  s.setValue("window/geometry", saveGeometry());
+  s.setValue("window/state", saveState());
+  settings_->save(s);
+  const OverlayOptions o = actions_->overlayOptions();
+  s.setValue("overlay/contour", o.contour);
+  s.setValue("overlay/features", o.features);
+  s.setValue("playback/speed", bar_->speed());
+  robot_->save(s);
+}
+
+QString MainWindow::lastDir() const { return QSettings().value("lastDir").toString(); }
+
+void MainWindow::rememberDir(const QString& path) {
+  QSettings().setValue("lastDir", QFileInfo(path).absolutePath());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  job_->cancel();
+  job_->waitForFinished(5000);
+  saveSettings();
+  event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  QStringList files;
+  for (const QUrl& url : event->mimeData()->urls()) {
+    if (url.isLocalFile()) files << url.toLocalFile();
+  }
+  if (!files.isEmpty()) {
+    openInputs(files);
+    event->acceptProposedAction();
+  }
+}
+
+}  // namespace armmimic::gui

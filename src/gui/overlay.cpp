@@ -1,0 +1,170 @@
+#include "overlay.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <QFont>
+#include <QFontMetricsF>
+#include <QPainterPath>
+
+namespace armmimic::gui {
+namespace {
+
+QString Deg(double v) {
+  if (std::isnan(v)) return QStringLiteral("—");
+  return QString::number(v, 'f', 1) + QChar(0x00B0);
+}
+
+bool Finite(const cv::Point2d& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+QPointF Q(const cv::Point2d& p) { return QPointF(p.x, p.y); }
+
+const QColor kUpper(255, 196, 0);
+const QColor kFore(0, 200, 255);
+const QColor kJoint(255, 64, 64);
+const QColor kMarker(80, 255, 80);
+
+// Text with a dark halo so it reads over any video.
+void HaloText(QPainter& p, const QPointF& baseline, const QString& text, const QColor& color) {
+  QPainterPath path;
+  path.addText(baseline, p.font(), text);
+  p.strokePath(path, QPen(QColor(0, 0, 0, 200), std::max(2.0, p.font().pointSizeF() / 4.0)));
+  p.fillPath(path, color);
+}
+
+}  // namespace
+
+OverlayTexts MakeOverlayTexts(const ArmMeasurement* m, int frame_index, int frame_count) {
+  OverlayTexts t;
+  t.frame = frame_count > 0 ? QString("frame %1 / %2").arg(frame_index).arg(frame_count - 1)
+                            : QString("frame %1").arg(frame_index);
+  if (!m) {
+    t.yaw = "yaw " + Deg(kNaN);
+    t.orientation = "upper " + Deg(kNaN) + "  fore " + Deg(kNaN);
+    t.state = "not analysed";
+    return t;
+  }
+  t.yaw = "yaw " + Deg(m->yaw_deg);
+  t.orientation = "upper " + Deg(m->upper_deg) + "  fore " + Deg(m->fore_deg);
+  if (!std::isnan(m->bend_deg)) t.orientation += "  bend " + Deg(m->bend_deg);
+  switch (m->phase) {
+    case MeasurementPhase::kOk:
+      t.state = "ok";
+      break;
+    case MeasurementPhase::kSetup:
+      t.state = "setup";
+      break;
+    case MeasurementPhase::kLost:
+      t.state = "lost";
+      break;
+  }
+  if (!m->note.empty()) t.state += ": " + QString::fromStdString(m->note);
+  return t;
+}
+
+void PaintOverlay(QPainter& p, QSize image_size, const ArmMeasurement* m, int frame_index,
+                  int frame_count, const OverlayOptions& o) {
+  p.save();
+  p.setRenderHint(QPainter::Antialiasing);
+  const double unit = std::max(1.0, image_size.height() / 240.0);  // 1 at 320x240
+  const OverlayTexts texts = MakeOverlayTexts(m, frame_index, frame_count);
+
+  if (m) {
+    if (o.contour && m->arm_contour.size() > 2) {
+      QPolygonF poly;
+      for (const auto& pt : m->arm_contour) poly << QPointF(pt.x + 0.5, pt.y + 0.5);
+      p.setPen(QPen(QColor(255, 255, 255, 160), unit));
+      p.drawPolygon(poly);
+      if (m->arm_hull.size() > 2) {
+        QPolygonF hull;
+        for (const auto& pt : m->arm_hull) hull << QPointF(pt.x + 0.5, pt.y + 0.5);
+        p.setPen(QPen(QColor(255, 255, 255, 110), unit, Qt::DashLine));
+        p.drawPolygon(hull);
+      }
+    }
+    if (o.contour && m->body_box) {
+      const cv::Rect& b = *m->body_box;
+      p.setPen(QPen(QColor(200, 200, 200, 160), unit, Qt::DotLine));
+      p.drawRect(QRectF(b.x, b.y, b.width, b.height));
+    }
+    if (o.markers) {
+      p.setPen(QPen(QColor(255, 255, 0), unit));
+      p.setBrush(Qt::NoBrush);
+      for (const cv::Rect& r : m->candidate_boxes) p.drawRect(QRectF(r.x, r.y, r.width, r.height));
+      p.setPen(QPen(kMarker, 1.5 * unit));
+      for (std::size_t i = 0; i < m->marker_centres.size(); ++i) {
+        const QPointF c = Q(m->marker_centres[i]);
+        p.drawLine(c - QPointF(4 * unit, 0), c + QPointF(4 * unit, 0));
+        p.drawLine(c - QPointF(0, 4 * unit), c + QPointF(0, 4 * unit));
+      }
+      if (m->marker_centres.size() >= 3) {
+        p.setPen(QPen(kMarker, unit, Qt::DashLine));
+        p.drawLine(Q(m->marker_centres[0]), Q(m->marker_centres[1]));
+        p.drawLine(Q(m->marker_centres[0]), Q(m->marker_centres[2]));
+      }
+    }
+    if (o.features) {
+      p.setPen(Qt::NoPen);
+      p.setBrush(kUpper);
+      for (const auto& f : m->upper_features) p.drawEllipse(QPointF(f.x, f.y), unit, unit);
+      p.setBrush(kFore);
+      for (const auto& f : m->fore_features) p.drawEllipse(QPointF(f.x, f.y), unit, unit);
+      p.setBrush(Qt::NoBrush);
+    }
+    if (o.segments && m->shoulder_px && m->elbow_px) {
+      p.setPen(QPen(kUpper, 2 * unit, Qt::SolidLine, Qt::RoundCap));
+      p.drawLine(Q(*m->shoulder_px), Q(*m->elbow_px));
+      if (m->wrist_px) {
+        p.setPen(QPen(kFore, 2 * unit, Qt::SolidLine, Qt::RoundCap));
+        p.drawLine(Q(*m->elbow_px), Q(*m->wrist_px));
+      }
+    }
+    if (o.centres) {
+      p.setBrush(Qt::NoBrush);
+      if (Finite(m->upper_com_px)) {
+        p.setPen(QPen(kUpper, 1.5 * unit));
+        p.drawEllipse(Q(m->upper_com_px), 4 * unit, 4 * unit);
+      }
+      if (Finite(m->fore_com_px)) {
+        p.setPen(QPen(kFore, 1.5 * unit));
+        p.drawEllipse(Q(m->fore_com_px), 4 * unit, 4 * unit);
+      }
+    }
+    if (o.elbow && m->elbow_px) {
+      p.setPen(Qt::NoPen);
+      p.setBrush(kJoint);
+      p.drawEllipse(Q(*m->elbow_px), 3 * unit, 3 * unit);
+    }
+    if (o.shoulder && m->shoulder_px) {
+      p.setPen(QPen(kJoint, 1.5 * unit));
+      p.setBrush(Qt::NoBrush);
+      const QPointF s = Q(*m->shoulder_px);
+      p.drawRect(QRectF(s - QPointF(3.5 * unit, 3.5 * unit), QSizeF(7 * unit, 7 * unit)));
+    }
+  }
+
+  QFont font = p.font();
+  font.setPointSizeF(8.0 * unit);
+  font.setBold(true);
+  p.setFont(font);
+  const QFontMetricsF fm(font);
+  const double margin = 4 * unit;
+  const double w = image_size.width();
+  const double h = image_size.height();
+  if (o.frame_count) HaloText(p, QPointF(margin, margin + fm.ascent()), texts.frame, Qt::white);
+  if (m && o.yaw) {
+    HaloText(p, QPointF(w - margin - fm.horizontalAdvance(texts.yaw), h / 2), texts.yaw, Qt::white);
+  }
+  if (m && o.orientation) {
+    const QString upper = "upper " + Deg(m->upper_deg);
+    const QString fore = "fore " + Deg(m->fore_deg);
+    const double y2 = h - margin - fm.descent();
+    HaloText(p, QPointF(w - margin - fm.horizontalAdvance(fore), y2), fore, kFore);
+    HaloText(p, QPointF(w - margin - fm.horizontalAdvance(upper), y2 - fm.height()), upper, kUpper);
+  }
+  if (m && m->phase == MeasurementPhase::kLost) {
+    HaloText(p, QPointF(margin, h - margin - fm.descent()), "lost", QColor(255, 90, 90));
+  }
+  p.restore();
+}
+
+}  // namespace armmimic::gui

@@ -1,0 +1,33 @@
+// ResultStore: the measurements of the last analysis, kept per frame so scrubbing shows the
+// overlay at once and the plot can be redrawn from them.
+#pragma once
+
+#include <map>
+#include <optional>
+
+#include "armmimic/engines/measurement.h"
+
+namespace armmimic::gui {
+
+class ResultStore {
+ public:
+  void clear() { by_frame_.clear(); }
+  void add(const ArmMeasurement& m) { by_frame_[m.frame] = m; }
+  const ArmMeasurement* find(int frame) const {
+    auto it = by_frame_.find(frame);
+    return it == by_frame_.end() ? nullptr : &it->second;
+  }
+  std::optional<ArmMeasurement> at(int frame) const {
+    const ArmMeasurement* m = find(frame);
+    return m ? std::optional<ArmMeasurement>(*m) : std::nullopt;
+  }
+  const std::map<int, ArmMeasurement>& all() const { return by_frame_; }
+  int size() const { return static_cast<int>(by_frame_.size()); }
+  int rows() const;  // measurements that are angle-file rows (ok or lost)
+  int lost() const;
+
+ private:
+  std::map<int, ArmMeasurement> by_frame_;
+};
+
+}  // namespace armmimic::gui

@@ -1,0 +1,109 @@
+// RobotPanel: the robot side of the workflow. Mapping, limits, filter and decimation settings
+// (the planner's options), the arm preview animated over the plan with limit violations shown,
+// the port, baud and connection, the built-in simulated controller, and sending with progress,
+// pause, abort and the controller's replies. Planning is RobotPlan, sending RobotLink, the
+// simulator SimController: this widget only edits and shows.
+#pragma once
+
+#include <QTimer>
+#include <QWidget>
+
+#include "armmimic/robot/planner.h"
+#include "armmimic/robot/profile.h"
+#include "robot_plan.h"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPlainTextEdit;
+class QProgressBar;
+class QPushButton;
+class QSettings;
+class QTableWidget;
+
+namespace armmimic::gui {
+
+class RobotLink;
+class RobotPreview;
+class SimController;
+
+class RobotPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit RobotPanel(QWidget* parent = nullptr);
+  ~RobotPanel() override;
+
+  robot::PlannerOptions plannerOptions() const;
+  void setPlannerOptions(const robot::PlannerOptions& options);
+  const RobotPlan& plan() const { return plan_; }
+  RobotLink* link() const { return link_; }
+  SimController* simulator() const { return sim_; }
+  RobotPreview* preview() const { return preview_; }
+
+  void save(QSettings& settings) const;
+  void load(QSettings& settings);
+
+  bool replan();
+  bool exportVal(const QString& path);
+  bool startSimulator(double time_scale);
+  bool connectTo(const QString& device);
+  // Sends the plan. `confirmed` false asks the operator first (showing the joint ranges).
+  bool sendPlan(bool confirmed);
+  QString replyLog() const;
+
+ public slots:
+  // The angle file of the finished analysis ("" clears the plan).
+  void setAngleFile(const QString& path);
+  void setVideoFrame(int frame);
+  void exportValInteractive();
+
+ signals:
+  void message(const QString& text);
+  void errorOccurred(const QString& text);
+  void linkStateChanged(const QString& text);
+  void sendFinished(bool ok);
+
+ private:
+  QWidget* makePlanBox();
+  QWidget* makeLinkBox();
+  void refreshPorts();
+  void updateButtons();
+  void showPose();
+
+  RobotPlan plan_;
+  robot::ControllerProfile profile_;
+  RobotLink* link_;
+  SimController* sim_;
+  RobotPreview* preview_;
+  QTimer animate_;
+  QTimer sim_poll_;
+  double anim_t_ = 0;
+  int video_frame_ = 0;
+  // Plan settings.
+  QLabel* source_;
+  QCheckBox* mirror_;
+  QComboBox* sign_[3];
+  QDoubleSpinBox* offset_[3];
+  QDoubleSpinBox* cutoff_;
+  QDoubleSpinBox* deadband_;
+  QDoubleSpinBox* min_interval_;
+  QDoubleSpinBox* max_gap_;
+  QCheckBox* clamp_;
+  QTableWidget* limits_;
+  QLabel* report_;
+  QPushButton* animate_button_;
+  // Link.
+  QComboBox* port_;
+  QComboBox* baud_;
+  QDoubleSpinBox* sim_speed_;
+  QPushButton* sim_button_;
+  QPushButton* connect_button_;
+  QPushButton* send_button_;
+  QPushButton* pause_button_;
+  QPushButton* abort_button_;
+  QProgressBar* send_progress_;
+  QPlainTextEdit* replies_;
+};
+
+}  // namespace armmimic::gui

@@ -1,0 +1,123 @@
+#include "robot_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "armmimic/robot/mapping.h"
+#include "armmimic/robot/val_program.h"
+
+namespace armmimic::gui {
+
+Status RobotPlan::Load(const std::string& path) {
+  Clear();
+  AngleFile file;
+  const Status st = ReadAngleFile(path, &file);
+  if (!st) return st;
+  angles_ = std::move(file);
+  path_ = path;
+  loaded_ = true;
+  return Status::Ok();
+}
+
+void RobotPlan::Clear() {
+  loaded_ = planned_ = false;
+  path_.clear();
+  angles_ = AngleFile();
+  trajectory_ = robot::Trajectory();
+  report_ = robot::PlanReport();
+}
+
+Status RobotPlan::Plan(const robot::PlannerOptions& options) {
+  planned_ = false;
+  if (!loaded_) return Status::Error("no angle file: run the analysis first");
+  options_ = options;
+  options_.mapping.kind = robot::DetectSourceKind(angles_);
+  trajectory_ = robot::Trajectory();
+  report_ = robot::PlanReport();
+  const Status st = robot::PlanTrajectory(angles_, options_, &trajectory_, &report_);
+  if (!st) return Status::Error(path_ + ": " + st.message());
+  planned_ = true;
+  return Status::Ok();
+}
+
+bool RobotPlan::MappedPose(int frame, const robot::PlannerOptions& options,
+                           robot::JointArray* out) const {
+  robot::MappingOptions mapping = options.mapping;
+  mapping.kind = robot::DetectSourceKind(angles_);
+  for (const AngleRow& row : angles_.rows) {
+    if (row.frame != frame) continue;
+    if (!row.ok() || std::isnan(row.upper_deg) && mapping.kind == robot::SourceKind::kArm) {
+      return false;
+    }
+    const double yaw = std::isnan(row.yaw_deg) ? 0.0 : row.yaw_deg;
+    const double bend = std::isnan(row.bend_deg) ? 0.0 : row.bend_deg;
+    const double upper = std::isnan(row.upper_deg) ? -90.0 : row.upper_deg;
+    *out = mapping.Map(upper, bend, yaw);
+    return true;
+  }
+  return false;
+}
+
+std::vector<LimitViolation> RobotPlan::Violations(const robot::PlannerOptions& options) const {
+  std::vector<LimitViolation> out;
+  for (const AngleRow& row : angles_.rows) {
+    robot::JointArray j;
+    if (!MappedPose(row.frame, options, &j)) continue;
+    for (int k = 0; k < robot::kJoints; ++k) {
+      if (!options.limits.Inside(k, j[k])) out.push_back({row.frame, k, j[k]});
+    }
+  }
+  return out;
+}
+
+robot::JointArray RobotPlan::PoseAt(double t) const {
+  const auto& k = trajectory_.keyframes;
+  if (k.empty()) return robot::JointArray{0, -90, 0, 0, 0, 0};
+  if (t <= k.front().time_s) return k.front().joint_deg;
+  if (t >= k.back().time_s) return k.back().joint_deg;
+  auto it = std::upper_bound(k.begin(), k.end(), t,
+                             [](double v, const robot::Keyframe& f) { return v < f.time_s; });
+  const robot::Keyframe& b = *it;
+  const robot::Keyframe& a = *(it - 1);
+  const double u = b.time_s > a.time_s ? (t - a.time_s) / (b.time_s - a.time_s) : 1.0;
+  robot::JointArray j;
+  for (int i = 0; i < robot::kJoints; ++i) {
+    j[i] = a.joint_deg[i] + u * (b.joint_deg[i] - a.joint_deg[i]);
+  }
+  return j;
+}
+
+int RobotPlan::KeyframeForFrame(int frame) const {
+  int best = -1;
+  for (std::size_t i = 0; i < trajectory_.keyframes.size(); ++i) {
+    if (trajectory_.keyframes[i].frame <= frame) best = static_cast<int>(i);
+  }
+  return best;
+}
+
+Status RobotPlan::ValText(const robot::ControllerProfile& profile, std::string* text) const {
+  if (!planned_) return Status::Error("no plan: plan the trajectory first");
+  std::vector<std::string> header = {
+      "source=" + path_,
+      "mapping=" + options_.mapping.Describe(),
+  };
+  char filter[160];
+  std::snprintf(filter, sizeof(filter), "cutoff_hz=%.3g deadband_deg=%.3g min_interval_s=%.3g",
+                options_.cutoff_hz, options_.deadband_deg, options_.min_interval_s);
+  header.push_back(filter);
+  return robot::FormatValProgram(trajectory_, profile, options_.limits, header, text);
+}
+
+std::string DescribeJointRanges(const robot::PlanReport& report, const robot::JointLimits& limits) {
+  std::string out;
+  char line[160];
+  for (int j = 0; j < robot::kJoints; ++j) {
+    std::snprintf(line, sizeof(line), "J%d  %8.1f .. %8.1f   (limits %.0f .. %.0f)\n", j + 1,
+                  report.min_deg[j], report.max_deg[j], limits.min_deg[j], limits.max_deg[j]);
+    out += line;
+  }
+  return out;
+}
+
+}  // namespace armmimic::gui

@@ -1,0 +1,64 @@
+// RobotPlan: the angle file of the last analysis turned into a PUMA trajectory with the
+// planner's options (the same PlannerOptions `armmimic-cli plan` fills), the .val text, and the
+// frames whose mapped pose falls outside the joint limits, found before anything moves.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "armmimic/core/angle_file.h"
+#include "armmimic/core/status.h"
+#include "armmimic/robot/planner.h"
+#include "armmimic/robot/profile.h"
+#include "armmimic/robot/trajectory.h"
+
+namespace armmimic::gui {
+
+struct LimitViolation {
+  int frame = 0;
+  int joint = 0;  // 0-based
+  double deg = 0;
+};
+
+class RobotPlan {
+ public:
+  // Reads the angle file; the mapping kind follows the file (arm or marker).
+  Status Load(const std::string& angle_path);
+  void Clear();
+  bool loaded() const { return loaded_; }
+  const AngleFile& angles() const { return angles_; }
+  const std::string& angle_path() const { return path_; }
+
+  // Plans with `options` (its mapping kind is set from the file). Fills trajectory and report.
+  Status Plan(const robot::PlannerOptions& options);
+  bool planned() const { return planned_; }
+  const robot::Trajectory& trajectory() const { return trajectory_; }
+  const robot::PlanReport& report() const { return report_; }
+  const robot::PlannerOptions& options() const { return options_; }
+
+  // Every row mapped without filtering or clamping, checked against the limits.
+  std::vector<LimitViolation> Violations(const robot::PlannerOptions& options) const;
+  // The mapped joints of a row (NaN yaw held at 0), for the preview at the video's frame.
+  bool MappedPose(int frame, const robot::PlannerOptions& options, robot::JointArray* out) const;
+  // The pose of the trajectory at time t (linear between keyframes).
+  robot::JointArray PoseAt(double t_s) const;
+  // Index of the keyframe at or before the angle file's `frame` (-1: none).
+  int KeyframeForFrame(int frame) const;
+
+  // The .val program text for the current trajectory.
+  Status ValText(const robot::ControllerProfile& profile, std::string* text) const;
+
+ private:
+  bool loaded_ = false;
+  bool planned_ = false;
+  std::string path_;
+  AngleFile angles_;
+  robot::PlannerOptions options_;
+  robot::Trajectory trajectory_;
+  robot::PlanReport report_;
+};
+
+// Joint ranges as the send confirmation shows them: planned min..max against the limits.
+std::string DescribeJointRanges(const robot::PlanReport& report, const robot::JointLimits& limits);
+
+}  // namespace armmimic::gui
