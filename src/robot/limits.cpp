@@ -60,6 +60,7 @@ JointLimits JointLimits::Intersect(const JointLimits& a, const JointLimits& b) {
 
 std::string ParseLimitsOverride(const std::string& value, JointLimits* limits) {
   const std::string form = " (expected J<n>=MIN:MAX[,J<n>=MIN:MAX...], e.g. J2=-200:20)";
+  if (value.empty()) return "empty limits" + form;
   JointLimits result = *limits;
   for (const std::string& item : Split(value, ',')) {
     const auto eq = item.find('=');

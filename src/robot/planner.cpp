@@ -186,6 +186,7 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
   std::vector<double> upper(n, kNaN), bend(n, kNaN), yaw(n, kNaN);
   std::vector<char> good(n, 0), flagged(n, 0);
   int prev = -1;
+  double ref_t = 0;
   for (int i = 0; i < n; ++i) {
     const AngleRow& r = rows[i];
     if (!r.ok()) continue;
@@ -196,7 +197,9 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
     if (prev >= 0) {
       u -= 360.0 * std::round((u - upper[prev]) / 360.0);
       b -= 360.0 * std::round((b - bend[prev]) / 360.0);
-      const double allowed = options.max_jump_deg_s * (t[i] - t[prev]);
+      // Time spent in flagged frames earns no allowance: a flip that persists stays flagged
+      // (and refuses the plan once longer than the max gap) instead of being accepted later.
+      const double allowed = options.max_jump_deg_s * (t[i] - ref_t);
       double jump = std::max(std::abs(u - upper[prev]), std::abs(b - bend[prev]));
       std::string what = std::abs(u - upper[prev]) >= std::abs(b - bend[prev]) ? "upper" : "bend";
       if (!std::isnan(y) && !std::isnan(yaw[prev]) && std::abs(y - yaw[prev]) > jump) {
@@ -204,10 +207,11 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
         what = "yaw";
       }
       if (jump > allowed) {
+        ref_t += t[i] - t[i - 1];
         flagged[i] = 1;
         ++report.flagged_jumps;
         Warn(&report, r.frame,
-             what + " changes " + Num(jump, 1) + " deg in " + Num(t[i] - t[prev], 3) +
+             what + " changes " + Num(jump, 1) + " deg in " + Num(t[i] - ref_t, 3) +
                  " s: impossible for an arm; frame treated as lost");
         continue;
       }
@@ -217,6 +221,7 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
     yaw[i] = y;
     good[i] = 1;
     prev = i;
+    ref_t = t[i];
   }
   int first = -1, last = -1;
   for (int i = 0; i < n; ++i) {
