@@ -1,0 +1,92 @@
+// SerialLink: the robot link over a real serial port (QSerialPort), driving the transport-free
+// LinkProtocol from Qt's event loop. Usable from the CLI's QCoreApplication and from the GUI
+// (connect to progress()/finished(); the protocol's callbacks run on the link's thread).
+#pragma once
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QSerialPort>
+#include <QTimer>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "armmimic/core/status.h"
+#include "armmimic/robot/link_protocol.h"
+
+namespace armmimic::serial {
+
+enum class FlowControl { kNone, kXonXoff, kRtsCts };
+
+struct PortSettings {
+  std::string port;  // "/dev/ttyUSB0" or "ttyUSB0"
+  int baud = 9600;
+  int data_bits = 8;  // 5..8
+  char parity = 'N';  // N (none), E (even), O (odd)
+  int stop_bits = 1;  // 1 or 2
+  FlowControl flow = FlowControl::kNone;
+  // The message names the flag ("--data-bits").
+  Status Check() const;
+};
+
+// Flag parsers: "none|xonxoff|rtscts", "none|even|odd" (or N/E/O). Return an error text or "".
+std::string ParseFlowControl(const std::string& text, FlowControl* out);
+std::string ParseParity(const std::string& text, char* out);
+const char* FlowControlName(FlowControl flow);
+
+struct PortInfo {
+  std::string name;             // "ttyUSB0"
+  std::string system_location;  // "/dev/ttyUSB0"
+  std::string description;
+  std::string manufacturer;
+  std::string serial_number;
+  bool has_ids = false;
+  std::uint16_t vendor_id = 0;
+  std::uint16_t product_id = 0;
+};
+std::vector<PortInfo> ListPorts();
+
+class SerialLink : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit SerialLink(const robot::LinkSettings& settings, QObject* parent = nullptr);
+  ~SerialLink() override;
+
+  // Opens and configures the port. Clear messages for a missing port, permission denied, a
+  // port another program holds, or settings the port refuses; each names the port or flag.
+  Status Open(const PortSettings& settings);
+  void Close();
+  bool is_open() const;
+
+  // Wakes the controller and streams `lines`. progress() follows each acknowledgement;
+  // finished() comes once, when the protocol is done, failed or was cancelled.
+  void Start(std::vector<robot::LinkLine> lines, const std::string& source_name);
+  // Stops the stream (kAborted) with `reason`; nothing more is written.
+  void Cancel(const std::string& reason);
+
+  // For callbacks (safety gate, journal) and results. Set callbacks before Start().
+  robot::LinkProtocol& protocol() { return protocol_; }
+  const robot::LinkProtocol& protocol() const { return protocol_; }
+
+ signals:
+  void progress(int acknowledged, int total);
+  void finished(bool ok);
+
+ private:
+  void OnReadyRead();
+  void OnError(QSerialPort::SerialPortError error);
+  void OnTick();
+  void Flush();
+  double Now() const;
+
+  QSerialPort* port_;
+  QTimer* timer_;
+  QElapsedTimer clock_;
+  robot::LinkProtocol protocol_;
+  PortSettings settings_;
+  std::size_t reported_ = 0;
+  bool finished_sent_ = true;
+};
+
+}  // namespace armmimic::serial

@@ -1,0 +1,238 @@
+#include "armmimic/serial/serial_link.h"
+
+#include <QSerialPortInfo>
+#include <cerrno>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace armmimic::serial {
+namespace {
+
+std::string Lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// "ttyUSB0" -> "/dev/ttyUSB0", as QSerialPort resolves a bare name.
+std::string DevicePath(const std::string& port) {
+  return port.find('/') == std::string::npos ? "/dev/" + port : port;
+}
+
+}  // namespace
+
+Status PortSettings::Check() const {
+  if (port.empty()) return Status::Error("--port: no serial port given");
+  if (baud <= 0) return Status::Error("--baud " + std::to_string(baud) + ": must be positive");
+  if (data_bits < 5 || data_bits > 8) {
+    return Status::Error("--data-bits " + std::to_string(data_bits) + ": must be 5, 6, 7 or 8");
+  }
+  if (parity != 'N' && parity != 'E' && parity != 'O') {
+    return Status::Error(std::string("--parity ") + parity + ": must be none, even or odd");
+  }
+  if (stop_bits != 1 && stop_bits != 2) {
+    return Status::Error("--stop-bits " + std::to_string(stop_bits) + ": must be 1 or 2");
+  }
+  return Status::Ok();
+}
+
+std::string ParseFlowControl(const std::string& text, FlowControl* out) {
+  const std::string t = Lower(text);
+  if (t == "none") {
+    *out = FlowControl::kNone;
+  } else if (t == "xonxoff" || t == "software") {
+    *out = FlowControl::kXonXoff;
+  } else if (t == "rtscts" || t == "hardware") {
+    *out = FlowControl::kRtsCts;
+  } else {
+    return "must be none, xonxoff or rtscts";
+  }
+  return "";
+}
+
+std::string ParseParity(const std::string& text, char* out) {
+  const std::string t = Lower(text);
+  if (t == "none" || t == "n") {
+    *out = 'N';
+  } else if (t == "even" || t == "e") {
+    *out = 'E';
+  } else if (t == "odd" || t == "o") {
+    *out = 'O';
+  } else {
+    return "must be none, even or odd";
+  }
+  return "";
+}
+
+const char* FlowControlName(FlowControl flow) {
+  switch (flow) {
+    case FlowControl::kXonXoff:
+      return "xonxoff";
+    case FlowControl::kRtsCts:
+      return "rtscts";
+    case FlowControl::kNone:
+      break;
+  }
+  return "none";
+}
+
+std::vector<PortInfo> ListPorts() {
+  std::vector<PortInfo> ports;
+  for (const QSerialPortInfo& info : QSerialPortInfo::availablePorts()) {
+    PortInfo p;
+    p.name = info.portName().toStdString();
+    p.system_location = info.systemLocation().toStdString();
+    p.description = info.description().toStdString();
+    p.manufacturer = info.manufacturer().toStdString();
+    p.serial_number = info.serialNumber().toStdString();
+    p.has_ids = info.hasVendorIdentifier() && info.hasProductIdentifier();
+    p.vendor_id = info.vendorIdentifier();
+    p.product_id = info.productIdentifier();
+    ports.push_back(p);
+  }
+  return ports;
+}
+
+SerialLink::SerialLink(const robot::LinkSettings& settings, QObject* parent)
+    : QObject(parent), port_(new QSerialPort(this)), timer_(new QTimer(this)), protocol_(settings) {
+  timer_->setInterval(10);
+  connect(port_, &QSerialPort::readyRead, this, [this] { OnReadyRead(); });
+  connect(port_, &QSerialPort::errorOccurred, this,
+          [this](QSerialPort::SerialPortError e) { OnError(e); });
+  connect(timer_, &QTimer::timeout, this, [this] { OnTick(); });
+}
+
+SerialLink::~SerialLink() { Close(); }
+
+bool SerialLink::is_open() const { return port_->isOpen(); }
+
+Status SerialLink::Open(const PortSettings& settings) {
+  Status s = settings.Check();
+  if (!s.ok()) return s;
+  settings_ = settings;
+  const std::string flag = "--port " + settings.port;
+  const std::string device = DevicePath(settings.port);
+  struct stat st {};
+  if (stat(device.c_str(), &st) != 0) {
+    return Status::Error(flag + ": no such serial port (" + device +
+                         "); 'armmimic-cli send --list-ports' lists the ports found");
+  }
+  if (access(device.c_str(), R_OK | W_OK) != 0 && errno == EACCES) {
+    return Status::Error(flag + ": permission denied on " + device +
+                         " (add your user to the group that owns it, usually 'dialout', and log "
+                         "in again)");
+  }
+  port_->setPortName(QString::fromStdString(settings.port));
+  if (!port_->open(QIODevice::ReadWrite)) {
+    const QSerialPort::SerialPortError e = port_->error();
+    const std::string qt = port_->errorString().toStdString();
+    port_->clearError();
+    if (e == QSerialPort::DeviceNotFoundError) {
+      return Status::Error(flag + ": no such serial port (" + qt + ")");
+    }
+    if (e == QSerialPort::PermissionError) {
+      return Status::Error(flag + ": the port is busy: another program has it open (" + qt + ")");
+    }
+    return Status::Error(flag + ": cannot open the port: " + qt);
+  }
+  const QSerialPort::Parity parity = settings.parity == 'E'   ? QSerialPort::EvenParity
+                                     : settings.parity == 'O' ? QSerialPort::OddParity
+                                                              : QSerialPort::NoParity;
+  const QSerialPort::FlowControl flow =
+      settings.flow == FlowControl::kXonXoff  ? QSerialPort::SoftwareControl
+      : settings.flow == FlowControl::kRtsCts ? QSerialPort::HardwareControl
+                                              : QSerialPort::NoFlowControl;
+  std::string refused;
+  if (!port_->setBaudRate(settings.baud)) refused = "--baud " + std::to_string(settings.baud);
+  if (refused.empty() &&
+      !port_->setDataBits(static_cast<QSerialPort::DataBits>(settings.data_bits))) {
+    refused = "--data-bits " + std::to_string(settings.data_bits);
+  }
+  if (refused.empty() && !port_->setParity(parity)) refused = "--parity";
+  if (refused.empty() &&
+      !port_->setStopBits(settings.stop_bits == 2 ? QSerialPort::TwoStop : QSerialPort::OneStop)) {
+    refused = "--stop-bits " + std::to_string(settings.stop_bits);
+  }
+  if (refused.empty() && !port_->setFlowControl(flow)) {
+    refused = std::string("--flow ") + FlowControlName(settings.flow);
+  }
+  if (!refused.empty()) {
+    const std::string qt = port_->errorString().toStdString();
+    port_->close();
+    return Status::Error(refused + ": " + device + " refused this setting (" + qt + ")");
+  }
+  port_->clear();
+  return Status::Ok();
+}
+
+void SerialLink::Close() {
+  timer_->stop();
+  if (port_->isOpen()) {
+    port_->flush();
+    port_->close();
+  }
+}
+
+double SerialLink::Now() const { return static_cast<double>(clock_.nsecsElapsed()) * 1e-9; }
+
+void SerialLink::Start(std::vector<robot::LinkLine> lines, const std::string& source_name) {
+  clock_.start();
+  reported_ = 0;
+  finished_sent_ = false;
+  protocol_.Start(std::move(lines), source_name, Now());
+  timer_->start();
+  Flush();
+}
+
+void SerialLink::Cancel(const std::string& reason) {
+  protocol_.Abort(reason);
+  Flush();
+}
+
+void SerialLink::OnReadyRead() {
+  const QByteArray data = port_->readAll();
+  if (!data.isEmpty()) {
+    protocol_.OnBytes(std::string_view(data.constData(), static_cast<std::size_t>(data.size())),
+                      Now());
+  }
+  Flush();
+}
+
+void SerialLink::OnError(QSerialPort::SerialPortError error) {
+  if (error == QSerialPort::NoError || error == QSerialPort::TimeoutError) return;
+  const std::string qt = port_->errorString().toStdString();
+  if (finished_sent_) return;
+  if (error == QSerialPort::ResourceError) {
+    protocol_.Abort("--port " + settings_.port +
+                    ": the device vanished or stopped working (unplugged?): " + qt);
+  } else if (error == QSerialPort::WriteError || error == QSerialPort::ReadError) {
+    protocol_.Abort("--port " + settings_.port + ": I/O error: " + qt);
+  } else {
+    return;
+  }
+  Flush();
+}
+
+void SerialLink::OnTick() {
+  protocol_.OnTick(Now());
+  Flush();
+}
+
+void SerialLink::Flush() {
+  const std::string out = protocol_.TakeOutput();
+  if (!out.empty() && port_->isOpen()) {
+    port_->write(out.data(), static_cast<qint64>(out.size()));
+  }
+  if (protocol_.acknowledged() != reported_) {
+    reported_ = protocol_.acknowledged();
+    emit progress(static_cast<int>(reported_), static_cast<int>(protocol_.total()));
+  }
+  if (protocol_.finished() && !finished_sent_) {
+    finished_sent_ = true;
+    timer_->stop();
+    if (port_->isOpen()) port_->waitForBytesWritten(200);
+    emit finished(protocol_.state() == robot::LinkState::kDone);
+  }
+}
+
+}  // namespace armmimic::serial
