@@ -142,8 +142,87 @@ double ReachAlong(const std::vector<cv::Point>& contour, const cv::Point2d& orig
   return reach;
 }
 
+double RayFit(const cv::Mat& mask, const cv::Point2d& origin, double d0, double d1,
+              double exclude_deg, double exclude_half_deg) {
+  constexpr int kRays = 360;
+  const int samples = std::max(2, static_cast<int>(d1 - d0));
+  int score[kRays];
+  int best = 0;
+  for (int k = 0; k < kRays; ++k) {
+    score[k] = 0;
+    const double deg = k - 179.0;
+    if (std::isfinite(exclude_deg) && std::fabs(AngleDiff(deg, exclude_deg)) < exclude_half_deg) {
+      continue;
+    }
+    const cv::Point2d v = DirectionVector(deg);
+    for (int i = 0; i < samples; ++i) {
+      const double t = d0 + (d1 - d0) * i / (samples - 1);
+      const int x = cvRound(origin.x + v.x * t), y = cvRound(origin.y + v.y * t);
+      if (x >= 0 && y >= 0 && x < mask.cols && y < mask.rows && mask.at<uchar>(y, x)) ++score[k];
+    }
+    best = std::max(best, score[k]);
+  }
+  if (best * 2 < samples) return kNaN;
+  // The middle of the widest run of rays within 90 % of the best: the arm's axis, not its edge.
+  const int level = static_cast<int>(std::ceil(0.9 * best));
+  int run_start = -1, best_start = 0, best_len = 0;
+  for (int k = 0; k < 2 * kRays; ++k) {
+    const bool on = score[k % kRays] >= level;
+    if (on && run_start < 0) run_start = k;
+    if ((!on || k == 2 * kRays - 1) && run_start >= 0) {
+      const int len = std::min(k - run_start, kRays);
+      if (len > best_len) best_len = len, best_start = run_start;
+      run_start = -1;
+    }
+  }
+  return Wrap180(best_start + (best_len - 1) / 2.0 - 179.0);
+}
+
+// Improved bent/straight decision and segments by ray fit: the upper arm is the ray from the
+// shoulder best covered by the arm between 35 and 95 % of the upper arm's length; the elbow is at
+// that length; the forearm is the best ray from the elbow, not searched back along the upper arm.
+// A forearm folded onto the upper arm, which the hull cannot separate, stays apart, and a slight
+// bend the 30 % rule calls straight is seen. Returns false when no upper-arm ray is covered.
+static bool RayFitArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point2d& shoulder_px,
+                      const BgsubOptions& options, bool was_bent, bool rule_bent,
+                      double upper_len_px, double fore_len_px, ArmGeometry* g) {
+  const double up = RayFit(mask, shoulder_px, 0.35 * upper_len_px, 0.95 * upper_len_px, kNaN, 0);
+  if (!std::isfinite(up)) return false;
+  const cv::Point2d e = shoulder_px + DirectionVector(up) * upper_len_px;
+  const double fo = RayFit(mask, e, 0.25 * fore_len_px, 0.8 * fore_len_px, up + 180, 25);
+  // A bend the 30 % rule missed must be clear: near the rest pose the visible part of a straight
+  // arm is a sliver whose ray is off the arm's axis.
+  const double min_bend = rule_bent ? (was_bent ? 8.0 : 12.0) : 22.0;
+  if (!std::isfinite(fo) || std::fabs(AngleDiff(fo, up)) < min_bend) {
+    g->bent = false;
+    g->note = "straight arm (ray fit)";
+    FinishStraight(mask, box, shoulder_px, options, g);
+    return true;
+  }
+  const cv::Point2d w = e + DirectionVector(fo) * fore_len_px;
+  MomentAccumulator ua, fa;
+  Split(
+      mask, box,
+      [&](int x, int y) {
+        const cv::Point2d p(x, y);
+        return DistanceToSegment(p, shoulder_px, e) <= DistanceToSegment(p, e, w);
+      },
+      &ua, &fa);
+  g->bent = true;
+  g->elbow_px = e;
+  g->wrist_px = w;
+  g->upper_com_px = ua.count() > 0 ? Centre(ua.Moments()) : (shoulder_px + e) * 0.5;
+  g->fore_com_px = fa.count() > 0 ? Centre(fa.Moments()) : (e + w) * 0.5;
+  g->upper_deg = up;
+  g->fore_deg = fo;
+  g->reach_px = ReachAlong(g->contour, shoulder_px, up);
+  g->note = "bent arm (ray fit)";
+  return true;
+}
+
 ArmGeometry AnalyzeArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point2d& shoulder_px,
-                       const BgsubOptions& options, bool was_bent) {
+                       const BgsubOptions& options, bool was_bent, double upper_len_px,
+                       double fore_len_px) {
   ArmGeometry g;
   // Contour and hull (thesis 5.2.5, Sklansky's scan of section 3.6).
   g.contour = LargestContour(mask, box);
@@ -169,6 +248,10 @@ ArmGeometry AnalyzeArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point
   double ratio = options.straight_ratio;
   if (!options.thesis_mode) ratio += was_bent ? -options.bend_hysteresis : options.bend_hysteresis;
   g.bent = !defects.empty() && g.defect_depth_px > ratio * g.axes.major;
+  if (!options.thesis_mode && upper_len_px > 0 && fore_len_px > 0 &&
+      RayFitArm(mask, box, shoulder_px, options, was_bent, g.bent, upper_len_px, fore_len_px, &g)) {
+    return g;
+  }
   if (!g.bent) {
     g.note = "straight arm";
     FinishStraight(mask, box, shoulder_px, options, &g);

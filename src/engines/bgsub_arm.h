@@ -9,6 +9,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "armmimic/core/angles.h"
 #include "armmimic/core/geometry.h"
 #include "armmimic/engines/bgsub_options.h"
 
@@ -53,8 +54,17 @@ struct ArmGeometry {
 
 // Analyses the arm region `mask` (CV_8UC1, 0/255, one region inside `box`). `was_bent` is the
 // previous frame's decision (hysteresis). Straight arms get one direction for both segments.
+// `upper_len_px`/`fore_len_px` (from the arm-length image; NaN when unknown) enable the improved
+// ray fit for bent arms.
 ArmGeometry AnalyzeArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point2d& shoulder_px,
-                       const BgsubOptions& options, bool was_bent);
+                       const BgsubOptions& options, bool was_bent, double upper_len_px = kNaN,
+                       double fore_len_px = kNaN);
+
+// The direction from `origin` along which `mask` is covered best between distances d0 and d1
+// (1-degree rays; the middle of the widest near-best run). Rays within `exclude_half_deg` of
+// `exclude_deg` are skipped. NaN when no ray is covered for at least half its length.
+double RayFit(const cv::Mat& mask, const cv::Point2d& origin, double d0, double d1,
+              double exclude_deg, double exclude_half_deg);
 
 // Farthest projection of the points of `contour` (a region's outline) from `origin` along
 // `direction_deg`: how far the region reaches from `origin` in that direction.

@@ -67,6 +67,8 @@ class BgsubEngine final : public Engine {
     scene_ = bgsub::SceneModel();
     bgsub::ToGray(context.background(region_), &scene_.background);
     bgsub::ToGray(context.arm_length(region_), &arm_length_gray_);
+    arm_length_bgr_ = context.arm_length(region_).clone();
+    scene_.background_bgr = context.background(region_).clone();
     if (context.shoulder_px) {
       scene_.fixed_shoulder =
           cv::Point2d(context.shoulder_px->x - region_.x, context.shoulder_px->y - region_.y);
@@ -101,7 +103,7 @@ class BgsubEngine final : public Engine {
       FillSceneOverlay(&m);
       return m;
     }
-    Measure(&m);
+    Measure(frame, &m);
     return m;
   }
 
@@ -116,7 +118,7 @@ class BgsubEngine final : public Engine {
  private:
   void FinishStandstill() {
     standstill_sum_.convertTo(scene_.standstill, CV_8UC1, 1.0 / standstill_count_);
-    bgsub::BuildScene(arm_length_gray_, options_, &buffers_, &scene_);
+    bgsub::BuildScene(arm_length_gray_, arm_length_bgr_, options_, &buffers_, &scene_);
   }
 
   void FillSceneOverlay(ArmMeasurement* m) const {
@@ -125,7 +127,7 @@ class BgsubEngine final : public Engine {
     if (auto s = scene_.Shoulder(scene_.side, options_)) m->shoulder_px = Offset(*s, o);
   }
 
-  void Measure(ArmMeasurement* m) {
+  void Measure(const Frame& frame, ArmMeasurement* m) {
     m->phase = MeasurementPhase::kLost;
     FillSceneOverlay(m);
     if (!scene_.note.empty() && !scene_.body_box && !scene_.fixed_shoulder) {
@@ -134,9 +136,17 @@ class BgsubEngine final : public Engine {
     }
     cv::Rect box;
     std::string note;
+    const bool improved = !options_.thesis_mode;
     // Side unknown (no arm in the arm-length image): the largest moving region decides it.
     const bool largest_only = scene_.side == 0 && !scene_.fixed_shoulder;
-    if (!bgsub::FindArmMask(gray_, scene_, options_, largest_only, &buffers_, &box, &note)) {
+    if (!bgsub::FindArmMask(gray_, frame.image(region_), scene_, options_, largest_only, &buffers_,
+                            &box, &note)) {
+      const std::optional<cv::Point2d> rest_shoulder = scene_.Shoulder(scene_.side, options_);
+      if (improved && options_.rest_pose && rest_shoulder &&
+          scene_.ArmAtRest(*rest_shoulder, options_, buffers_)) {
+        FillRest(*rest_shoulder, m);
+        return;
+      }
       m->note = note;
       return;
     }
@@ -150,12 +160,15 @@ class BgsubEngine final : public Engine {
       m->note = "no shoulder: no body in the standstill and no --shoulder";
       return;
     }
-    const bgsub::ArmGeometry g =
-        bgsub::AnalyzeArm(buffers_.arm, box, *shoulder, options_, was_bent_);
+    const double upper_len = options_.upper_arm_fraction * scene_.ref_reach_px;
+    const double fore_len = scene_.ref_reach_px - upper_len;
+    bgsub::ArmGeometry g =
+        bgsub::AnalyzeArm(buffers_.arm, box, *shoulder, options_, was_bent_, upper_len, fore_len);
     if (!g.found) {
       m->note = g.note;
       return;
     }
+    if (improved && options_.rest_pose) ForearmOnly(*shoulder, &g);
     was_bent_ = g.bent;
     const cv::Point o = region_.tl();
     m->phase = MeasurementPhase::kOk;
@@ -174,6 +187,52 @@ class BgsubEngine final : public Engine {
     m->arm_hull = Offset(g.hull, o);
   }
 
+  // The upper arm at rest (no moved pixels along it) and the moving region starting near the
+  // rest elbow: only the forearm moved, e.g. flexing from the hanging pose. The standstill hides
+  // the upper arm, so it keeps the rest direction.
+  void ForearmOnly(const cv::Point2d& shoulder, bgsub::ArmGeometry* g) const {
+    const double upper_len = options_.upper_arm_fraction * scene_.ref_reach_px;
+    if (!(upper_len > 0)) return;
+    double nearest = 1e18;
+    for (const cv::Point& p : g->contour) {
+      nearest = std::min(nearest, std::hypot(p.x - shoulder.x, p.y - shoulder.y));
+    }
+    if (nearest < 0.6 * upper_len || !scene_.ArmAtRest(shoulder, options_, buffers_)) return;
+    const cv::Point2d elbow = shoulder + DirectionVector(options_.rest_deg) * upper_len;
+    const cv::Point2d com(g->whole.cx, g->whole.cy);
+    g->upper_deg = options_.rest_deg;
+    g->fore_deg = ResolveDirection(g->axis_deg, elbow, com);
+    g->bent = std::fabs(AngleDiff(g->fore_deg, g->upper_deg)) > 10;
+    g->elbow_px = elbow;
+    g->upper_com_px = shoulder + DirectionVector(options_.rest_deg) * (upper_len / 2);
+    g->fore_com_px = com;
+    double far = -1;
+    for (const cv::Point& p : g->contour) {
+      const double d = std::hypot(p.x - elbow.x, p.y - elbow.y);
+      if (d > far) far = d, g->wrist_px = p;
+    }
+    g->reach_px = upper_len + far;
+    g->note = "upper arm at rest, forearm moved";
+  }
+
+  // Nothing moved and the arm's standstill place is unchanged: the arm is at its rest pose.
+  void FillRest(const cv::Point2d& shoulder, ArmMeasurement* m) const {
+    const cv::Point o = region_.tl();
+    const double upper_len = options_.upper_arm_fraction * scene_.ref_reach_px;
+    const cv::Point2d dir = DirectionVector(options_.rest_deg);
+    m->phase = MeasurementPhase::kOk;
+    m->note = "arm at rest (standstill pose)";
+    m->upper_deg = Wrap180(options_.rest_deg);
+    m->fore_deg = m->upper_deg;
+    m->bend_deg = 0;
+    m->yaw_deg = 0;
+    m->shoulder_px = Offset(shoulder, o);
+    m->elbow_px = Offset(shoulder + dir * upper_len, o);
+    m->wrist_px = Offset(shoulder + dir * scene_.ref_reach_px, o);
+    m->upper_com_px = Offset(shoulder + dir * (upper_len / 2), o);
+    m->fore_com_px = Offset(shoulder + dir * (upper_len + scene_.ref_reach_px) * 0.5, o);
+  }
+
   // yaw = acos(a/b) (5.2.6): a from this frame, b from the arm-length image. Improved: the arm's
   // reach from the shoulder along its axis, which a partly hidden arm does not shorten.
   double Yaw(const bgsub::ArmGeometry& g) const {
@@ -190,6 +249,7 @@ class BgsubEngine final : public Engine {
   cv::Rect region_;
   bgsub::SceneModel scene_;
   cv::Mat arm_length_gray_;
+  cv::Mat arm_length_bgr_;
   cv::Mat standstill_sum_;
   int standstill_count_ = 0;
   bool was_bent_ = false;

@@ -58,6 +58,26 @@ void DifferenceMask(const cv::Mat& image, const cv::Mat& reference, int offset, 
   }
 }
 
+void RemoveShadow(const cv::Mat& bgr, const cv::Mat& background_bgr, cv::Mat* mask) {
+  CV_Assert(bgr.type() == CV_8UC3 && background_bgr.type() == CV_8UC3 &&
+            bgr.size() == background_bgr.size() && mask->size() == bgr.size());
+  for (int y = 0; y < bgr.rows; ++y) {
+    uchar* m = mask->ptr<uchar>(y);
+    const cv::Vec3b* f = bgr.ptr<cv::Vec3b>(y);
+    const cv::Vec3b* b = background_bgr.ptr<cv::Vec3b>(y);
+    for (int x = 0; x < bgr.cols; ++x) {
+      if (!m[x]) continue;
+      float lo = 10, hi = 0;
+      for (int c = 0; c < 3; ++c) {
+        const float r = (f[x][c] + 1.0f) / (b[x][c] + 1.0f);
+        lo = std::min(lo, r);
+        hi = std::max(hi, r);
+      }
+      if (lo >= 0.45f && hi <= 0.97f && hi - lo <= 0.12f) m[x] = 0;
+    }
+  }
+}
+
 void ComponentMask(const cv::Mat& labels, const Component& c, cv::Mat* out) {
   out->create(labels.size(), CV_8UC1);
   out->setTo(0);

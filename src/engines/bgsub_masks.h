@@ -23,6 +23,10 @@ int BrightnessDrift(const cv::Mat& image, const cv::Mat& reference, const cv::Re
 void DifferenceMask(const cv::Mat& image, const cv::Mat& reference, int offset, int threshold,
                     cv::Mat* mask);
 
+// Clears the pixels of `mask` where `bgr` looks like `background_bgr` in shadow: every channel
+// darker by a similar ratio in [0.45, 0.97] (the hue kept, the brightness lowered).
+void RemoveShadow(const cv::Mat& bgr, const cv::Mat& background_bgr, cv::Mat* mask);
+
 // Keeps in *out (CV_8UC1, same size as labels, 0/255) only the pixels of component `c`.
 void ComponentMask(const cv::Mat& labels, const Component& c, cv::Mat* out);
 

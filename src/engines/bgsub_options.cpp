@@ -48,6 +48,10 @@ Status BgsubOptions::Check() const {
     return Status::Error("bgsub bend_hysteresis must be in [0, straight_ratio) (got " +
                          Str(bend_hysteresis) + ")");
   }
+  if (!(upper_arm_fraction > 0.1 && upper_arm_fraction < 0.9)) {
+    return Status::Error("bgsub upper_arm_fraction must be in (0.1, 0.9) (got " +
+                         Str(upper_arm_fraction) + ")");
+  }
   return Status::Ok();
 }
 

@@ -20,6 +20,7 @@ cv::Rect Expand(const cv::Rect& r, double fraction, const cv::Size& limit) {
 
 std::optional<cv::Point2d> SceneModel::Shoulder(int arm_side, const BgsubOptions& options) const {
   if (fixed_shoulder) return fixed_shoulder;
+  if (arm_shoulder && !options.thesis_mode && options.shoulder_from_arm_length) return arm_shoulder;
   if (!body_box || arm_side == 0) return std::nullopt;
   const cv::Rect& b = *body_box;
   const double fx = arm_side > 0 ? 1.0 - options.shoulder_side : options.shoulder_side;
@@ -32,8 +33,29 @@ double SceneModel::ArmLengthScale() const {
   return 0.25 * std::max(background.cols, background.rows);
 }
 
-bool FindArmMask(const cv::Mat& gray, const SceneModel& scene, const BgsubOptions& options,
-                 bool largest_only, Buffers* buf, cv::Rect* box, std::string* note) {
+bool SceneModel::ArmAtRest(const cv::Point2d& shoulder, const BgsubOptions& options,
+                           const Buffers& buf) const {
+  if (!(ref_reach_px > 0) || !(arm_half_width_px > 0)) return false;
+  const cv::Point2d dir = DirectionVector(options.rest_deg);
+  const double upper = options.upper_arm_fraction * ref_reach_px;
+  const double r = arm_half_width_px;
+  // Pixels along the rest upper arm, from one arm radius below the shoulder to the elbow.
+  int total = 0, changed = 0;
+  for (double t = r; t <= upper - r; t += 1.0) {
+    for (double w = -r; w <= r; w += 1.0) {
+      const int x = cvRound(shoulder.x + dir.x * t - dir.y * w);
+      const int y = cvRound(shoulder.y + dir.y * t + dir.x * w);
+      if (x < 0 || y < 0 || x >= buf.moved.cols || y >= buf.moved.rows) continue;
+      ++total;
+      if (buf.moved.at<uchar>(y, x)) ++changed;
+    }
+  }
+  return total > 0 && changed < 0.2 * total;
+}
+
+bool FindArmMask(const cv::Mat& gray, const cv::Mat& bgr, const SceneModel& scene,
+                 const BgsubOptions& options, bool largest_only, Buffers* buf, cv::Rect* box,
+                 std::string* note) {
   const bool improved = !options.thesis_mode;
   // Two-step differencing (5.2.4), optionally after removing a global brightness drift.
   int off_bg = 0, off_still = 0;
@@ -46,17 +68,17 @@ bool FindArmMask(const cv::Mat& gray, const SceneModel& scene, const BgsubOption
   DifferenceMask(gray, scene.background, off_bg, options.threshold, &buf->person);
   DifferenceMask(gray, scene.standstill, off_still, options.threshold, &buf->moved);
   cv::bitwise_and(buf->person, buf->moved, buf->candidate);
+  if (improved && options.reject_shadow && !bgr.empty() && !scene.background_bgr.empty()) {
+    RemoveShadow(bgr, scene.background_bgr, &buf->candidate);
+  }
 
   // Movement of the head: above the shoulders and between them.
   std::optional<cv::Point2d> shoulder = scene.Shoulder(scene.side, options);
-  if (improved && options.reject_head && scene.body_box && !largest_only) {
-    const cv::Rect& b = *scene.body_box;
-    const double left = b.x + options.shoulder_side * b.width;
-    const double right = b.x + (1.0 - options.shoulder_side) * b.width;
-    const double inset = 0.2 * (right - left);
-    const int top_y = static_cast<int>(b.y + (1.0 - options.shoulder_height) * b.height);
-    cv::Rect head(static_cast<int>(left + inset), 0, static_cast<int>(right - left - 2 * inset),
-                  top_y);
+  if (improved && options.reject_head && shoulder && std::isfinite(scene.head_cx) &&
+      !largest_only) {
+    const double half = 0.6 * std::fabs(shoulder->x - scene.head_cx);
+    cv::Rect head(static_cast<int>(scene.head_cx - half), 0, static_cast<int>(2 * half),
+                  static_cast<int>(shoulder->y));
     head &= cv::Rect(0, 0, gray.cols, gray.rows);
     if (head.area() > 0) buf->candidate(head).setTo(0);
   }
@@ -92,8 +114,8 @@ bool FindArmMask(const cv::Mat& gray, const SceneModel& scene, const BgsubOption
   return true;
 }
 
-void BuildScene(const cv::Mat& arm_length_gray, const BgsubOptions& options, Buffers* buf,
-                SceneModel* scene) {
+void BuildScene(const cv::Mat& arm_length_gray, const cv::Mat& arm_length_bgr,
+                const BgsubOptions& options, Buffers* buf, SceneModel* scene) {
   // mask2: the standing body, the largest region of |standstill - background| > threshold.
   DifferenceMask(scene->standstill, scene->background, 0, options.threshold, &buf->person);
   std::vector<Component> body = MaskComponents(buf->person, nullptr);
@@ -108,16 +130,44 @@ void BuildScene(const cv::Mat& arm_length_gray, const BgsubOptions& options, Buf
   if (arm_length_gray.empty()) return;
   cv::Rect box;
   std::string note;
-  if (!FindArmMask(arm_length_gray, *scene, options, /*largest_only=*/true, buf, &box, &note)) {
+  if (!FindArmMask(arm_length_gray, arm_length_bgr, *scene, options, /*largest_only=*/true, buf,
+                   &box, &note)) {
     if (scene->note.empty()) scene->note = "arm-length image: " + note + "; yaw is not measured";
     return;
   }
   const RegionMoments m = ComputeMoments(buf->arm, box);
+  {
+    // The head: the top rows of the standing body.
+    if (scene->body_box) {
+      const cv::Rect& b = *scene->body_box;
+      DifferenceMask(scene->standstill, scene->background, 0, options.threshold, &buf->moved);
+      const RegionMoments head =
+          ComputeMoments(buf->moved, cv::Rect(b.x, b.y, b.width, std::max(1, b.height / 20)));
+      if (head.m00 > 0) scene->head_cx = head.cx;
+    }
+  }
   if (scene->side == 0) {
     const double centre_x =
         scene->body_box ? scene->body_box->x + 0.5 * scene->body_box->width
                         : (scene->fixed_shoulder ? scene->fixed_shoulder->x : 0.5 * buf->arm.cols);
     scene->side = m.cx >= centre_x ? 1 : -1;
+  }
+  {
+    // Where the straight horizontal arm meets the body: its inner end, one arm radius in, at the
+    // height of its axis. The hanging arm of the standstill hides the arm's first radius.
+    int x_in = box.x + box.width, x_out = box.x - 1;
+    for (int y = box.y; y < box.y + box.height; ++y) {
+      const uchar* row = buf->arm.ptr<uchar>(y);
+      for (int x = box.x; x < box.x + box.width; ++x) {
+        if (row[x]) x_in = std::min(x_in, x), x_out = std::max(x_out, x);
+      }
+    }
+    if (x_out >= x_in) {
+      const double length = x_out - x_in + 1;
+      scene->arm_half_width_px = m.m00 / (2 * length);
+      const double inner = scene->side > 0 ? x_in : x_out;
+      scene->arm_shoulder = cv::Point2d(inner - scene->side * scene->arm_half_width_px, m.cy);
+    }
   }
   const std::optional<cv::Point2d> shoulder = scene->Shoulder(scene->side, options);
   if (!shoulder) return;

@@ -16,12 +16,22 @@
 
 namespace armmimic::bgsub {
 
+// Per-frame working buffers, reused so that a frame allocates nothing after the first.
+struct Buffers {
+  cv::Mat person, moved, candidate, labels, arm;
+  std::vector<Component> components;
+};
+
 struct SceneModel {
+  cv::Mat background_bgr;                     // CV_8UC3, the analysed region (shadow test)
   cv::Mat background;                         // CV_8UC1, the analysed region
   cv::Mat standstill;                         // CV_8UC1, mean of the standstill frames
   std::optional<cv::Rect> body_box;           // box of mask2 (the standing body)
   int side = 0;                               // moving arm on screen right +1, left -1, unknown 0
   std::optional<cv::Point2d> fixed_shoulder;  // EngineContext::shoulder_px, region coordinates
+  std::optional<cv::Point2d> arm_shoulder;    // improved: where the horizontal arm meets the body
+  double head_cx = kNaN;                      // x of the top of the standstill body (the head)
+  double arm_half_width_px = kNaN;            // half the thickness of the straight arm
   double ref_major_px = kNaN;                 // b: semi-major axis of the straight arm
   double ref_reach_px = kNaN;                 // its reach from the shoulder along its axis
   std::string note;                           // what went wrong while building, if anything
@@ -31,24 +41,23 @@ struct SceneModel {
   std::optional<cv::Point2d> Shoulder(int side, const BgsubOptions& options) const;
   // A length scale for "near the shoulder": the arm's reach, or half the body height.
   double ArmLengthScale() const;
-};
-
-// Per-frame working buffers, reused so that a frame allocates nothing after the first.
-struct Buffers {
-  cv::Mat person, moved, candidate, labels, arm;
-  std::vector<Component> components;
+  // Improved: whether the moving arm's place in the standstill is still covered (the arm did not
+  // move) judged from the pixels that neither moved nor were vacated around the rest upper arm.
+  bool ArmAtRest(const cv::Point2d& shoulder, const BgsubOptions& options,
+                 const Buffers& buffers) const;
 };
 
 // The moving arm of `gray` (the analysed region): frame vs background gives the person, frame vs
 // standstill what moved (5.2.4); their intersection's connected regions are labelled and the arm
 // is picked (the largest in the thesis; the largest near the shoulder, head region excluded, when
 // improved) and closed. Returns false with *note set when there is no arm. *box: the arm's box.
-bool FindArmMask(const cv::Mat& gray, const SceneModel& scene, const BgsubOptions& options,
-                 bool largest_only, Buffers* buffers, cv::Rect* box, std::string* note);
+bool FindArmMask(const cv::Mat& gray, const cv::Mat& bgr, const SceneModel& scene,
+                 const BgsubOptions& options, bool largest_only, Buffers* buffers, cv::Rect* box,
+                 std::string* note);
 
 // Builds the body box from the standstill (mask2 = |standstill - background| > threshold, the
 // largest region), then measures the straight arm of `arm_length_gray` for b and the arm's side.
-void BuildScene(const cv::Mat& arm_length_gray, const BgsubOptions& options, Buffers* buffers,
-                SceneModel* scene);
+void BuildScene(const cv::Mat& arm_length_gray, const cv::Mat& arm_length_bgr,
+                const BgsubOptions& options, Buffers* buffers, SceneModel* scene);
 
 }  // namespace armmimic::bgsub

@@ -20,11 +20,16 @@ struct BgsubOptions {
 
   // --- Improvements (section 5.3 failures), used only when thesis_mode is false ---
   bool compensate_drift = true;   // subtract the global brightness drift before thresholding
+  bool reject_shadow = true;      // drop pixels that are the background darkened, hue kept
   bool reject_head = true;        // ignore movement above the shoulders between them
   double near_shoulder = 0.5;     // keep the blob nearest the shoulder, within this * arm length
   bool two_line_split = true;     // refine the upper/fore split by distance to the two segments
   bool extent_yaw = true;         // yaw from the arm's reach along its axis, not the ellipse
   double bend_hysteresis = 0.05;  // straight/bent switches at straight_ratio -/+ this
+  bool shoulder_from_arm_length = true;  // shoulder where the horizontal arm meets the body
+  bool rest_pose = true;                 // an unmoved arm is at its standstill pose, not lost
+  double rest_deg = -90;                 // the standstill pose: arms hanging (thesis 5.2.2)
+  double upper_arm_fraction = 0.45;      // upper arm / (shoulder-to-fingertip reach)
 
   Status Check() const;  // messages name the CLI flag where there is one
 };
