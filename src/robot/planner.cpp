@@ -150,6 +150,13 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
   report.rows = n;
   if (n == 0) return Status::Error("the angle file has no rows");
   const bool marker = options.mapping.kind == SourceKind::kMarker;
+  if (DetectSourceKind(angles) != options.mapping.kind) {
+    return Status::Error(std::string("the angle file comes from the ") +
+                         (marker ? "arm engines" : "marker engine") +
+                         " but the mapping is for the " + SourceKindName(options.mapping.kind) +
+                         (marker ? " engine" : " engines") +
+                         " (start from MappingOptions::Default(DetectSourceKind(file)))");
+  }
 
   // Times: the file's, or frame counts at fallback_fps when they do not increase.
   std::vector<double> t(n);
