@@ -139,6 +139,9 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
   o.engine.bgsub.thesis_mode = thesis;
   o.engine.lk.thesis_mode = thesis;
   o.engine.marker.thesis_mode = thesis;
+  // An explicit grey window is used as given; otherwise the marker engine may shift it when the
+  // reference's markers do not show in 20..80 (other illumination).
+  if (p.Given("--low") || p.Given("--high")) o.engine.marker.auto_window = false;
   if (Status st = o.Check(); !st) return p.UsageError(st.message());
 
   InterruptGuard guard;

@@ -58,7 +58,7 @@ std::vector<MarkerBlob> FindMarkerCandidates(const cv::Mat& bgr, const MarkerOpt
   const double max_area = options.max_area * scale;
 
   // A marker's antialiased rim seeds components of its own (the range is relative to the seed):
-  // small components whose boxes overlap are fragments of one blob and are merged.
+  // small components whose boxes mostly overlap are fragments of one blob and are merged.
   std::vector<int> small;
   for (int i = 0; i < static_cast<int>(s->components.size()); ++i) {
     const Component& c = s->components[i];
@@ -73,7 +73,9 @@ std::vector<MarkerBlob> FindMarkerCandidates(const cv::Mat& bgr, const MarkerOpt
     for (std::size_t j = i + 1; j < small.size(); ++j) {
       const cv::Rect& b = s->components[small[j]].box;
       if (b.x >= a.x + a.width) break;
-      if (b.y < a.y + a.height && a.y < b.y + b.height) {
+      // Fragments of one marker nest (a rim around its core); a neighbour only touches.
+      const int overlap = (a & b).area();
+      if (overlap > 0 && 2 * overlap >= std::min(a.area(), b.area())) {
         parent[Find(parent, static_cast<int>(j))] = Find(parent, static_cast<int>(i));
       }
     }
@@ -106,9 +108,13 @@ std::vector<MarkerBlob> FindMarkerCandidates(const cv::Mat& bgr, const MarkerOpt
   return out;
 }
 
-bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_ratio,
+bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_ratio, int min_height,
                   MarkerBlob* blob) {
-  const cv::Rect w(blob->box.x - 2, blob->box.y - 2, blob->box.width + 4, blob->box.height + 4);
+  // A thin marker's blob may be only its core: the window spans at least a full marker's
+  // height (yaw does not change it), plus a ring of two pixels.
+  const int grow = std::max(0, (min_height - blob->box.height + 1) / 2);
+  const cv::Rect w(blob->box.x - 2, blob->box.y - 2 - grow, blob->box.width + 4,
+                   blob->box.height + 4 + 2 * grow);
   if (w.x < 0 || w.y < 0 || w.x + w.width > gray.cols || w.y + w.height > gray.rows) return false;
   const double xc = blob->centre.x;
   const double yc = blob->centre.y;
@@ -152,6 +158,15 @@ bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_rati
     std::nth_element(residuals.begin(), residuals.begin() + residuals.size() / 2, residuals.end());
     threshold = std::max(4.0, 3 * 1.4826 * residuals[residuals.size() / 2]);
   }
+  // Columns beside the blob whose top and bottom ring pixels are both off the fit lie beyond
+  // the lower part's silhouette (it is upright): they are background, not marker.
+  std::vector<char> skip(w.width, 0);
+  for (int x = w.x; x < w.x + w.width; ++x) {
+    if (x >= blob->box.x && x < blob->box.x + blob->box.width) continue;
+    const double top = gray.at<uchar>(w.y, x) - level(x, w.y);
+    const double bottom = gray.at<uchar>(w.y + w.height - 1, x) - level(x, w.y + w.height - 1);
+    skip[x - w.x] = std::abs(top) > threshold && std::abs(bottom) > threshold;
+  }
   double darkest = 255;
   for (int y = blob->box.y; y < blob->box.y + blob->box.height; ++y) {
     const uchar* row = filtered.ptr<uchar>(y);
@@ -165,6 +180,7 @@ bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_rati
   for (int y = w.y; y < w.y + w.height; ++y) {
     const uchar* row = gray.ptr<uchar>(y);
     for (int x = w.x; x < w.x + w.width; ++x) {
+      if (skip[x - w.x]) continue;
       const double s = level(x, y);
       const double m = core_ratio > 0 ? core_ratio * s : core;
       const double c = std::clamp((s - row[x]) / std::max(1.0, s - m), 0.0, 1.0);
@@ -266,8 +282,12 @@ bool ChooseTriple(const std::vector<MarkerBlob>& blobs, const MarkerReference& r
       if (ratio < options.min_width_ratio || ratio > options.max_width_ratio) continue;
       const double dy = std::abs(a.centre.y - b.centre.y);
       if (dy > 0.1 * big_n + 2) continue;
-      if (std::min(a.area_px, b.area_px) * 5 < std::max(a.area_px, b.area_px)) continue;
+      if (std::min(a.area_px, b.area_px) * 10 < std::max(a.area_px, b.area_px)) continue;
       const double cos_yaw = std::min(1.0, ratio);
+      // Areas: the pair together shows about cos(yaw) of the reference pair's area.
+      const double pair_area = (a.area_px + b.area_px) /
+                               (cos_yaw * (ref.markers.left.area_px + ref.markers.right.area_px));
+      if (pair_area < 0.3 || pair_area > 2.5) continue;
       const cv::Point2d mid = (a.centre + b.centre) * 0.5;
       const double pivot_y = mid.y - e;
       for (int k = 0; k < count; ++k) {
@@ -277,7 +297,11 @@ bool ChooseTriple(const std::vector<MarkerBlob>& blobs, const MarkerReference& r
         const double dx = (c.centre.x - mid.x) / cos_yaw;
         const double resid = std::abs(std::hypot(dx, pivot_y - c.centre.y) - e) / e;
         if (resid > options.geometry_tolerance) continue;
-        const double score = resid + dy / big_n;
+        // The upper marker faces the camera turned by the yaw only.
+        const double upper_area = c.area_px / (cos_yaw * ref.markers.upper.area_px);
+        if (upper_area < 0.4 || upper_area > 2.5) continue;
+        const double score = resid + dy / big_n + 0.1 * std::abs(std::log(upper_area)) +
+                             0.1 * std::abs(std::log(pair_area));
         if (score < best) {
           best = score;
           *out = Ordered(c, a, b);

@@ -43,7 +43,8 @@ std::vector<MarkerBlob> FindMarkerCandidates(const cv::Mat& bgr, const MarkerOpt
 // surround and the marker level. `core_ratio` is marker / surround level learnt from the
 // reference (<= 0: take the darkest median-filtered value in the blob). False when the blob
 // touches the image border or has no contrast (the blob keeps its bounding-box centre).
-bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_ratio,
+// `min_height`: the window spans at least this many rows (the reference marker's height).
+bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_ratio, int min_height,
                   MarkerBlob* blob);
 
 // The three markers, once chosen: upper, then the lower pair left to right.
@@ -53,11 +54,12 @@ struct MarkerTriple {
 
 // Reference calibration (4.3.1): N, e and what the refinements need.
 struct MarkerReference {
-  double n_px = 0;          // N: lower markers' horizontal distance at zero yaw
-  double e_px = 0;          // pivot distance: half the upper-to-lower-midpoint height
-  double alpha_deg = 0;     // the lower markers' angle from the front, from their areas
-  double face_area_px = 0;  // the upper marker's area (facing the camera)
-  double core_ratio = 0;    // marker / surround level
+  double n_px = 0;           // N: lower markers' horizontal distance at zero yaw
+  double e_px = 0;           // pivot distance: half the upper-to-lower-midpoint height
+  double alpha_deg = 0;      // the lower markers' angle from the front, from their areas
+  double face_area_px = 0;   // the upper marker's area (facing the camera)
+  double core_ratio = 0;     // marker / surround level
+  int marker_height_px = 0;  // the upper marker's box height
   MarkerTriple markers;
 };
 

@@ -31,6 +31,9 @@ Status MarkerOptions::Check() const {
     return Status::Error("--min-aspect/--max-aspect: need 0 < min-aspect <= max-aspect");
   }
   if (!(min_fill >= 0 && min_fill <= 1)) return Status::Error("--min-fill must be in [0, 1]");
+  if (!(max_marker_turn_deg > 0 && max_marker_turn_deg <= 90)) {
+    return Status::Error("--max-marker-turn must be in (0, 90] degrees");
+  }
   if (!(min_foreshortening >= 0 && min_foreshortening < 1)) {
     return Status::Error("--min-foreshortening must be in [0, 1)");
   }
@@ -50,7 +53,7 @@ std::string Fixed(double v, int decimals) { return FormatNumber(v, decimals); }
 
 class MarkerEngine : public Engine {
  public:
-  explicit MarkerEngine(const MarkerOptions& options) : options_(options) {}
+  explicit MarkerEngine(const MarkerOptions& options) : requested_(options), options_(options) {}
 
   EngineKind kind() const override { return EngineKind::kMarker; }
 
@@ -69,9 +72,31 @@ class MarkerEngine : public Engine {
                            std::to_string(context.frame_size.width) + "x" +
                            std::to_string(context.frame_size.height));
     }
-    const std::vector<MarkerBlob> blobs = FindMarkerCandidates(ref, options_, &scratch_);
+    options_ = requested_;
+    std::vector<MarkerBlob> blobs = FindMarkerCandidates(ref, options_, &scratch_);
     MarkerTriple t;
-    if (!ChooseReferenceTriple(blobs, options_.thesis_mode, &t)) {
+    bool found = ChooseReferenceTriple(blobs, options_.thesis_mode, &t);
+    if (!found && options_.auto_window && !options_.thesis_mode) {
+      // Other illumination: shift the window, nearest first, until the markers show.
+      const int width = requested_.high - requested_.low;
+      for (int shift = 5; shift <= 255 && !found; shift += 5) {
+        for (int sign : {-1, 1}) {
+          MarkerOptions o = requested_;
+          o.low = requested_.low + sign * shift;
+          o.high = o.low + width;
+          if (o.low < 0 || o.high > 255) continue;
+          std::vector<MarkerBlob> b = FindMarkerCandidates(ref, o, &scratch_);
+          if (ChooseReferenceTriple(b, false, &t)) {
+            options_ = o;
+            blobs = std::move(b);
+            found = true;
+            break;
+          }
+        }
+      }
+      if (found) FindMarkerCandidates(ref, options_, &scratch_);  // scratch for the refinement
+    }
+    if (!found) {
       return Status::Error("--reference: cannot find the three markers (" +
                            std::to_string(blobs.size()) +
                            " dark blobs passed the threshold and the heuristics; expected two "
@@ -83,7 +108,7 @@ class MarkerEngine : public Engine {
       double ratio = 0;
       int count = 0;
       for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
-        if (RefineMarker(scratch_.gray, scratch_.filtered, 0, b)) {
+        if (RefineMarker(scratch_.gray, scratch_.filtered, 0, 0, b)) {
           ratio += b->core / b->surround;
           ++count;
         }
@@ -92,9 +117,10 @@ class MarkerEngine : public Engine {
         r.core_ratio = ratio / 3;
         for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
           b->centre = {b->box.x + (b->box.width - 1) / 2.0, b->box.y + (b->box.height - 1) / 2.0};
-          RefineMarker(scratch_.gray, scratch_.filtered, r.core_ratio, b);
+          RefineMarker(scratch_.gray, scratch_.filtered, r.core_ratio, 0, b);
         }
         r.face_area_px = t.upper.coverage_px;
+        r.marker_height_px = t.upper.box.height;
         const double cos_alpha =
             std::clamp(0.5 * (t.left.coverage_px + t.right.coverage_px) / r.face_area_px, 0.0, 1.0);
         r.alpha_deg = DegFromRad(std::acos(cos_alpha));
@@ -141,11 +167,16 @@ class MarkerEngine : public Engine {
     }
     if (!options_.thesis_mode) {
       for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
-        RefineMarker(scratch_.gray, scratch_.filtered, ref_.core_ratio, b);
+        RefineMarker(scratch_.gray, scratch_.filtered, ref_.core_ratio, ref_.marker_height_px, b);
       }
     }
     m.marker_centres = {t.upper.centre, t.left.centre, t.right.centre};
     const MarkerAngles a = ComputeMarkerAngles(t, ref_, options_.thesis_mode);
+    if (!options_.thesis_mode && ref_.alpha_deg + a.yaw_deg > options_.max_marker_turn_deg) {
+      m.note = "a lower marker is nearly edge-on (turned " + Fixed(ref_.alpha_deg + a.yaw_deg, 0) +
+               " degrees from the camera)";
+      return m;
+    }
     if (!options_.thesis_mode && a.foreshortening < options_.min_foreshortening) {
       m.note = "a lower marker is nearly edge-on (shows " + Fixed(100 * a.foreshortening, 0) +
                " % of its face)";
@@ -172,6 +203,7 @@ class MarkerEngine : public Engine {
     if (begun_) {
       meta.emplace_back("N_px", Fixed(ref_.n_px, 3));
       meta.emplace_back("e_px", Fixed(ref_.e_px, 3));
+      if (!options_.thesis_mode) meta.emplace_back("alpha_deg", Fixed(ref_.alpha_deg, 2));
     }
     return meta;
   }
@@ -180,7 +212,8 @@ class MarkerEngine : public Engine {
   const MarkerReference& reference() const { return ref_; }
 
  private:
-  MarkerOptions options_;
+  MarkerOptions requested_;
+  MarkerOptions options_;  // as used: the window may be shifted by Begin
   MarkerReference ref_;
   MarkerScratch scratch_;
   cv::Size size_;

@@ -16,12 +16,18 @@ struct MarkerOptions {
   double min_aspect = 0.2;  // bounding-box width / height
   double max_aspect = 3.0;
   double min_fill = 0.7;  // area / bounding-box area
+  // Beyond the thesis: when [low, high] does not show the reference's three markers (other
+  // illumination), the window of the same width that does, nearest to [low, high], is used.
+  bool auto_window = true;
   // true: the thesis path only (the three largest survivors, bounding-box centres, no geometry
   // check, no correction for the markers' depth on the cylinder).
   bool thesis_mode = false;
-  // Beyond the thesis: a view is lost when the more turned lower marker shows less than this
-  // share of its full-face area (it is nearly edge-on, thesis: past about 35 degrees of yaw).
-  double min_foreshortening = 0.3;
+  // Beyond the thesis: a view is lost when the more turned lower marker faces the camera at more
+  // than this angle (alpha + yaw, alpha measured in the reference): it is nearly edge-on
+  // (thesis: hidden past about 35 degrees of yaw). 71 loses the views past about 31 degrees.
+  double max_marker_turn_deg = 71;
+  // ... or when it shows less than this share of its full-face area.
+  double min_foreshortening = 0.2;
   // Geometry check: how far (relative to e) the upper marker may be from where the lower pair
   // puts it, and the accepted range of n / N.
   double geometry_tolerance = 0.15;
