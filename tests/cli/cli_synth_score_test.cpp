@@ -85,11 +85,11 @@ TEST(CliSynthArm, BadFlagsAreUsageErrorsNamingTheFlag) {
     std::string expect;
   };
   const std::vector<Case> cases = {
-      {{"--size", "10x10"}, "--size"},     {{"--size", "big"}, "--size"},
-      {{"--motion", "dance"}, "--motion"}, {{"--side", "up"}, "--side"},
-      {{"--codec", "DIVX"}, "--codec"},    {{"--noise", "-2"}, "--noise"},
-      {{"--frames", "0"}, "--frames"},     {{"--seed", "-1"}, "--seed"},
-      {{"--fps", "abc"}, "--fps"},         {{"--no-such-flag"}, "--no-such-flag"},
+      {{"--size", "10x10"}, "--size"},
+      {{"--motion", "dance"}, "--motion"},
+      {{"--codec", "DIVX"}, "--codec"},
+      {{"--frames", "0"}, "--frames"},
+      {{"--no-such-flag"}, "--no-such-flag"},
   };
   for (const Case& c : cases) {
     std::vector<std::string> args{"synth", "arm", dir.file("out")};
