@@ -222,6 +222,7 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   robot::Trajectory trajectory;
   robot::PlanReport report;
   if (Status s = robot::PlanTrajectory(angles, o, &trajectory, &report); !s.ok()) {
+    if (s.message().rfind("cutoff", 0) == 0) return p.UsageError("--cutoff: " + s.message());
     std::cerr << "armmimic-cli plan: " << input[0] << ": refused: " << s.message() << "\n";
     return kExitFailure;
   }
