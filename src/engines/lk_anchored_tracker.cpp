@@ -11,6 +11,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "lk_arm_bar.h"
 #include "lk_fit.h"
 #include "lk_flow.h"
 #include "lk_tracker.h"
@@ -31,6 +32,8 @@ struct Feature {
   bool confirmed = false;  // followed its part's motion far enough to be trusted
   int still = 0;           // consecutive frames without motion
   int outlier = 0;         // consecutive frames with a large residual
+  int agree = 0;           // consecutive frames a candidate followed its part
+  double along = 0;        // place along the arm from the shoulder, in the seeding pose
   // Per-frame scratch.
   cv::Point2d cu, cf;     // reference position in the upper-arm and forearm frames
   double ru = 0, rf = 0;  // residuals under the two fits
@@ -82,16 +85,19 @@ class AnchoredTracker : public Tracker {
     shoulders_ = start.shoulders;
     head_limit_y_ = start.head_limit_y;
     arm_len_ = start.arm_length_px > 0 ? start.arm_length_px : 0.4 * size_.height;
-    lu_ = 0.5 * arm_len_;
+    lu_ = o_.upper_fraction * arm_len_;
     lf_ = arm_len_ - lu_;
     upper_deg_ = Wrap180(o_.initial_upper_deg);
     fore_deg_ = Wrap180(o_.initial_fore_deg);
     side_ = shoulders_.size() == 1 ? 0 : -1;
     feats_.clear();
     frame_ = 0;
+    upper_bar_.assign(shoulders_.size(), ArmBar());
+    fore_bar_.assign(shoulders_.size(), ArmBar());
     for (int s = 0; s < static_cast<int>(shoulders_.size()); ++s) {
       shoulder_ = shoulders_[s];
       SetPoseMotions();
+      LearnBars(start.bgr, s);
       Seed(start.gray, s, 1.25);
     }
     if (side_ == 0) shoulder_ = shoulders_[0];
@@ -100,7 +106,7 @@ class AnchoredTracker : public Tracker {
     return MakePose();
   }
 
-  TrackerPose Track(const cv::Mat& gray) override {
+  TrackerPose Track(const cv::Mat& gray, const cv::Mat& bgr) override {
     ++frame_;
     TrackFeatures(gray);
     if (side_ < 0) {
@@ -117,7 +123,7 @@ class AnchoredTracker : public Tracker {
                    feats_.end());
       SetPoseMotions();
     }
-    FitPose();
+    FitPose(bgr);
     UpdateFeatures();
     LearnElbow();
     const bool sparse =
@@ -130,6 +136,26 @@ class AnchoredTracker : public Tracker {
   }
 
  private:
+  // Reads the sleeve's colour and width along both parts in the known starting posture, and
+  // when the arm starts straight, its length (shoulder to cuff) for the elbow prior.
+  void LearnBars(const cv::Mat& bgr, int side) {
+    if (!o_.use_bar || bgr.empty()) return;
+    const double max_hw = std::max(3.0, 0.15 * arm_len_);
+    upper_bar_[side] = LearnArmBar(bgr, shoulder_, upper_deg_, lu_, max_hw);
+    if (upper_bar_[side].valid && std::abs(AngleDiff(fore_deg_, upper_deg_)) < 5 && side_ == 0) {
+      const double sleeve =
+          MeasureBarLength(bgr, upper_bar_[side], shoulder_, upper_deg_, 1.6 * arm_len_);
+      if (sleeve > 0.5 * arm_len_ && sleeve < 1.5 * arm_len_) {
+        arm_len_ = sleeve;
+        lu_ = o_.upper_fraction * arm_len_;
+        lf_ = arm_len_ - lu_;
+        SetPoseMotions();
+        upper_bar_[side] = LearnArmBar(bgr, shoulder_, upper_deg_, lu_, max_hw);
+      }
+    }
+    fore_bar_[side] = LearnArmBar(bgr, Elbow(), fore_deg_, lf_, max_hw);
+  }
+
   void SetPoseMotions() {
     tu_ = PartMotion(upper_deg_, shoulder_);
     tf_ = PartMotion(fore_deg_, Elbow());
@@ -157,103 +183,138 @@ class AnchoredTracker : public Tracker {
     feats_.resize(w);
   }
 
-  // Reference positions of every feature for the current shoulder and upper-arm length.
+  // Reference positions of every feature for the current shoulder and upper-arm length, and its
+  // part: a feature belongs to the upper arm when its place along the arm (measured in the pose it
+  // was seeded in) lies before the elbow.
   void ComputeReferences() {
     for (Feature& f : feats_) {
       const cv::Point2d elbow_at_seed = shoulder_ + lu_ * DirectionVector(f.seed_upper);
       f.cu = ToPartFrame(f.seed_p - shoulder_, f.seed_upper);
       f.cf = ToPartFrame(f.seed_p - elbow_at_seed, f.seed_fore);
+      f.label = f.along < lu_ ? kUpper : kFore;
     }
   }
 
-  // Fits one part (eq. 6-16) from the features in it plus its joint as a pseudo-feature, drops
-  // outliers and fits again. Sets in_fit for the features kept.
-  bool FitPart(int part, const cv::Point2d& joint_px, bool bootstrap, Motion2D* out) {
-    std::vector<cv::Point2d> from, to;
-    std::vector<double> w;
+  // Fits one part. Each feature implies the part's direction by how it turned about the part's
+  // joint since it was seeded; the weighted median of those is robust to features that do not
+  // belong (the body behind the arm, shadows). The features near the median are then fitted by
+  // least squares (eq. 6-16) from their reference to their current positions, with the joint as
+  // a pseudo-feature; the fitted rotation is the part's absolute direction. Returns false when
+  // no feature tells the part's direction. Sets in_fit for the features used.
+  bool FitPart(int part, const cv::Point2d& joint_px, double previous_deg, double prior_deg,
+               double prior_weight, bool bootstrap, Motion2D* out) {
+    std::vector<std::pair<double, double>> votes;  // (angle offset from previous, weight)
     std::vector<int> idx;
     for (int i = 0; i < static_cast<int>(feats_.size()); ++i) {
       Feature& f = feats_[i];
       if (f.label != part) continue;
       bool use = f.confirmed;
-      if (!use && bootstrap) {
-        const cv::Point2d d = cv::Point2d(f.p) - f.seed_p;
-        use = std::hypot(d.x, d.y) > o_.motion_threshold_px;
-      }
+      if (!use && bootstrap) use = Dist(cv::Point2d(f.p), f.seed_p) > o_.confirm_motion_px;
       if (!use) continue;
+      const cv::Point2d ref = part == kUpper ? f.cu : f.cf;
+      const double lever = std::hypot(ref.x, ref.y);
+      if (lever < kMinLeverPx || Dist(cv::Point2d(f.p), joint_px) < kMinLeverPx) continue;
+      // Direction of the feature from the joint, minus its angle in the part's own frame.
+      const double ref_deg = -DegFromRad(std::atan2(ref.y, ref.x));
+      const double implied = DirectionDeg(joint_px, cv::Point2d(f.p)) - ref_deg;
+      votes.emplace_back(AngleDiff(implied, previous_deg), lever);
       idx.push_back(i);
+    }
+    if (votes.empty()) return false;
+    const std::size_t n_features = votes.size();
+    // The prior (where the part would be if it kept its pose) votes like a few features at the
+    // part's end, so one stray feature cannot turn a part that has no trusted ones.
+    votes.emplace_back(AngleDiff(prior_deg, previous_deg), prior_weight);
+    if (getenv("LKDBG") && frame_ == atoi(getenv("LKDBG"))) {
+      fprintf(stderr, "part %d prev %.1f joint %.1f,%.1f lu %.1f\n", part, previous_deg, joint_px.x,
+              joint_px.y, lu_);
+      for (std::size_t k = 0; k < votes.size(); ++k) {
+        const Feature& f = feats_[idx[k]];
+        fprintf(
+            stderr,
+            "  vote %.1f w %.1f p %.1f,%.1f seed %.1f,%.1f seedpose %.1f %.1f along %.1f conf %d\n",
+            votes[k].first, votes[k].second, f.p.x, f.p.y, f.seed_p.x, f.seed_p.y, f.seed_upper,
+            f.seed_fore, f.along, f.confirmed);
+      }
+    }
+    std::vector<std::pair<double, double>> sorted = votes;
+    std::sort(sorted.begin(), sorted.end());
+    double total = 0;
+    for (const auto& v : sorted) total += v.second;
+    double acc = 0, median = sorted.back().first;
+    for (const auto& v : sorted) {
+      acc += v.second;
+      if (acc >= 0.5 * total) {
+        median = v.first;
+        break;
+      }
+    }
+    std::vector<cv::Point2d> from, to;
+    std::vector<double> w;
+    std::vector<int> used;
+    for (std::size_t k = 0; k < n_features; ++k) {
+      if (std::abs(votes[k].first - median) > o_.inlier_deg) continue;
+      const Feature& f = feats_[idx[k]];
       from.push_back(part == kUpper ? f.cu : f.cf);
       to.emplace_back(f.p);
       w.push_back(1.0);
+      used.push_back(idx[k]);
     }
-    if (idx.empty()) return false;
+    const double median_deg = Wrap180(previous_deg + median);
+    Motion2D m = PartMotion(median_deg, joint_px);
     from.emplace_back(0, 0);
     to.push_back(joint_px);
     w.push_back(o_.joint_weight);
-    Motion2D m;
-    for (int pass = 0; pass < 2; ++pass) {
-      if (!FitMotion(from, to, w, &m)) return false;
-      std::vector<double> r(idx.size());
-      for (std::size_t k = 0; k < idx.size(); ++k) r[k] = Dist(m.Apply(from[k]), to[k]);
-      const double limit = std::max(o_.outlier_px, 2.5 * Median(r));
-      int kept = 0;
-      for (std::size_t k = 0; k < idx.size(); ++k) {
-        w[k] = r[k] <= limit ? 1.0 : 0.0;
-        kept += w[k] > 0;
-      }
-      if (kept == 0) return false;
+    Motion2D fitted;
+    if (used.size() >= 2 && FitRigidMotion(from, to, w, &fitted) &&
+        std::abs(AngleDiff(fitted.RotationCcwDeg(), median_deg)) <= o_.inlier_deg) {
+      m = fitted;
     }
-    if (!FitMotion(from, to, w, &m)) return false;
-    for (std::size_t k = 0; k < idx.size(); ++k) feats_[idx[k]].in_fit = w[k] > 0;
+    for (int i : used) feats_[i].in_fit = true;
     *out = m;
     return true;
   }
 
-  void FitOnce() {
-    for (Feature& f : feats_) f.in_fit = false;
-    const bool boot_upper = CountConfirmed(kUpper) < 3;
-    const bool boot_fore = CountConfirmed(kFore) < 3;
-    Motion2D tu = tu_;
-    const bool upper_ok = FitPart(kUpper, shoulder_, boot_upper, &tu);
-    if (upper_ok) tu_ = tu;
-    const double bend = AngleDiff(fore_deg_, upper_deg_);
-    Motion2D tf;
-    if (FitPart(kFore, Elbow(), boot_fore, &tf)) {
-      tf_ = tf;
-    } else {
-      // No forearm features: it keeps its bend and hangs from the upper arm's elbow.
-      const double scale = tu_.Scale();
-      tf_ = PartMotion(Wrap180(tu_.RotationCcwDeg() + bend), Elbow());
-      tf_.a *= scale;
-      tf_.b *= scale;
-    }
+  // Refines a part's direction with the bar search when the part stands out of its
+  // surroundings (over the wall, not in front of the body in the same cloth).
+  double RefineWithBar(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px,
+                       double deg, double length_px, bool* used) const {
+    *used = false;
+    if (!o_.use_bar || !bar.valid) return deg;
+    const BarSearch r =
+        SearchArmBar(bgr, bar, joint_px, deg, length_px, o_.bar_search_deg, o_.bar_min_score);
+    if (!r.found) return deg;
+    *used = true;
+    return r.deg;
   }
 
-  void Residuals() {
+  void FitPose(const cv::Mat& bgr) {
+    ComputeReferences();
+    for (Feature& f : feats_) f.in_fit = false;
+    const double bend = AngleDiff(fore_deg_, upper_deg_);
+    Motion2D tu;
+    double up = upper_deg_;
+    if (FitPart(kUpper, shoulder_, upper_deg_, upper_deg_, o_.prior_weight * lu_,
+                CountConfirmed(kUpper) < 3, &tu)) {
+      up = Wrap180(tu.RotationCcwDeg());
+    }
+    up = RefineWithBar(bgr, upper_bar_[side_], shoulder_, up, lu_, &upper_bar_used_);
+    upper_deg_ = up;
+    tu_ = PartMotion(upper_deg_, shoulder_);
+    const cv::Point2d elbow = Elbow();
+    double fo = Wrap180(upper_deg_ + bend);
+    Motion2D tf;
+    if (FitPart(kFore, elbow, fore_deg_, fo, o_.prior_weight * lf_, CountConfirmed(kFore) < 3,
+                &tf)) {
+      fo = Wrap180(tf.RotationCcwDeg());
+    }
+    fo = RefineWithBar(bgr, fore_bar_[side_], elbow, fo, lf_, &fore_bar_used_);
+    fore_deg_ = fo;
+    tf_ = PartMotion(fore_deg_, elbow);
     for (Feature& f : feats_) {
       f.ru = Dist(tu_.Apply(f.cu), cv::Point2d(f.p));
       f.rf = Dist(tf_.Apply(f.cf), cv::Point2d(f.p));
     }
-  }
-
-  void FitPose() {
-    ComputeReferences();
-    FitOnce();
-    // Relabel: a feature follows the part whose motion explains it clearly better.
-    Residuals();
-    bool changed = false;
-    for (Feature& f : feats_) {
-      if (std::abs(f.ru - f.rf) < 1.0) continue;
-      const int label = f.ru < f.rf ? kUpper : kFore;
-      if (label != f.label && (f.confirmed || f.in_fit)) {
-        f.label = label;
-        changed = true;
-      }
-    }
-    if (changed) FitOnce();
-    Residuals();
-    upper_deg_ = Wrap180(tu_.RotationCcwDeg());
-    fore_deg_ = Wrap180(tf_.RotationCcwDeg());
   }
 
   void UpdateFeatures() {
@@ -272,16 +333,19 @@ class AnchoredTracker : public Tracker {
       const cv::Point2d predicted = m.Apply(ref);
       const double res = Dist(predicted, cv::Point2d(f.p));
       const double moved_by_model = Dist(predicted, f.seed_p);
+      const double moved = Dist(cv::Point2d(f.p), f.seed_p);
       bool keep = true;
+      f.outlier = res > (f.confirmed ? limit : o_.outlier_px) ? f.outlier + 1 : 0;
       if (f.confirmed) {
-        f.outlier = res > limit ? f.outlier + 1 : 0;
         keep = f.outlier <= o_.outlier_frames_drop;
       } else if (moved_by_model > o_.confirm_motion_px) {
-        if (res < o_.outlier_px) {
-          f.confirmed = true;
-        } else if (res > std::max(2 * o_.outlier_px, 0.5 * moved_by_model) ||
-                   f.still > o_.still_frames_drop) {
-          keep = false;  // the part moved, the feature did not follow: background or shadow
+        if (moved < 2 * o_.motion_threshold_px) {
+          keep = false;  // the part moved, the feature did not: background or body behind it
+        } else if (f.outlier == 0) {
+          f.confirmed = ++f.agree >= kConfirmFrames;
+        } else {
+          f.agree = 0;
+          keep = f.outlier <= kCandidateOutlierFrames;  // moves, but not with the arm: a shadow
         }
       } else if (f.still > o_.still_frames_drop) {
         // Thesis rule for features not (yet) on the arm: far from it and still, dropped.
@@ -301,9 +365,8 @@ class AnchoredTracker : public Tracker {
     std::vector<std::pair<double, int>> samples;
     for (const Feature& f : feats_) {
       if (!f.confirmed || f.outlier > 0) continue;
-      if (std::abs(AngleDiff(f.seed_fore, f.seed_upper)) > 10) continue;
       if (std::abs(f.ru - f.rf) < 1.5) continue;
-      samples.emplace_back(f.cu.x, f.ru < f.rf ? kUpper : kFore);
+      samples.emplace_back(f.along, f.ru < f.rf ? kUpper : kFore);
     }
     int n_upper = 0;
     for (const auto& s : samples) n_upper += s.second == kUpper;
@@ -327,7 +390,7 @@ class AnchoredTracker : public Tracker {
     if (best_k <= 0 || best_k >= static_cast<int>(samples.size())) return;
     const double split = 0.5 * (samples[best_k - 1].first + samples[best_k].first);
     if (split <= 0.15 * arm_len_ || split >= 0.85 * arm_len_) return;
-    lu_ = 0.9 * lu_ + 0.1 * split;
+    lu_ = std::clamp(0.9 * lu_ + 0.1 * split, 0.3 * arm_len_, 0.7 * arm_len_);
     // The forearm reaches as far as its farthest features (robustly).
     std::vector<double> reach;
     for (const Feature& f : feats_) {
@@ -376,7 +439,10 @@ class AnchoredTracker : public Tracker {
       f.seed_upper = upper_deg_;
       f.seed_fore = fore_deg_;
       f.side = side;
-      f.label = SegmentDistance(c, s, e) <= SegmentDistance(c, e, w) ? kUpper : kFore;
+      const bool upper = SegmentDistance(c, s, e) <= SegmentDistance(c, e, w);
+      f.along = upper ? ToPartFrame(cv::Point2d(c) - s, upper_deg_).x
+                      : lu_ + ToPartFrame(cv::Point2d(c) - e, fore_deg_).x;
+      f.label = f.along < lu_ ? kUpper : kFore;
       feats_.push_back(f);
     }
   }
@@ -407,6 +473,10 @@ class AnchoredTracker : public Tracker {
     return pose;
   }
 
+  static constexpr double kMinLeverPx = 4;  // features this near their joint tell no direction
+  static constexpr int kConfirmFrames = 3;  // agreeing frames before a feature is used
+  static constexpr int kCandidateOutlierFrames = 15;  // disagreeing frames before it is dropped
+
   LkOptions o_;
   PyramidFlow flow_;
   cv::Size size_;
@@ -418,6 +488,8 @@ class AnchoredTracker : public Tracker {
   double upper_deg_ = -90, fore_deg_ = -90;
   Motion2D tu_, tf_;
   std::vector<Feature> feats_;
+  std::vector<ArmBar> upper_bar_, fore_bar_;  // per shoulder candidate
+  bool upper_bar_used_ = false, fore_bar_used_ = false;
   int frame_ = 0;
   int last_seed_ = 0;
 };

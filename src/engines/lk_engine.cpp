@@ -98,13 +98,14 @@ class LkEngine : public Engine {
       case State::kStart: {
         lk::TrackerStart start;
         start.gray = gray;
+        start.bgr = view;
         start.shoulders = {*shoulder_given_};
         start.arm_length_px = 0.4 * roi_.height;
         state_ = State::kTracking;
         return Fill(tracker_->Start(start), m);
       }
       case State::kTracking:
-        return Fill(tracker_->Track(gray), m);
+        return Fill(tracker_->Track(gray, view), m);
       case State::kFailed:
         m.phase = MeasurementPhase::kLost;
         m.note = failure_;
@@ -150,6 +151,7 @@ class LkEngine : public Engine {
     m.body_box = body_box_;
     lk::TrackerStart start;
     start.gray = gray;
+    start.bgr = view;
     switch (o_.side) {
       case LkArmSide::kLeft:
         start.shoulders = {body.left_shoulder};

@@ -44,6 +44,31 @@ bool FitMotion(const std::vector<cv::Point2d>& from, const std::vector<cv::Point
   return true;
 }
 
+bool FitRigidMotion(const std::vector<cv::Point2d>& from, const std::vector<cv::Point2d>& to,
+                    const std::vector<double>& weights, Motion2D* out) {
+  Motion2D m;
+  if (!FitMotion(from, to, weights, &m)) return false;
+  const double scale = m.Scale();
+  if (!(scale > 1e-9)) return false;
+  m.a /= scale;
+  m.b /= scale;
+  cv::Point2d cf(0, 0), ct(0, 0);
+  double total = 0;
+  for (std::size_t i = 0; i < from.size() && i < to.size(); ++i) {
+    const double w = weights.empty() ? 1.0 : weights[i];
+    if (!(w > 0)) continue;
+    cf += w * from[i];
+    ct += w * to[i];
+    total += w;
+  }
+  cf *= 1.0 / total;
+  ct *= 1.0 / total;
+  m.t = {0, 0};
+  m.t = ct - m.Apply(cf);
+  *out = m;
+  return true;
+}
+
 std::vector<int> TwoMeans(const std::vector<cv::Point2f>& points,
                           const std::vector<cv::Point2f>& motions, int iterations) {
   const std::size_t n = points.size();

@@ -27,6 +27,11 @@ struct Motion2D {
 bool FitMotion(const std::vector<cv::Point2d>& from, const std::vector<cv::Point2d>& to,
                const std::vector<double>& weights, Motion2D* out);
 
+// The same fit with the scale fixed to 1: the rotation of eq. 6-16 (in 2-D the similarity and
+// the rigid least squares share it) and the translation that maps the weighted centroids.
+bool FitRigidMotion(const std::vector<cv::Point2d>& from, const std::vector<cv::Point2d>& to,
+                    const std::vector<double>& weights, Motion2D* out);
+
 // 2-means of (x, y, dx, dy) (thesis 6.3). Deterministic: the two seeds are the features farthest
 // apart in position. Returns the label (0 or 1) of each feature; cluster 0 holds the first seed.
 std::vector<int> TwoMeans(const std::vector<cv::Point2f>& points,

@@ -31,6 +31,7 @@ std::vector<cv::Point2f> DetectCorners(const cv::Mat& gray, const cv::Mat& mask,
 PyramidFlow::PyramidFlow(const LkOptions& options)
     : window_(options.window_px, options.window_px),
       levels_(options.pyramid_levels),
+      fb_max_px_(options.thesis_mode ? 0.0 : options.forward_backward_px),
       criteria_(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, options.max_iterations,
                 options.epsilon) {}
 
@@ -53,6 +54,17 @@ void PyramidFlow::Track(const cv::Mat& gray, const std::vector<cv::Point2f>& poi
     std::vector<float> err;
     cv::calcOpticalFlowPyrLK(prev_pyramid_, next_pyramid_, points, *tracked, *found, err, window_,
                              levels_, criteria_);
+    if (fb_max_px_ > 0) {
+      // Forward-backward check: a point tracked back must land where it started.
+      std::vector<cv::Point2f> back = points;
+      std::vector<unsigned char> back_found;
+      cv::calcOpticalFlowPyrLK(next_pyramid_, prev_pyramid_, *tracked, back, back_found, err,
+                               window_, levels_, criteria_, cv::OPTFLOW_USE_INITIAL_FLOW);
+      for (std::size_t i = 0; i < back.size(); ++i) {
+        const cv::Point2f d = back[i] - points[i];
+        if (!back_found[i] || d.dot(d) > fb_max_px_ * fb_max_px_) (*found)[i] = 0;
+      }
+    }
     const float w = static_cast<float>(gray.cols - 1), h = static_cast<float>(gray.rows - 1);
     for (std::size_t i = 0; i < tracked->size(); ++i) {
       const cv::Point2f& p = (*tracked)[i];

@@ -33,6 +33,7 @@ class PyramidFlow {
   void Build(const cv::Mat& gray, std::vector<cv::Mat>* pyramid) const;
   cv::Size window_;
   int levels_;
+  double fb_max_px_;
   cv::TermCriteria criteria_;
   cv::Mat prev_gray_;
   std::vector<cv::Mat> prev_pyramid_;

@@ -61,6 +61,12 @@ Status LkOptions::Check() const {
       Range("min_part_features", min_part_features, 0, 10000),
       Range("arm_width_ratio", arm_width_ratio, 0.01, 1),
       Range("joint_weight", joint_weight, 0, 1000),
+      Range("inlier_deg", inlier_deg, 0.5, 90),
+      Range("bar_search_deg", bar_search_deg, 1, 90),
+      Range("bar_min_score", bar_min_score, -1, 1),
+      Range("upper_fraction", upper_fraction, 0.2, 0.8),
+      Range("forward_backward_px", forward_backward_px, 0, 100),
+      Range("prior_weight", prior_weight, 0, 1000),
       Range("bend_for_elbow_deg", bend_for_elbow_deg, 0, 180),
   };
   for (const Status& st : checks) {

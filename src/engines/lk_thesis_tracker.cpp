@@ -39,7 +39,7 @@ class ThesisTracker : public Tracker {
     return MakePose({}, {});
   }
 
-  TrackerPose Track(const cv::Mat& gray) override {
+  TrackerPose Track(const cv::Mat& gray, const cv::Mat& /*bgr*/) override {
     std::vector<cv::Point2f> pts, next;
     std::vector<unsigned char> found;
     for (const Tracked& t : feats_) pts.push_back(t.p);

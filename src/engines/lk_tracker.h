@@ -17,6 +17,7 @@ namespace armmimic::lk {
 
 struct TrackerStart {
   cv::Mat gray;  // the frame with the known starting posture (CV_8U)
+  cv::Mat bgr;   // the same frame in colour (CV_8UC3)
   // One shoulder when known; two (left, right) when the side is decided by the first motion.
   std::vector<cv::Point2d> shoulders;
   double arm_length_px = 0;  // prior: shoulder to wrist
@@ -38,7 +39,7 @@ class Tracker {
  public:
   virtual ~Tracker() = default;
   virtual TrackerPose Start(const TrackerStart& start) = 0;
-  virtual TrackerPose Track(const cv::Mat& gray) = 0;
+  virtual TrackerPose Track(const cv::Mat& gray, const cv::Mat& bgr) = 0;
 };
 
 std::unique_ptr<Tracker> CreateThesisTracker(const LkOptions& options);

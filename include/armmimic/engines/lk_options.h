@@ -40,14 +40,21 @@ struct LkOptions {
   int still_frames_drop = 10;        // a feature still for more than this many frames is dropped
 
   // --- improvements over the thesis (6.4); ignored in thesis_mode ---
-  bool thesis_mode = false;        // true: 2-means and summed increments only, as the thesis
-  double confirm_motion_px = 4.0;  // a feature joins the fit once the model moved it this far
-  double outlier_px = 3.0;         // residual (pixels) above which a feature is an outlier
-  int outlier_frames_drop = 3;     // consecutive outlier frames before a feature is dropped
-  int reseed_interval = 5;         // frames between re-seeding corners on the arm
-  int min_part_features = 12;      // re-seed at once when a part has fewer features
-  double arm_width_ratio = 0.14;   // half-width of the arm band / arm length (re-seed mask)
-  double joint_weight = 3.0;       // weight of the shoulder/elbow pseudo-feature in the fits
+  bool thesis_mode = false;          // true: 2-means and summed increments only, as the thesis
+  bool use_bar = true;               // anchor each part on its sleeve colour (lk_arm_bar.h)
+  double bar_search_deg = 30;        // searched around the features' estimate
+  double bar_min_score = 0.4;        // weaker bars (part in front of the body) are not used
+  double upper_fraction = 0.53;      // upper arm / (shoulder to wrist), the elbow prior
+  double forward_backward_px = 1.0;  // drop a track whose backward track misses by more (0: off)
+  double confirm_motion_px = 4.0;    // a feature joins the fit once the model moved it this far
+  double outlier_px = 3.0;           // residual (pixels) above which a feature is an outlier
+  int outlier_frames_drop = 3;       // consecutive outlier frames before a feature is dropped
+  int reseed_interval = 5;           // frames between re-seeding corners on the arm
+  int min_part_features = 12;        // re-seed at once when a part has fewer features
+  double arm_width_ratio = 0.14;     // half-width of the arm band / arm length (re-seed mask)
+  double joint_weight = 1.0;         // weight of the shoulder/elbow pseudo-feature in the fits
+  double prior_weight = 2;  // the previous pose votes like this many features at a part's end
+  double inlier_deg = 8;    // a feature whose implied direction is this far off is ignored
   double bend_for_elbow_deg = 20;  // the elbow split is learned only when bent this much
 
   Status Check() const;

@@ -1,0 +1,141 @@
+#include "lk_arm_bar.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "armmimic/core/angles.h"
+
+namespace armmimic::lk {
+namespace {
+
+constexpr double kColourSigma = 30;  // grey levels: how far a pixel may be from the bar colour
+constexpr int kAlongSamples = 10;
+constexpr double kAlongFrom = 0.2, kAlongTo = 0.8;
+
+bool Sample(const cv::Mat& bgr, const cv::Point2d& p, cv::Vec3f* out) {
+  const int x = cvRound(p.x), y = cvRound(p.y);
+  if (x < 0 || y < 0 || x >= bgr.cols || y >= bgr.rows) return false;
+  const cv::Vec3b& v = bgr.at<cv::Vec3b>(y, x);
+  *out = cv::Vec3f(v[0], v[1], v[2]);
+  return true;
+}
+
+double Likeness(const cv::Vec3f& a, const cv::Vec3f& b) {
+  const cv::Vec3f d = a - b;
+  return std::exp(-d.dot(d) / (2 * 3 * kColourSigma * kColourSigma / 3));
+}
+
+// Likeness at p, or `outside` when p is outside the picture.
+double LikenessAt(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& p, double outside) {
+  cv::Vec3f c;
+  return Sample(bgr, p, &c) ? Likeness(c, bar.colour) : outside;
+}
+
+}  // namespace
+
+ArmBar LearnArmBar(const cv::Mat& bgr, const cv::Point2d& joint_px, double deg, double length_px,
+                   double max_half_width_px) {
+  ArmBar bar;
+  const cv::Point2d u = DirectionVector(deg), n(-u.y, u.x);
+  std::vector<float> ch[3];
+  std::vector<cv::Point2d> axis;
+  for (int k = 0; k < kAlongSamples; ++k) {
+    const double t = kAlongFrom + (kAlongTo - kAlongFrom) * k / (kAlongSamples - 1);
+    const cv::Point2d p = joint_px + t * length_px * u;
+    cv::Vec3f c;
+    if (!Sample(bgr, p, &c)) continue;
+    axis.push_back(p);
+    for (int i = 0; i < 3; ++i) ch[i].push_back(c[i]);
+  }
+  if (axis.size() < 3) return bar;
+  for (int i = 0; i < 3; ++i) {
+    std::nth_element(ch[i].begin(), ch[i].begin() + ch[i].size() / 2, ch[i].end());
+    bar.colour[i] = ch[i][ch[i].size() / 2];
+  }
+  // Half-width: on each side, the first offset where the colour is no longer the bar's; the
+  // narrower side counts (the other may run into the body).
+  std::vector<double> widths;
+  for (const cv::Point2d& p : axis) {
+    double side_w[2] = {max_half_width_px, max_half_width_px};
+    for (int s = 0; s < 2; ++s) {
+      for (double d = 1; d <= max_half_width_px; d += 1) {
+        if (LikenessAt(bgr, bar, p + (s == 0 ? d : -d) * n, 0) < 0.5) {
+          side_w[s] = d - 0.5;
+          break;
+        }
+      }
+    }
+    widths.push_back(std::min(side_w[0], side_w[1]));
+  }
+  std::nth_element(widths.begin(), widths.begin() + widths.size() / 2, widths.end());
+  bar.half_width_px = std::max(1.5, widths[widths.size() / 2]);
+  bar.valid = true;
+  return bar;
+}
+
+double ArmBarScore(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px, double deg,
+                   double length_px) {
+  const cv::Point2d u = DirectionVector(deg), n(-u.y, u.x);
+  const double hw = bar.half_width_px;
+  const double axis_offsets[3] = {-0.4 * hw, 0, 0.4 * hw};
+  const double flank = hw + std::max(2.0, 0.6 * hw);
+  double on = 0, off = 0;
+  int count = 0;
+  for (int k = 0; k < kAlongSamples; ++k) {
+    const double t = kAlongFrom + (kAlongTo - kAlongFrom) * k / (kAlongSamples - 1);
+    const cv::Point2d p = joint_px + t * length_px * u;
+    double a = 0;
+    for (double o : axis_offsets) a += LikenessAt(bgr, bar, p + o * n, 0);
+    const double left = LikenessAt(bgr, bar, p + flank * n, 1);
+    const double right = LikenessAt(bgr, bar, p - flank * n, 1);
+    on += a / 3;
+    // A flank like the bar (the body in the same cloth) says nothing against this direction
+    // as long as the other flank is unlike it.
+    off += std::min(left, right);
+    ++count;
+  }
+  return (on - off) / count;
+}
+
+BarSearch SearchArmBar(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px,
+                       double predicted_deg, double length_px, double range_deg, double min_score) {
+  BarSearch out;
+  if (!bar.valid || !(length_px > 2)) return out;
+  const int steps = static_cast<int>(std::ceil(range_deg));
+  std::vector<double> scores(2 * steps + 1);
+  int best = -1;
+  for (int i = 0; i <= 2 * steps; ++i) {
+    scores[i] = ArmBarScore(bgr, bar, joint_px, predicted_deg + (i - steps), length_px);
+    if (best < 0 || scores[i] > scores[best]) best = i;
+  }
+  if (scores[best] < min_score) return out;
+  double offset = best - steps;
+  if (best > 0 && best < 2 * steps) {
+    const double a = scores[best - 1], b = scores[best], c = scores[best + 1];
+    const double den = a - 2 * b + c;
+    if (den < 0) offset += std::clamp(0.5 * (a - c) / den, -0.5, 0.5);
+  }
+  out.found = true;
+  out.deg = Wrap180(predicted_deg + offset);
+  out.score = scores[best];
+  return out;
+}
+
+double MeasureBarLength(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px,
+                        double deg, double max_px) {
+  const cv::Point2d u = DirectionVector(deg);
+  int misses = 0;
+  double last = 0;
+  for (double d = 1; d <= max_px; d += 1) {
+    if (LikenessAt(bgr, bar, joint_px + d * u, 0) >= 0.5) {
+      last = d;
+      misses = 0;
+    } else if (++misses > 2) {
+      break;
+    }
+  }
+  return last;
+}
+
+}  // namespace armmimic::lk
