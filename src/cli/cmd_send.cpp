@@ -39,6 +39,7 @@ struct SendOptions {
   bool list_ports = false;
   std::string profile_path;
   double timeout_s = -1;
+  double motion_timeout_s = -1;
   robot::JointLimits limits;
 };
 
@@ -197,6 +198,8 @@ int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
   p.String("--profile", &o.profile_path, "FILE", "controller profile (docs/profiles/)");
   p.Double("--timeout", &o.timeout_s, "S",
            "seconds to wait for the prompt after a non-motion line (profile: prompt_timeout_s)");
+  p.Double("--motion-timeout", &o.motion_timeout_s, "S",
+           "seconds to wait for the prompt after a motion line (profile: motion_timeout_s)");
   p.Custom("--limits", "J2=-200:20,...", "override joint limits (degrees)",
            [&](const std::string& v) { return robot::ParseLimitsOverride(v, &o.limits); });
   p.Custom("--speed-limit", "DEG_S", "joint speed limits, one value or six",
@@ -209,6 +212,9 @@ int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
   }
   if (o.resume && o.restart) return p.UsageError("--resume and --restart exclude each other");
   if (p.Given("--timeout") && !(o.timeout_s > 0)) return p.UsageError("--timeout must be > 0");
+  if (p.Given("--motion-timeout") && !(o.motion_timeout_s > 0)) {
+    return p.UsageError("--motion-timeout must be > 0");
+  }
   {
     const Status s = o.port.Check();
     if (!o.dry_run && !s.ok()) return p.UsageError(s.message());
@@ -223,6 +229,7 @@ int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
     if (!s.ok()) return Fail(s.message());
   }
   if (o.timeout_s > 0) profile.prompt_timeout_s = o.timeout_s;
+  if (o.motion_timeout_s > 0) profile.motion_timeout_s = o.motion_timeout_s;
 
   robot::ValProgram program;
   {

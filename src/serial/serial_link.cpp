@@ -202,14 +202,13 @@ void SerialLink::OnError(QSerialPort::SerialPortError error) {
   if (error == QSerialPort::NoError || error == QSerialPort::TimeoutError) return;
   const std::string qt = port_->errorString().toStdString();
   if (finished_sent_) return;
-  if (error == QSerialPort::ResourceError) {
-    protocol_.Abort("--port " + settings_.port +
-                    ": the device vanished or stopped working (unplugged?): " + qt);
-  } else if (error == QSerialPort::WriteError || error == QSerialPort::ReadError) {
-    protocol_.Abort("--port " + settings_.port + ": I/O error: " + qt);
-  } else {
+  if (error != QSerialPort::ResourceError && error != QSerialPort::ReadError &&
+      error != QSerialPort::WriteError) {
     return;
   }
+  // An end of file on the device reads as an error too: the cable, adapter or emulator is gone.
+  protocol_.Abort("--port " + settings_.port +
+                  ": the connection was lost (device unplugged, closed or failing): " + qt);
   Flush();
 }
 
