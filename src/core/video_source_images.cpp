@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 #include "armmimic/core/image_io.h"
 #include "video_source_impl.h"
@@ -28,8 +29,13 @@ uint32_t Le32(const uint8_t* p) { return uint32_t(p[3]) << 24 | p[2] << 16 | p[1
 std::optional<cv::Size> PeekImageSize(const std::string& path) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) return std::nullopt;
-  uint8_t buf[64 * 1024];
-  const size_t n = std::fread(buf, 1, sizeof(buf), f);
+  // 4 KiB hold every header but a JPEG's behind a large EXIF block; read on only for those.
+  static thread_local std::vector<uint8_t> storage(64 * 1024);
+  uint8_t* buf = storage.data();
+  size_t n = std::fread(buf, 1, 4096, f);
+  if (n == 4096 && buf[0] == 0xFF && buf[1] == 0xD8) {
+    n += std::fread(buf + n, 1, storage.size() - n, f);
+  }
   std::fclose(f);
   std::optional<cv::Size> out;
   if (n >= 24 && buf[0] == 0x89 && buf[1] == 'P' && buf[2] == 'N' && buf[3] == 'G' &&

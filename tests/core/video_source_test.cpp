@@ -318,6 +318,27 @@ TEST(VideoSource, BadImageInputsNameTheFile) {
   EXPECT_NE(st.message().find(dir.file("odd.tif")), std::string::npos) << st.message();
 }
 
+TEST(VideoSource, MixedSizesFoundFromEveryPeekedHeaderFormat) {
+  test::TempDir dir;
+  ASSERT_TRUE(cv::imwrite(dir.file("first.png"), NumberedFrame(0)));
+  for (const char* ext : {"jpg", "jpeg", "bmp", "pgm", "ppm", "png"}) {
+    SCOPED_TRACE(ext);
+    const std::string same = dir.file(std::string("same.") + ext);
+    const std::string odd = dir.file(std::string("odd.") + ext);
+    const bool grey = std::string(ext) == "pgm";  // PGM holds one channel only
+    cv::Mat same_img = NumberedFrame(1);
+    cv::Mat odd_img = NumberedFrame(1, {96, 72});
+    if (grey) {
+      cv::cvtColor(same_img, same_img, cv::COLOR_BGR2GRAY);
+      cv::cvtColor(odd_img, odd_img, cv::COLOR_BGR2GRAY);
+    }
+    ASSERT_TRUE(cv::imwrite(same, same_img));
+    ASSERT_TRUE(cv::imwrite(odd, odd_img));
+    EXPECT_NE(OpenError({dir.file("first.png"), same, odd}, odd).find("96x72"), std::string::npos);
+    EXPECT_TRUE(OpenOk({dir.file("first.png"), same}));
+  }
+}
+
 TEST(VideoSource, CamerasAndStreamsThatCannotOpenAreNamed) {
   OpenError({"camera:x"}, "camera:x");
   OpenError({"camera:97"}, "camera:97");

@@ -40,6 +40,12 @@ class VideoSource {
   virtual const VideoInfo& info() const = 0;
   // Reads the next frame. Returns false at the end (status ok) or on a decode error (status
   // names the file and frame). Frames are CV_8UC3 BGR.
+  //  - A video that ends before its announced frame count ends with an ok status, and
+  //    info().frame_count becomes the number of frames really decoded.
+  //  - A damaged frame in the middle of a video fails with "<file>: frame N cannot be decoded";
+  //    a caller that wants to skip it may call Read() again and gets the frames after it.
+  //  - An image of another size than the first, or one that does not decode, fails naming it.
+  //    (Open() already rejects sizes it can read from PNG/JPEG/BMP/PNM headers.)
   virtual bool Read(Frame* frame, Status* status) = 0;
   // Positions so that the next Read() returns frame `index` (0 <= index; for videos and images
   // index < frame_count). Cameras cannot seek and return an error.
