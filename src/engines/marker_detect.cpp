@@ -113,9 +113,43 @@ bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_rati
   // A thin marker's blob may be only its core: the window spans at least a full marker's
   // height (yaw does not change it), plus a ring of two pixels.
   const int grow = std::max(0, (min_height - blob->box.height + 1) / 2);
-  const cv::Rect w(blob->box.x - 2, blob->box.y - 2 - grow, blob->box.width + 4,
-                   blob->box.height + 4 + 2 * grow);
-  if (w.x < 0 || w.y < 0 || w.x + w.width > gray.cols || w.y + w.height > gray.rows) return false;
+  cv::Rect w(blob->box.x - 2, blob->box.y - 2 - grow, blob->box.width + 4,
+             blob->box.height + 4 + 2 * grow);
+  const cv::Rect image(0, 0, gray.cols, gray.rows);
+  if ((w & image) != w) return false;
+  // The blob may be one fragment of its marker (flood fill is relative to the seed): widen the
+  // window while its edge still holds marker-dark pixels.
+  {
+    double darkest_in_box = 255;
+    for (int y = blob->box.y; y < blob->box.y + blob->box.height; ++y) {
+      for (int x = blob->box.x; x < blob->box.x + blob->box.width; ++x) {
+        darkest_in_box = std::min<double>(darkest_in_box, filtered.at<uchar>(y, x));
+      }
+    }
+    std::vector<uchar> edge;
+    for (int x = w.x; x < w.x + w.width; ++x) {
+      edge.push_back(gray.at<uchar>(w.y, x));
+      edge.push_back(gray.at<uchar>(w.y + w.height - 1, x));
+    }
+    std::nth_element(edge.begin(), edge.begin() + edge.size() / 2, edge.end());
+    const double half = 0.5 * (edge[edge.size() / 2] + darkest_in_box);
+    auto dark_count = [&](const cv::Rect& r) {
+      int n = 0;
+      for (int y = r.y; y < r.y + r.height; ++y) {
+        for (int x = r.x; x < r.x + r.width; ++x) n += gray.at<uchar>(y, x) < half;
+      }
+      return n;
+    };
+    for (int step = 0; step < 3; ++step) {
+      bool grown = false;
+      if (dark_count({w.x, w.y, 1, w.height}) >= 2) w.x -= 1, w.width += 1, grown = true;
+      if (dark_count({w.x + w.width - 1, w.y, 1, w.height}) >= 2) w.width += 1, grown = true;
+      if (dark_count({w.x, w.y, w.width, 1}) >= 2) w.y -= 1, w.height += 1, grown = true;
+      if (dark_count({w.x, w.y + w.height - 1, w.width, 1}) >= 2) w.height += 1, grown = true;
+      if ((w & image) != w) return false;
+      if (!grown) break;
+    }
+  }
   const double xc = blob->centre.x;
   const double yc = blob->centre.y;
   // The ring of pixels around the blob, fitted by a plane (the surface's shading), twice: the
@@ -176,6 +210,11 @@ bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_rati
   const double surround = level(xc, yc);
   const double core = core_ratio > 0 ? core_ratio * surround : darkest;
   if (surround - core < 10) return false;
+  // A clipped (overexposed) surround hides the rim's partial coverage: then every pixel darker
+  // than half-way counts whole, which clipping biases far less.
+  int clipped = 0;
+  for (const cv::Point& p : ring) clipped += gray.at<uchar>(p) >= 254;
+  const bool binary = clipped * 5 > static_cast<int>(ring.size());
   double sum = 0, sx = 0, sy = 0;
   for (int y = w.y; y < w.y + w.height; ++y) {
     const uchar* row = gray.ptr<uchar>(y);
@@ -183,7 +222,8 @@ bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_rati
       if (skip[x - w.x]) continue;
       const double s = level(x, y);
       const double m = core_ratio > 0 ? core_ratio * s : core;
-      const double c = std::clamp((s - row[x]) / std::max(1.0, s - m), 0.0, 1.0);
+      const double c = binary ? (row[x] < 0.5 * (s + m) ? 1.0 : 0.0)
+                              : std::clamp((s - row[x]) / std::max(1.0, s - m), 0.0, 1.0);
       sum += c;
       sx += c * x;
       sy += c * y;
@@ -234,8 +274,43 @@ bool ThreeLargest(const std::vector<MarkerBlob>& blobs, MarkerTriple* out) {
 
 }  // namespace
 
-bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, bool thesis_mode,
-                           MarkerTriple* out) {
+SurfaceStretch SampleStretch(const cv::Mat& filtered, cv::Point2d a, cv::Point2d b) {
+  constexpr int kSamples = 16;
+  double values[kSamples];
+  double ts[kSamples];
+  int n = 0;
+  for (int i = 0; i < kSamples; ++i) {
+    const double t = 0.2 + 0.6 * i / (kSamples - 1);
+    const cv::Point p(cvRound(a.x + t * (b.x - a.x)), cvRound(a.y + t * (b.y - a.y)));
+    if (p.x < 0 || p.y < 0 || p.x >= filtered.cols || p.y >= filtered.rows) continue;
+    ts[n] = t;
+    values[n++] = filtered.at<uchar>(p);
+  }
+  SurfaceStretch out;
+  if (n < kSamples / 2) return out;
+  // Shading makes a smooth ramp; a silhouette crossed makes a step. Fit the ramp, count the
+  // samples off it.
+  double st = 0, sv = 0, stt = 0, stv = 0;
+  for (int i = 0; i < n; ++i) {
+    st += ts[i];
+    sv += values[i];
+    stt += ts[i] * ts[i];
+    stv += ts[i] * values[i];
+  }
+  const double det = n * stt - st * st;
+  const double slope = det > 1e-12 ? (n * stv - st * sv) / det : 0;
+  const double offset = (sv - slope * st) / n;
+  out.level = sv / n;
+  int off = 0;
+  for (int i = 0; i < n; ++i) {
+    off += std::abs(values[i] - (offset + slope * ts[i])) > 0.15 * out.level + 4;
+  }
+  out.uneven = static_cast<double>(off) / n;
+  return out;
+}
+
+bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, const cv::Mat& filtered,
+                           bool thesis_mode, MarkerTriple* out) {
   if (thesis_mode) return ThreeLargest(blobs, out);
   const int count = std::min<int>(static_cast<int>(blobs.size()), 16);
   double best = 1e9;
@@ -255,7 +330,10 @@ bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, bool thesis_mod
         if (c.centre.y > mid.y - 0.3 * n) continue;
         const double off = std::abs(c.centre.x - mid.x);
         if (off > 0.2 * n + 2) continue;
-        const double score = off / n + dy / n + 0.5 * size_diff;
+        const SurfaceStretch pair = SampleStretch(filtered, a.centre, b.centre);
+        const SurfaceStretch up = SampleStretch(filtered, mid, c.centre);
+        if (pair.uneven > 0.25 || up.uneven > 0.25) continue;
+        const double score = off / n + dy / n + 0.5 * size_diff + pair.uneven + up.uneven;
         if (score < best) {
           best = score;
           *out = Ordered(c, a, b);
@@ -266,13 +344,23 @@ bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, bool thesis_mod
   return best < 1e9;
 }
 
-bool ChooseTriple(const std::vector<MarkerBlob>& blobs, const MarkerReference& ref,
-                  const MarkerOptions& options, MarkerTriple* out) {
+bool ChooseTriple(const std::vector<MarkerBlob>& blobs, const cv::Mat& filtered,
+                  const MarkerReference& ref, const MarkerOptions& options, MarkerTriple* out,
+                  bool* ambiguous) {
+  if (ambiguous) *ambiguous = false;
+  // The stretch between two lower markers and between the pivot and the upper one lie on the
+  // joint: even, and about as bright as in the reference.
+  auto on_surface = [](const SurfaceStretch& s, double ref_level) {
+    if (s.uneven > 0.3 || ref_level <= 0) return false;
+    const double r = s.level / ref_level;
+    return r > 0.55 && r < 1.8;
+  };
   if (options.thesis_mode) return ThreeLargest(blobs, out);
   const int count = std::min<int>(static_cast<int>(blobs.size()), 24);
   const double big_n = ref.n_px;
   const double e = ref.e_px;
   double best = 1e9;
+  double second = 1e9;
   for (int i = 0; i < count; ++i) {
     for (int j = 0; j < count; ++j) {
       const MarkerBlob& a = blobs[i];
@@ -290,6 +378,7 @@ bool ChooseTriple(const std::vector<MarkerBlob>& blobs, const MarkerReference& r
       if (pair_area < 0.3 || pair_area > 2.5) continue;
       const cv::Point2d mid = (a.centre + b.centre) * 0.5;
       const double pivot_y = mid.y - e;
+      if (!on_surface(SampleStretch(filtered, a.centre, b.centre), ref.pair_level)) continue;
       for (int k = 0; k < count; ++k) {
         if (k == i || k == j) continue;
         const MarkerBlob& c = blobs[k];
@@ -300,16 +389,24 @@ bool ChooseTriple(const std::vector<MarkerBlob>& blobs, const MarkerReference& r
         // The upper marker faces the camera turned by the yaw only.
         const double upper_area = c.area_px / (cos_yaw * ref.markers.upper.area_px);
         if (upper_area < 0.4 || upper_area > 2.5) continue;
+        if (!on_surface(SampleStretch(filtered, {mid.x, pivot_y}, c.centre), ref.upper_level)) {
+          continue;
+        }
         const double score = resid + dy / big_n + 0.1 * std::abs(std::log(upper_area)) +
                              0.1 * std::abs(std::log(pair_area));
         if (score < best) {
+          second = best;
           best = score;
           *out = Ordered(c, a, b);
+        } else if (score < second) {
+          second = score;
         }
       }
     }
   }
-  return best < 1e9;
+  // Another triple that fits about as well: clutter competes, and a guess is not a measurement.
+  if (ambiguous) *ambiguous = best < 1e9 && second < best + options.ambiguity_margin;
+  return best < 1e9 && second >= best + options.ambiguity_margin;
 }
 
 MarkerAngles ComputeMarkerAngles(const MarkerTriple& t, const MarkerReference& ref,

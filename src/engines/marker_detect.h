@@ -60,17 +60,31 @@ struct MarkerReference {
   double face_area_px = 0;   // the upper marker's area (facing the camera)
   double core_ratio = 0;     // marker / surround level
   int marker_height_px = 0;  // the upper marker's box height
+  double pair_level = 0;     // surface level between the lower markers
+  double upper_level = 0;    // ... and between the pivot and the upper marker
   MarkerTriple markers;
 };
 
 // The reference's markers: the most symmetric triple (two side by side, one centred above).
 // In thesis mode: the three largest, the top-most as upper.
-bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, bool thesis_mode,
-                           MarkerTriple* out);
+// `filtered` is the median image: the stretches between the markers must look like the joint's
+// surface (even, and in the current image as bright as in the reference), not background.
+bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, const cv::Mat& filtered,
+                           bool thesis_mode, MarkerTriple* out);
 // The current image's markers. Thesis mode: the three largest. Otherwise the triple that best
 // fits the joint's geometry given the reference; false when none fits.
-bool ChooseTriple(const std::vector<MarkerBlob>& blobs, const MarkerReference& ref,
-                  const MarkerOptions& options, MarkerTriple* out);
+// `ambiguous` (may be null) is set when a second triple fits nearly as well (then false).
+bool ChooseTriple(const std::vector<MarkerBlob>& blobs, const cv::Mat& filtered,
+                  const MarkerReference& ref, const MarkerOptions& options, MarkerTriple* out,
+                  bool* ambiguous = nullptr);
+
+// The joint's surface along a stretch: the mean level of the median image between `a` and `b`
+// (their ends left out) and the share of samples more than 15 % off a straight ramp.
+struct SurfaceStretch {
+  double level = 0;
+  double uneven = 1;
+};
+SurfaceStretch SampleStretch(const cv::Mat& filtered, cv::Point2d a, cv::Point2d b);
 
 // Eqs. 4-1..4-5 and the yaw correction; see docs/marker.md.
 struct MarkerAngles {

@@ -40,6 +40,7 @@ Status MarkerOptions::Check() const {
   if (!(geometry_tolerance > 0 && geometry_tolerance <= 1)) {
     return Status::Error("--geometry-tolerance must be in (0, 1]");
   }
+  if (!(ambiguity_margin >= 0)) return Status::Error("--ambiguity-margin must be >= 0");
   if (!(min_width_ratio > 0 && max_width_ratio >= min_width_ratio)) {
     return Status::Error("marker options: need 0 < min_width_ratio <= max_width_ratio");
   }
@@ -75,7 +76,7 @@ class MarkerEngine : public Engine {
     options_ = requested_;
     std::vector<MarkerBlob> blobs = FindMarkerCandidates(ref, options_, &scratch_);
     MarkerTriple t;
-    bool found = ChooseReferenceTriple(blobs, options_.thesis_mode, &t);
+    bool found = ChooseReferenceTriple(blobs, scratch_.filtered, options_.thesis_mode, &t);
     if (!found && options_.auto_window && !options_.thesis_mode) {
       // Other illumination: shift the window, nearest first, until the markers show.
       const int width = requested_.high - requested_.low;
@@ -86,7 +87,7 @@ class MarkerEngine : public Engine {
           o.high = o.low + width;
           if (o.low < 0 || o.high > 255) continue;
           std::vector<MarkerBlob> b = FindMarkerCandidates(ref, o, &scratch_);
-          if (ChooseReferenceTriple(b, false, &t)) {
+          if (ChooseReferenceTriple(b, scratch_.filtered, false, &t)) {
             options_ = o;
             blobs = std::move(b);
             found = true;
@@ -127,6 +128,11 @@ class MarkerEngine : public Engine {
       }
     }
     r.markers = t;
+    const cv::Point2d mid = (t.left.centre + t.right.centre) * 0.5;
+    r.pair_level = SampleStretch(scratch_.filtered, t.left.centre, t.right.centre).level;
+    r.upper_level =
+        SampleStretch(scratch_.filtered, {mid.x, 0.5 * (mid.y + t.upper.centre.y)}, t.upper.centre)
+            .level;
     r.n_px = t.right.centre.x - t.left.centre.x;
     r.e_px = 0.5 * ((t.left.centre.y + t.right.centre.y) * 0.5 - t.upper.centre.y);
     if (r.n_px < 3 || r.e_px < 3) {
@@ -160,8 +166,10 @@ class MarkerEngine : public Engine {
     m.candidate_boxes.reserve(blobs.size());
     for (const MarkerBlob& b : blobs) m.candidate_boxes.push_back(b.box);
     MarkerTriple t;
-    if (!ChooseTriple(blobs, ref_, options_, &t)) {
+    bool ambiguous = false;
+    if (!ChooseTriple(blobs, scratch_.filtered, ref_, options_, &t, &ambiguous)) {
       m.note = blobs.size() < 3 ? "fewer than three markers found (one hidden?)"
+               : ambiguous      ? "two sets of blobs fit the joint's geometry (clutter competes)"
                                 : "no three blobs fit the joint's geometry";
       return m;
     }

@@ -31,6 +31,8 @@ struct MarkerOptions {
   // Geometry check: how far (relative to e) the upper marker may be from where the lower pair
   // puts it, and the accepted range of n / N.
   double geometry_tolerance = 0.15;
+  // A view is lost when a second triple's misfit is within this margin of the best one's.
+  double ambiguity_margin = 0.05;
   double min_width_ratio = 0.6;
   double max_width_ratio = 1.1;
   Status Check() const;  // messages name the flag (--low, --high, ...)
