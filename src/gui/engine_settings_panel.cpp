@@ -239,7 +239,15 @@ void EngineSettingsPanel::updateEnabled() {
 }
 
 AnalysisOptions EngineSettingsPanel::options() const {
-  AnalysisOptions o;
+  AnalysisOptions o = base_;
+  o.inputs.clear();
+  o.background_path.clear();
+  o.background_frames = 0;
+  o.arm_length_path.clear();
+  o.reference_path.clear();
+  o.start = 0;
+  o.shoulder_px.reset();
+  o.roi.reset();
   o.engine.kind = static_cast<EngineKind>(engine_->currentData().toInt());
   o.engine.bgsub.threshold = threshold_->value();
   o.engine.bgsub.standstill_frames = bg_standstill_->value();
@@ -262,7 +270,11 @@ AnalysisOptions EngineSettingsPanel::options() const {
     return o;
   }
   if (bg_mode_->currentIndex() == kBgImage) o.background_path = background_->text().toStdString();
-  if (bg_mode_->currentIndex() == kBgFrames) o.background_frames = bg_frames_->value();
+  if (bg_mode_->currentIndex() == kBgFrames) {
+    // As the CLI does: --background-frames K is also the bgsub background length.
+    o.background_frames = bg_frames_->value();
+    o.engine.bgsub.background_frames = o.background_frames;
+  }
   if (o.engine.kind == EngineKind::kBgsub) o.arm_length_path = arm_length_->text().toStdString();
   o.start = start_->value();
   if (shoulder_box_->isChecked()) {
@@ -275,6 +287,7 @@ AnalysisOptions EngineSettingsPanel::options() const {
 }
 
 void EngineSettingsPanel::setOptions(const AnalysisOptions& o) {
+  base_ = o;
   engine_->setCurrentIndex(engine_->findData(int(o.engine.kind)));
   threshold_->setValue(o.engine.bgsub.threshold);
   bg_standstill_->setValue(o.engine.bgsub.standstill_frames);

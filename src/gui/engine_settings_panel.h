@@ -46,6 +46,9 @@ class EngineSettingsPanel : public QWidget {
   QLineEdit* fileRow(QWidget* parent, const QString& name, QWidget** row);
   void updateEnabled();
 
+  // Fields the panel does not show keep the values last given to setOptions().
+  AnalysisOptions base_;
+
   QComboBox* engine_;
   QStackedWidget* pages_;
   // Inputs.

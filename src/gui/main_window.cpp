@@ -3,14 +3,9 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
-#include <QFileDialog>
 #include <QFileInfo>
-#include <QInputDialog>
-#include <QLabel>
 #include <QMenu>
-#include <QMessageBox>
 #include <QMimeData>
-#include <QProgressBar>
 #include <QSaveFile>
 #include <QSettings>
 #include <QStatusBar>
@@ -24,8 +19,10 @@
 #include "icons.h"
 #include "log_view.h"
 #include "playback_bar.h"
+#include "prompts.h"
 #include "recent_files.h"
 #include "robot_panel.h"
+#include "status_line.h"
 #include "video_player.h"
 #include "video_view.h"
 
@@ -42,10 +39,7 @@ MainWindow::MainWindow(QWidget* parent)
       log_(new LogView),
       robot_(new RobotPanel),
       job_(new AnalysisJob(this)),
-      frame_status_(new QLabel),
-      link_status_(new QLabel),
-      progress_(new QProgressBar),
-      phase_(new QLabel) {
+      status_(new StatusLine(statusBar())) {
   setObjectName("mainWindow");
   setWindowTitle("armmimic");
   setWindowIcon(MakeIcon(IconKind::kApp));
@@ -74,17 +68,6 @@ MainWindow::MainWindow(QWidget* parent)
   connect(recent_, &RecentFiles::openRequested, this,
           [this](const QString& p) { openInputs({p}); });
 
-  progress_->setMaximumWidth(180);
-  progress_->setVisible(false);
-  phase_->setVisible(false);
-  frame_status_->setObjectName("frameStatus");
-  link_status_->setObjectName("linkStatus");
-  statusBar()->addWidget(frame_status_);
-  statusBar()->addPermanentWidget(phase_);
-  statusBar()->addPermanentWidget(progress_);
-  statusBar()->addPermanentWidget(link_status_);
-  link_status_->setText(tr("robot: not connected"));
-
   throttle_.setSingleShot(true);
   throttle_.setInterval(40);
   connect(&throttle_, &QTimer::timeout, this, &MainWindow::refreshViews);
@@ -107,33 +90,18 @@ QDockWidget* MainWindow::dock(const QString& title, const QString& name, QWidget
 
 void MainWindow::wireActions() {
   AppActions* a = actions_;
-  connect(a->open, &QAction::triggered, this, [this] {
-    const QStringList files = QFileDialog::getOpenFileNames(
-        this, tr("Open video or images"), lastDir(),
-        tr("Videos and images (*.avi *.mp4 *.mkv *.mov *.png *.jpg *.jpeg *.bmp *.tif *.tiff);;"
-           "All files (*)"));
-    if (!files.isEmpty()) openInputs(files);
-  });
+  connect(a->open, &QAction::triggered, this, [this] { openInputs(AskInputs(this, lastDir())); });
   connect(a->camera, &QAction::triggered, this, [this] {
-    bool ok = false;
-    const QString src = QInputDialog::getText(
-        this, tr("Capture from camera"), tr("Camera index (0, 1, …) or stream URL (rtsp://…):"),
-        QLineEdit::Normal, "0", &ok);
-    if (!ok || src.trimmed().isEmpty()) return;
-    bool is_index = false;
-    src.trimmed().toInt(&is_index);
-    openInputs({is_index ? "camera:" + src.trimmed() : src.trimmed()});
+    if (auto source = AskCamera(this)) openInputs({*source});
   });
   connect(a->saveFrame, &QAction::triggered, this, [this] {
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Save frame with overlay"),
-        lastDir() + QString("/frame-%1.png").arg(player_->currentFrame()),
-        tr("Images (*.png *.jpg)"));
+    const QString path = AskSavePath(this, tr("Save frame with overlay"),
+                                     lastDir() + QString("/frame-%1.png").arg(view_->frameIndex()),
+                                     tr("Images (*.png *.jpg)"));
     if (!path.isEmpty()) saveFrame(path);
   });
   connect(a->exportAngles, &QAction::triggered, this, [this] {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export angle file"), lastDir() + "/angles.tsv",
+    const QString path = AskSavePath(this, tr("Export angle file"), lastDir() + "/angles.tsv",
                                      tr("Angle files (*.tsv);;All files (*)"));
     if (!path.isEmpty()) exportAngles(path);
   });
@@ -159,24 +127,15 @@ void MainWindow::wireActions() {
   connect(a->analyze, &QAction::triggered, this, &MainWindow::startAnalysis);
   connect(a->cancel, &QAction::triggered, job_, &AnalysisJob::cancel);
   connect(a->estimateBackground, &QAction::triggered, this, [this] {
-    bool ok = false;
-    const int k = QInputDialog::getInt(this, tr("Estimate background"),
-                                       tr("Average the first K frames (thesis 5.2.1), K ="), 45, 1,
-                                       100000, 1, &ok);
-    if (!ok) return;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save background image"),
-                                                      lastDir() + "/background.png",
-                                                      tr("Images (*.png *.bmp *.tif)"));
-    if (!path.isEmpty()) estimateBackground(k, path);
+    const std::optional<int> k = AskBackgroundFrames(this);
+    if (!k) return;
+    const QString path = AskSavePath(this, tr("Save background image"),
+                                     lastDir() + "/background.png", tr("Images (*.png *.bmp)"));
+    if (!path.isEmpty()) estimateBackground(*k, path);
   });
   connect(actions_, &AppActions::overlayChanged, this,
           [this] { view_->setOverlayOptions(actions_->overlayOptions()); });
-  connect(a->about, &QAction::triggered, this, [this] {
-    QMessageBox::about(this, tr("About armmimic"),
-                       tr("<b>armmimic</b><p>Makes a PUMA 760 arm mimic a human arm seen on "
-                          "video: marker joint, background subtraction and Lucas–Kanade "
-                          "engines, angle file v1, VAL II over RS-232.</p>"));
-  });
+  connect(a->about, &QAction::triggered, this, [this] { ShowAbout(this); });
 
   connect(bar_, &PlaybackBar::seekRequested, player_, &VideoPlayer::seek);
   connect(bar_, &PlaybackBar::speedChanged, player_, &VideoPlayer::setSpeed);
@@ -191,16 +150,7 @@ void MainWindow::wireActions() {
   connect(player_, &VideoPlayer::opened, this, [this](const VideoInfo& info) {
     bar_->setFrameCount(info.frame_count, info.fps);
     plot_->setFrameRange(info.frame_count);
-    const QString what = info.kind == SourceKind::kCamera ? tr("camera")
-                         : info.codec.empty()             ? tr("images")
-                                                          : QString::fromStdString(info.codec);
-    log_->info(tr("Opened %1: %2 frames, %3 fps, %4×%5 (%6)")
-                   .arg(QString::fromStdString(info.path))
-                   .arg(info.frame_count)
-                   .arg(info.fps)
-                   .arg(info.size.width)
-                   .arg(info.size.height)
-                   .arg(what));
+    log_->info(tr("Opened %1").arg(DescribeSource(info)));
     updateStatus();
   });
   connect(player_, &VideoPlayer::error, log_, &LogView::error);
@@ -225,16 +175,13 @@ void MainWindow::wireActions() {
   });
   connect(robot_, &RobotPanel::message, log_, &LogView::info);
   connect(robot_, &RobotPanel::errorOccurred, log_, &LogView::error);
-  connect(robot_, &RobotPanel::linkStateChanged, link_status_, &QLabel::setText);
+  connect(robot_, &RobotPanel::linkStateChanged, status_, &StatusLine::setLinkText);
 }
 
 void MainWindow::wireAnalysis() {
   connect(job_, &AnalysisJob::started, this, [this] { setBusy(true); });
-  connect(job_, &AnalysisJob::phase, this, [this](const QString& p) { phase_->setText(p); });
-  connect(job_, &AnalysisJob::progress, this, [this](int done, int total) {
-    progress_->setRange(0, total > 0 ? total : 0);
-    progress_->setValue(done);
-  });
+  connect(job_, &AnalysisJob::phase, status_, &StatusLine::setPhase);
+  connect(job_, &AnalysisJob::progress, status_, &StatusLine::setProgress);
   connect(job_, &AnalysisJob::measured, this, [this](const ArmMeasurement& m) {
     results_.add(m);
     if (!throttle_.isActive()) throttle_.start();
@@ -262,16 +209,11 @@ void MainWindow::wireAnalysis() {
 }
 
 void MainWindow::setBusy(bool busy) {
-  progress_->setVisible(busy);
-  phase_->setVisible(busy);
+  status_->setBusy(busy);
   actions_->analyze->setEnabled(!busy);
   actions_->estimateBackground->setEnabled(!busy);
   actions_->cancel->setEnabled(busy);
   settings_->setEnabled(!busy);
-  if (busy) {
-    progress_->setRange(0, 0);
-    phase_->clear();
-  }
 }
 
 void MainWindow::openInputs(const QStringList& inputs) {
@@ -359,6 +301,7 @@ void MainWindow::showFrame(int index, const QImage& image, double time_s) {
   view_->setMeasurement(results_.at(index));
   bar_->setPosition(index, time_s);
   plot_->setCursorFrame(index);
+  robot_->setVideoFrame(index);
   updateStatus();
 }
 
@@ -369,11 +312,11 @@ void MainWindow::refreshViews() {
 
 void MainWindow::updateStatus() {
   if (!player_->isOpen() && !job_->isRunning()) {
-    frame_status_->setText(tr("No video"));
+    status_->setFrameText(tr("No video"));
     return;
   }
   const OverlayTexts t = view_->overlayTexts();
-  frame_status_->setText(
+  status_->setFrameText(
       QString("%1   %2 s   %3").arg(t.frame).arg(time_s_, 0, 'f', 2).arg(t.state));
 }
 

@@ -9,8 +9,6 @@
 #include "result_store.h"
 
 class QDockWidget;
-class QLabel;
-class QProgressBar;
 
 namespace armmimic::gui {
 
@@ -22,6 +20,7 @@ class LogView;
 class PlaybackBar;
 class RecentFiles;
 class RobotPanel;
+class StatusLine;
 class VideoPlayer;
 class VideoView;
 
@@ -46,6 +45,7 @@ class MainWindow : public QMainWindow {
   AnglePlot* plot() const { return plot_; }
   LogView* log() const { return log_; }
   RobotPanel* robotPanel() const { return robot_; }
+  StatusLine* statusLine() const { return status_; }
   AppActions* actions() const { return actions_; }
   const ResultStore& results() const { return results_; }
 
@@ -80,10 +80,7 @@ class MainWindow : public QMainWindow {
   QDockWidget* log_dock_ = nullptr;
   ResultStore results_;
   QTimer throttle_;  // one-shot: redraw the overlay and the plot at most every 40 ms
-  QLabel* frame_status_;
-  QLabel* link_status_;
-  QProgressBar* progress_;
-  QLabel* phase_;
+  StatusLine* status_;
   double time_s_ = 0;
   bool live_ = false;
 };

@@ -19,6 +19,19 @@ QImage ImageFromMat(const cv::Mat& mat) {
       .copy();
 }
 
+QString DescribeSource(const VideoInfo& info) {
+  const QString what = info.kind == SourceKind::kCamera ? QStringLiteral("camera")
+                       : info.codec.empty()             ? QStringLiteral("images")
+                                                        : QString::fromStdString(info.codec);
+  return QString("%1: %2 frames, %3 fps, %4×%5 (%6)")
+      .arg(QString::fromStdString(info.path))
+      .arg(info.frame_count)
+      .arg(info.fps)
+      .arg(info.size.width)
+      .arg(info.size.height)
+      .arg(what);
+}
+
 void FrameDecoder::open(const QStringList& inputs, int generation) {
   source_.reset();
   std::vector<std::string> list;

@@ -1,0 +1,49 @@
+#include "status_line.h"
+
+#include <QLabel>
+#include <QProgressBar>
+#include <QStatusBar>
+
+namespace armmimic::gui {
+
+StatusLine::StatusLine(QStatusBar* bar)
+    : QObject(bar),
+      frame_(new QLabel),
+      phase_(new QLabel),
+      progress_(new QProgressBar),
+      link_(new QLabel) {
+  frame_->setObjectName("frameStatus");
+  link_->setObjectName("linkStatus");
+  progress_->setMaximumWidth(180);
+  progress_->setVisible(false);
+  phase_->setVisible(false);
+  bar->addWidget(frame_);
+  bar->addPermanentWidget(phase_);
+  bar->addPermanentWidget(progress_);
+  bar->addPermanentWidget(link_);
+  link_->setText(tr("robot: not connected"));
+}
+
+void StatusLine::setFrameText(const QString& text) { frame_->setText(text); }
+QString StatusLine::frameText() const { return frame_->text(); }
+QString StatusLine::linkText() const { return link_->text(); }
+
+void StatusLine::setBusy(bool busy) {
+  progress_->setVisible(busy);
+  phase_->setVisible(busy);
+  if (busy) {
+    progress_->setRange(0, 0);
+    phase_->clear();
+  }
+}
+
+void StatusLine::setPhase(const QString& phase) { phase_->setText(phase); }
+
+void StatusLine::setProgress(int done, int total) {
+  progress_->setRange(0, total > 0 ? total : 0);
+  progress_->setValue(done);
+}
+
+void StatusLine::setLinkText(const QString& text) { link_->setText(text); }
+
+}  // namespace armmimic::gui

@@ -1,0 +1,198 @@
+// The analysis workflow as an operator runs it: load the sample, run each engine, read the
+// overlay, export, and compare the export with armmimic-cli's output for the same options.
+#include <cmath>
+
+#include <QFileInfo>
+#include <QImage>
+
+#include "analysis_job.h"
+#include "angle_plot.h"
+#include "armmimic/core/angle_file.h"
+#include "armmimic/synth/truth_file.h"
+#include "engine_settings_panel.h"
+#include "gui_fixture.h"
+#include "log_view.h"
+#include "main_window.h"
+#include "video_player.h"
+#include "video_view.h"
+
+namespace armmimic::test {
+namespace {
+
+using gui::MainWindow;
+
+class AnalysisExportTest : public GuiTest {
+ protected:
+  // Opens `inputs`, sets `options`, runs the analysis to the end.
+  void Run(MainWindow& w, const QStringList& inputs, const AnalysisOptions& options) {
+    w.openInputs(inputs);
+    ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen() && !w.view()->image().isNull(); }))
+        << w.log()->text().toStdString();
+    w.settingsPanel()->setOptions(options);
+    ASSERT_TRUE(w.startAnalysis()) << w.log()->text().toStdString();
+    ASSERT_TRUE(WaitUntil([&] { return !w.job()->isRunning(); }, 60000));
+    ASSERT_FALSE(w.job()->resultPath().isEmpty()) << w.log()->text().toStdString();
+  }
+
+  void ExpectSameAsCli(MainWindow& w, const std::vector<std::string>& cli_args) {
+    const std::string gui_path = tmp_.file("gui.tsv");
+    ASSERT_TRUE(w.exportAngles(QString::fromStdString(gui_path))) << w.log()->text().toStdString();
+    std::vector<std::string> args = {"-q", "analyze"};
+    args.insert(args.end(), cli_args.begin(), cli_args.end());
+    args.push_back("-o");
+    args.push_back(tmp_.file("cli.tsv"));
+    const CliResult r = RunCli(args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string gui = ReadFile(gui_path);
+    EXPECT_FALSE(gui.empty());
+    EXPECT_EQ(gui, ReadFile(tmp_.file("cli.tsv")));
+  }
+};
+
+TEST_F(AnalysisExportTest, BgsubOverlayFollowsTruthAndExportEqualsCli) {
+  const GuiScenes& s = scenes();
+  MainWindow w;
+  AnalysisOptions o;
+  o.engine.kind = EngineKind::kBgsub;
+  o.background_path = s.background();
+  o.arm_length_path = s.arm_length();
+  o.start = s.background_frames;
+  o.engine.bgsub.standstill_frames = s.standstill_frames;
+  o.engine.lk.standstill_frames = s.standstill_frames;
+  Run(w, {QString::fromStdString(s.video())}, o);
+
+  // One row per frame after the standstill, kept per frame for scrubbing and the plot.
+  EXPECT_EQ(w.results().rows(), s.motion_frames);
+  EXPECT_EQ(w.job()->summary().frames, s.motion_frames);
+  EXPECT_GT(w.plot()->pointCount(), s.motion_frames / 2);
+
+  // Scrub to a motion frame: the overlay shows that frame's measurement, and it follows truth.
+  synth::TruthFile truth;
+  ASSERT_TRUE(synth::ReadTruthFile(s.arm_dir + "/truth.tsv", &truth).ok());
+  const int frame = s.background_frames + s.standstill_frames + s.motion_frames / 2;
+  w.player()->seek(frame);
+  ASSERT_TRUE(WaitUntil([&] { return w.view()->frameIndex() == frame; }));
+  ASSERT_TRUE(w.view()->measurement().has_value());
+  const ArmMeasurement& m = *w.view()->measurement();
+  EXPECT_EQ(m.frame, frame);
+  ASSERT_EQ(m.phase, MeasurementPhase::kOk) << m.note;
+  const gui::OverlayTexts texts = w.view()->overlayTexts();
+  EXPECT_EQ(texts.frame.toStdString(),
+            "frame " + std::to_string(frame) + " / " +
+                std::to_string(s.background_frames + s.standstill_frames + s.motion_frames - 1));
+  EXPECT_NE(texts.orientation.indexOf(QString::number(m.upper_deg, 'f', 1)), -1)
+      << texts.orientation.toStdString();
+  const synth::TruthRow* t = nullptr;
+  for (const synth::TruthRow& row : truth.rows) {
+    if (row.frame == frame) t = &row;
+  }
+  ASSERT_NE(t, nullptr);
+  EXPECT_LE(std::abs(AngleDiff(m.upper_deg, t->upper_deg)), 10.0)
+      << "overlay upper " << m.upper_deg << " truth " << t->upper_deg;
+  EXPECT_EQ(w.plot()->cursorFrame(), frame);
+
+  ExpectSameAsCli(
+      w, {s.video(), "--engine", "bgsub", "--background", s.background(), "--arm-length",
+          s.arm_length(), "--start", std::to_string(s.background_frames), "--standstill-frames",
+          std::to_string(s.standstill_frames)});
+  AngleFile file;
+  ASSERT_TRUE(ReadAngleFile(tmp_.file("gui.tsv"), &file).ok());
+  EXPECT_EQ(static_cast<int>(file.rows.size()), s.motion_frames);
+}
+
+TEST_F(AnalysisExportTest, LkExportEqualsCli) {
+  const GuiScenes& s = scenes();
+  MainWindow w;
+  AnalysisOptions o;
+  o.engine.kind = EngineKind::kLk;
+  o.background_path = s.background();
+  o.start = s.background_frames;
+  o.engine.bgsub.standstill_frames = s.standstill_frames;
+  o.engine.lk.standstill_frames = s.standstill_frames;
+  Run(w, {QString::fromStdString(s.video())}, o);
+  EXPECT_EQ(w.results().rows(), s.motion_frames);
+  ExpectSameAsCli(w, {s.video(), "--engine", "lk", "--background", s.background(), "--start",
+                      std::to_string(s.background_frames), "--standstill-frames",
+                      std::to_string(s.standstill_frames)});
+}
+
+TEST_F(AnalysisExportTest, MarkerExportEqualsCliAndShowsCandidates) {
+  const GuiScenes& s = scenes();
+  MainWindow w;
+  AnalysisOptions o;
+  o.engine.kind = EngineKind::kMarker;
+  o.reference_path = s.marker_dir + "/reference.png";
+  Run(w, {QString::fromStdString(s.marker_dir + "/views")}, o);
+  EXPECT_EQ(w.results().rows(), 6);
+  // The first view's overlay carries the markers and candidate boxes (Fig. 4-3).
+  ASSERT_TRUE(WaitUntil([&] { return w.view()->measurement().has_value(); }));
+  EXPECT_FALSE(w.view()->measurement()->candidate_boxes.empty());
+  ExpectSameAsCli(w, {s.marker_dir + "/views", "--engine", "marker", "--reference",
+                      s.marker_dir + "/reference.png"});
+}
+
+TEST_F(AnalysisExportTest, BackgroundEstimationMatchesCli) {
+  const GuiScenes& s = scenes();
+  MainWindow w;
+  w.openInputs({QString::fromStdString(s.video())});
+  ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen(); }));
+  const QString path = QString::fromStdString(tmp_.file("bg.png"));
+  ASSERT_TRUE(w.estimateBackground(s.background_frames, path));
+  ASSERT_TRUE(WaitUntil([&] { return !w.job()->isRunning(); }, 30000));
+  ASSERT_TRUE(QFileInfo::exists(path)) << w.log()->text().toStdString();
+  EXPECT_EQ(w.settingsPanel()->options().background_path, path.toStdString());
+  const CliResult r = RunCli({"-q", "background", s.video(), "-o", tmp_.file("cli_bg.png"),
+                              "--frames", std::to_string(s.background_frames)});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const QImage gui(path), cli(QString::fromStdString(tmp_.file("cli_bg.png")));
+  ASSERT_FALSE(gui.isNull());
+  EXPECT_EQ(gui.convertToFormat(QImage::Format_RGB888), cli.convertToFormat(QImage::Format_RGB888));
+}
+
+TEST_F(AnalysisExportTest, CancelKeepsTheWindowResponsiveAndMarksTheFileIncomplete) {
+  const GuiScenes& s = scenes();
+  MainWindow w;
+  AnalysisOptions o;
+  o.engine.kind = EngineKind::kBgsub;
+  o.background_path = s.background();
+  o.arm_length_path = s.arm_length();
+  o.start = s.background_frames;
+  o.engine.bgsub.standstill_frames = s.standstill_frames;
+  w.openInputs({QString::fromStdString(s.video())});
+  ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen(); }));
+  w.settingsPanel()->setOptions(o);
+  ASSERT_TRUE(w.startAnalysis());
+  w.job()->cancel();
+  ASSERT_TRUE(WaitUntil([&] { return !w.job()->isRunning(); }, 30000));
+  if (!w.job()->resultPath().isEmpty()) {
+    AngleFile file;
+    ASSERT_TRUE(ReadAngleFile(w.job()->resultPath().toStdString(), &file).ok());
+    EXPECT_EQ(file.complete, !w.job()->summary().cancelled);
+  }
+  EXPECT_FALSE(w.job()->isRunning());
+}
+
+TEST_F(AnalysisExportTest, BadInputIsReportedOnceAndNamed) {
+  MainWindow w;
+  EXPECT_FALSE(w.exportAngles(QString::fromStdString(tmp_.file("x.tsv"))));
+  EXPECT_FALSE(w.exportAngles(QString::fromStdString(tmp_.file("x.tsv"))));
+  EXPECT_EQ(w.log()->errorCount(), 1);
+  const std::string missing = tmp_.file("missing.avi");
+  w.openInputs({QString::fromStdString(missing)});
+  ASSERT_TRUE(WaitUntil([&] { return w.log()->errorCount() == 2; }));
+  EXPECT_NE(w.log()->text().indexOf("missing.avi"), -1) << w.log()->text().toStdString();
+  // A missing arm-length image is named before anything runs.
+  const GuiScenes& s = scenes();
+  w.openInputs({QString::fromStdString(s.video())});
+  ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen(); }));
+  AnalysisOptions o;
+  o.background_path = s.background();
+  o.arm_length_path = tmp_.file("no-arm.png");
+  w.settingsPanel()->setOptions(o);
+  if (w.startAnalysis()) ASSERT_TRUE(WaitUntil([&] { return !w.job()->isRunning(); }, 30000));
+  EXPECT_NE(w.log()->text().indexOf("no-arm.png"), -1) << w.log()->text().toStdString();
+  EXPECT_TRUE(w.job()->resultPath().isEmpty());
+}
+
+}  // namespace
+}  // namespace armmimic::test

@@ -1,0 +1,73 @@
+#include "gui_fixture.h"
+
+#include <memory>
+
+#include <QApplication>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTest>
+
+#include "armmimic/synth/arm_scene.h"
+#include "armmimic/synth/marker_scene.h"
+
+namespace armmimic::test {
+namespace {
+
+GuiScenes* g_scenes = nullptr;
+TempDir* g_scene_dir = nullptr;
+TempDir* g_settings_dir = nullptr;
+
+void EnsureApplication() {
+  if (QApplication::instance()) return;
+  if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+  static int argc = 1;
+  static char name[] = "gui_tests";
+  static char* argv[] = {name, nullptr};
+  new QApplication(argc, argv);  // lives for the whole test run
+  QStandardPaths::setTestModeEnabled(true);
+  QApplication::setOrganizationName("armmimic-tests");
+  QApplication::setApplicationName("gui_tests");
+}
+
+}  // namespace
+
+void GuiTest::SetUpTestSuite() {
+  EnsureApplication();
+  if (g_scenes) return;
+  g_scene_dir = new TempDir;
+  g_settings_dir = new TempDir;
+  auto scenes = std::make_unique<GuiScenes>();
+  scenes->arm_dir = g_scene_dir->file("arm");
+  scenes->marker_dir = g_scene_dir->file("marker");
+  synth::ArmSceneOptions arm;
+  arm.seed = 7;
+  arm.background_frames = scenes->background_frames;
+  arm.standstill_frames = scenes->standstill_frames;
+  arm.motion_frames = scenes->motion_frames;
+  arm.motion = synth::ArmMotion::kSwing;
+  Status st = synth::WriteArmScene(arm, scenes->arm_dir, {});
+  ASSERT_TRUE(st.ok()) << st.message();
+  synth::MarkerSceneOptions marker;
+  marker.seed = 3;
+  marker.views = 6;
+  st = synth::WriteMarkerScene(marker, scenes->marker_dir, {});
+  ASSERT_TRUE(st.ok()) << st.message();
+  g_scenes = scenes.release();
+}
+
+void GuiTest::SetUp() {
+  // Never touch the user's settings: a fresh settings folder for every test.
+  QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope,
+                     QString::fromStdString(tmp_.file("settings")));
+  QSettings::setPath(QSettings::IniFormat, QSettings::UserScope,
+                     QString::fromStdString(tmp_.file("settings")));
+  QSettings().clear();
+}
+
+const GuiScenes& GuiTest::scenes() { return *g_scenes; }
+
+bool GuiTest::WaitUntil(const std::function<bool()>& done, int timeout_ms) {
+  return QTest::qWaitFor(done, timeout_ms);
+}
+
+}  // namespace armmimic::test

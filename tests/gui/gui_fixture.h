@@ -1,0 +1,37 @@
+// Shared set-up of the GUI tests: one QApplication (offscreen), settings in a temporary folder
+// under a test organisation, and small synthetic scenes rendered once with known angles.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <QString>
+
+#include "test_util.h"
+
+namespace armmimic::test {
+
+struct GuiScenes {
+  std::string arm_dir;     // scene.avi, background.png, armlength.png, truth.tsv
+  std::string marker_dir;  // reference.png, views/, truth.tsv
+  int background_frames = 10;
+  int standstill_frames = 20;
+  int motion_frames = 40;
+  std::string video() const { return arm_dir + "/scene.avi"; }
+  std::string background() const { return arm_dir + "/background.png"; }
+  std::string arm_length() const { return arm_dir + "/armlength.png"; }
+};
+
+class GuiTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite();
+  void SetUp() override;
+  static const GuiScenes& scenes();
+  // Pumps the event loop until `done` or the timeout; returns `done()`.
+  static bool WaitUntil(const std::function<bool()>& done, int timeout_ms = 20000);
+
+  TempDir tmp_;
+};
+
+}  // namespace armmimic::test

@@ -1,0 +1,99 @@
+// The robot side: plan from the analysis, see limit violations before anything moves, export
+// the .val, and send to the built-in simulated controller over a pseudo-terminal.
+#include <QFileInfo>
+
+#include "analysis_job.h"
+#include "armmimic/robot/val_program.h"
+#include "engine_settings_panel.h"
+#include "gui_fixture.h"
+#include "log_view.h"
+#include "main_window.h"
+#include "robot_link.h"
+#include "robot_panel.h"
+#include "robot_preview.h"
+#include "sim_controller.h"
+#include "video_player.h"
+#include "video_view.h"
+
+namespace armmimic::test {
+namespace {
+
+using gui::MainWindow;
+
+class RobotPanelTest : public GuiTest {
+ protected:
+  void Analyze(MainWindow& w) {
+    const GuiScenes& s = scenes();
+    w.openInputs({QString::fromStdString(s.video())});
+    ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen(); }));
+    AnalysisOptions o;
+    o.background_path = s.background();
+    o.arm_length_path = s.arm_length();
+    o.start = s.background_frames;
+    o.engine.bgsub.standstill_frames = s.standstill_frames;
+    w.settingsPanel()->setOptions(o);
+    ASSERT_TRUE(w.startAnalysis());
+    ASSERT_TRUE(WaitUntil([&] { return !w.job()->isRunning(); }, 60000));
+    ASSERT_TRUE(w.robotPanel()->plan().loaded()) << w.log()->text().toStdString();
+  }
+};
+
+TEST_F(RobotPanelTest, PlansExportsAndSendsToTheSimulatedController) {
+  MainWindow w;
+  Analyze(w);
+  gui::RobotPanel* panel = w.robotPanel();
+  ASSERT_TRUE(panel->plan().planned()) << w.log()->text().toStdString();
+  const auto& keys = panel->plan().trajectory().keyframes;
+  ASSERT_GE(keys.size(), 2u);
+
+  const QString val = QString::fromStdString(tmp_.file("plan.val"));
+  ASSERT_TRUE(panel->exportVal(val));
+  robot::ValProgram program;
+  ASSERT_TRUE(robot::ReadValProgram(val.toStdString(), &program).ok());
+  EXPECT_GE(program.lines.size(), keys.size());
+
+  ASSERT_TRUE(panel->startSimulator(0.01)) << w.log()->text().toStdString();
+  ASSERT_TRUE(panel->connectTo(panel->simulator()->devicePath())) << w.log()->text().toStdString();
+  bool finished = false, ok = false;
+  QObject::connect(panel, &gui::RobotPanel::sendFinished, [&](bool success) {
+    finished = true;
+    ok = success;
+  });
+  ASSERT_TRUE(panel->sendPlan(true)) << w.log()->text().toStdString();
+  ASSERT_TRUE(WaitUntil([&] { return finished; }, 60000));
+  EXPECT_TRUE(ok) << w.log()->text().toStdString() << panel->replyLog().toStdString();
+  EXPECT_EQ(panel->link()->acknowledged(), static_cast<int>(program.lines.size()));
+  EXPECT_EQ(panel->simulator()->movesExecuted(), static_cast<int>(keys.size()));
+  // The controller ends where the plan ends.
+  ASSERT_TRUE(WaitUntil(
+      [&] {
+        const robot::JointArray j = panel->simulator()->joints();
+        for (int k = 0; k < robot::kJoints; ++k) {
+          if (std::abs(j[k] - keys.back().joint_deg[k]) > 0.02) return false;
+        }
+        return true;
+      },
+      5000));
+  EXPECT_FALSE(panel->replyLog().isEmpty());
+}
+
+TEST_F(RobotPanelTest, ViolationsAreShownBeforeAnythingMoves) {
+  MainWindow w;
+  Analyze(w);
+  gui::RobotPanel* panel = w.robotPanel();
+  robot::PlannerOptions o = panel->plannerOptions();
+  // A J2 range the swinging arm leaves: the plan is refused and the preview shows it red.
+  o.limits.min_deg[1] = -30;
+  panel->setPlannerOptions(o);
+  EXPECT_FALSE(panel->plan().planned());
+  const auto bad = panel->plan().Violations(panel->plannerOptions());
+  ASSERT_FALSE(bad.empty());
+  panel->setVideoFrame(bad.front().frame);
+  EXPECT_TRUE(panel->preview()->violatingJoints().contains(1));
+  EXPECT_FALSE(panel->sendPlan(true));
+  // Nothing was sent, nothing connected.
+  EXPECT_FALSE(panel->link()->isSending());
+}
+
+}  // namespace
+}  // namespace armmimic::test

@@ -1,0 +1,161 @@
+// The window without analysis: playback keys, scrubbing, zoom, the ROI and shoulder tools,
+// saving a frame with its overlay, actions and shortcuts, and remembered settings.
+#include <QAction>
+#include <QFileInfo>
+#include <QImage>
+#include <QMenuBar>
+#include <QSettings>
+#include <QTest>
+
+#include "app_actions.h"
+#include "engine_settings_panel.h"
+#include "gui_fixture.h"
+#include "log_view.h"
+#include "main_window.h"
+#include "playback_bar.h"
+#include "video_player.h"
+#include "video_view.h"
+
+namespace armmimic::test {
+namespace {
+
+using gui::MainWindow;
+
+class WindowTest : public GuiTest {
+ protected:
+  void Open(MainWindow& w) {
+    w.resize(1200, 800);
+    w.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+    w.openInputs({QString::fromStdString(scenes().video())});
+    ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen() && !w.view()->image().isNull(); }))
+        << w.log()->text().toStdString();
+  }
+  int total() const {
+    return scenes().background_frames + scenes().standstill_frames + scenes().motion_frames;
+  }
+};
+
+TEST_F(WindowTest, KeysStepSeekAndPlay) {
+  MainWindow w;
+  Open(w);
+  EXPECT_EQ(w.player()->frameCount(), total());
+  EXPECT_EQ(w.view()->frameIndex(), 0);
+  w.view()->setFocus();
+  QTest::keyClick(&w, Qt::Key_Right);
+  ASSERT_TRUE(WaitUntil([&] { return w.view()->frameIndex() == 1; }));
+  QTest::keyClick(&w, Qt::Key_End);
+  ASSERT_TRUE(WaitUntil([&] { return w.view()->frameIndex() == total() - 1; }));
+  QTest::keyClick(&w, Qt::Key_Left);
+  ASSERT_TRUE(WaitUntil([&] { return w.view()->frameIndex() == total() - 2; }));
+  QTest::keyClick(&w, Qt::Key_Home);
+  ASSERT_TRUE(WaitUntil([&] { return w.view()->frameIndex() == 0; }));
+  EXPECT_EQ(w.playbackBar()->position(), 0);
+  // Scrubbing the slider seeks.
+  emit w.playbackBar()->seekRequested(17);
+  ASSERT_TRUE(WaitUntil([&] { return w.view()->frameIndex() == 17; }));
+  EXPECT_EQ(w.playbackBar()->position(), 17);
+  // Space plays; the frame advances on its own; Space again pauses.
+  w.playbackBar()->setSpeed(4.0);
+  QTest::keyClick(&w, Qt::Key_Space);
+  EXPECT_TRUE(w.player()->isPlaying());
+  ASSERT_TRUE(WaitUntil([&] { return w.view()->frameIndex() > 20; }));
+  QTest::keyClick(&w, Qt::Key_Space);
+  EXPECT_FALSE(w.player()->isPlaying());
+}
+
+TEST_F(WindowTest, RoiAndShoulderToolsFillTheAnalysisOptions) {
+  MainWindow w;
+  Open(w);
+  gui::VideoView* v = w.view();
+  w.actions()->toolRoi->trigger();
+  const QPoint a = v->toWidget(QPointF(100, 50)).toPoint();
+  const QPoint b = v->toWidget(QPointF(260, 200)).toPoint();
+  QTest::mousePress(v, Qt::LeftButton, {}, a);
+  QTest::mouseRelease(v, Qt::LeftButton, {}, b);
+  const AnalysisOptions o = w.settingsPanel()->options();
+  ASSERT_TRUE(o.roi.has_value());
+  EXPECT_NEAR(o.roi->x, 100, 2);
+  EXPECT_NEAR(o.roi->y, 50, 2);
+  EXPECT_NEAR(o.roi->x + o.roi->width, 260, 3);
+  EXPECT_NEAR(o.roi->y + o.roi->height, 200, 3);
+
+  w.actions()->toolShoulder->trigger();
+  QTest::mouseClick(v, Qt::LeftButton, {}, v->toWidget(QPointF(180, 90)).toPoint());
+  const AnalysisOptions o2 = w.settingsPanel()->options();
+  ASSERT_TRUE(o2.shoulder_px.has_value());
+  EXPECT_NEAR(o2.shoulder_px->x, 180, 1.5);
+  EXPECT_NEAR(o2.shoulder_px->y, 90, 1.5);
+
+  w.actions()->clearRoi->trigger();
+  EXPECT_FALSE(w.settingsPanel()->options().roi.has_value());
+  // Zoom keeps the image point under the view's centre mapping consistent.
+  const double before = v->zoom();
+  w.actions()->zoomIn->trigger();
+  EXPECT_GT(v->zoom(), before);
+  w.actions()->zoomFit->trigger();
+  EXPECT_DOUBLE_EQ(v->zoom(), before);
+}
+
+TEST_F(WindowTest, SaveFrameWritesTheOverlayAtVideoResolution) {
+  MainWindow w;
+  Open(w);
+  const QString path = QString::fromStdString(tmp_.file("frame.png"));
+  ASSERT_TRUE(w.saveFrame(path)) << w.log()->text().toStdString();
+  const QImage saved(path);
+  ASSERT_EQ(saved.size(), w.view()->image().size());
+  // The frame count is painted in the upper left: the saved image differs from the frame there.
+  const QImage raw = w.view()->image().convertToFormat(QImage::Format_RGB32);
+  const QImage got = saved.convertToFormat(QImage::Format_RGB32);
+  int changed = 0;
+  for (int y = 0; y < 20; ++y) {
+    for (int x = 0; x < 80; ++x) changed += raw.pixel(x, y) != got.pixel(x, y) ? 1 : 0;
+  }
+  EXPECT_GT(changed, 20);
+  // Turning the frame count off removes it.
+  w.actions()->ovFrame->setChecked(false);
+  ASSERT_TRUE(w.saveFrame(path));
+  EXPECT_EQ(QImage(path).convertToFormat(QImage::Format_RGB32), raw);
+}
+
+TEST_F(WindowTest, EveryActionHasAMenuEntryAndShortcutsAreUnique) {
+  MainWindow w;
+  QSet<QString> keys;
+  int with_key = 0;
+  for (QAction* a : w.findChildren<QAction*>()) {
+    if (a->objectName().startsWith("action") || a->objectName().startsWith("ov")) {
+      EXPECT_FALSE(a->associatedObjects().isEmpty()) << a->objectName().toStdString();
+      if (!a->shortcut().isEmpty()) {
+        const QString k = a->shortcut().toString();
+        EXPECT_FALSE(keys.contains(k)) << "shortcut " << k.toStdString() << " used twice";
+        keys.insert(k);
+        ++with_key;
+      }
+    }
+  }
+  EXPECT_GE(with_key, 25);
+}
+
+TEST_F(WindowTest, SettingsAndRecentFilesAreRemembered) {
+  {
+    MainWindow w;
+    Open(w);
+    AnalysisOptions o = w.settingsPanel()->options();
+    o.engine.kind = EngineKind::kLk;
+    o.engine.bgsub.threshold = 61;
+    o.engine.lk.initial_upper_deg = -80;
+    w.settingsPanel()->setOptions(o);
+    w.close();
+  }
+  MainWindow w2;
+  const AnalysisOptions o = w2.settingsPanel()->options();
+  EXPECT_EQ(o.engine.kind, EngineKind::kLk);
+  EXPECT_EQ(o.engine.bgsub.threshold, 61);
+  EXPECT_DOUBLE_EQ(o.engine.lk.initial_upper_deg, -80);
+  const QStringList recent = QSettings().value("recentFiles").toStringList();
+  ASSERT_FALSE(recent.isEmpty());
+  EXPECT_EQ(recent.first().toStdString(), scenes().video());
+}
+
+}  // namespace
+}  // namespace armmimic::test
