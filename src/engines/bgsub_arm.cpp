@@ -192,7 +192,8 @@ static bool RayFitArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point2
   const double fo = RayFit(mask, e, 0.25 * fore_len_px, 0.8 * fore_len_px, up + 180, 25);
   // A bend the 30 % rule missed must be clear: near the rest pose the visible part of a straight
   // arm is a sliver whose ray is off the arm's axis.
-  const double min_bend = rule_bent ? (was_bent ? 8.0 : 12.0) : 22.0;
+  const bool near_rest = std::fabs(AngleDiff(up, options.rest_deg)) < 25;
+  const double min_bend = rule_bent || !near_rest ? (was_bent ? 8.0 : 12.0) : 22.0;
   if (!std::isfinite(fo) || std::fabs(AngleDiff(fo, up)) < min_bend) {
     g->bent = false;
     g->note = "straight arm (ray fit)";

@@ -74,6 +74,7 @@ class BgsubEngine final : public Engine {
           cv::Point2d(context.shoulder_px->x - region_.x, context.shoulder_px->y - region_.y);
     }
     standstill_sum_ = cv::Mat::zeros(region_.size(), CV_32FC1);
+    standstill_bgr_sum_ = cv::Mat::zeros(region_.size(), CV_32FC3);
     standstill_count_ = 0;
     was_bent_ = false;
     begun_ = true;
@@ -95,6 +96,9 @@ class BgsubEngine final : public Engine {
     // The standstill (5.2.2): the mean of the first standstill_frames frames; no rows.
     if (standstill_count_ < options_.standstill_frames) {
       cv::accumulate(gray_, standstill_sum_);
+      if (!options_.thesis_mode && options_.color_difference) {
+        cv::accumulate(frame.image(region_), standstill_bgr_sum_);
+      }
       ++standstill_count_;
       m.phase = MeasurementPhase::kSetup;
       m.note = "standstill " + std::to_string(standstill_count_) + "/" +
@@ -118,6 +122,9 @@ class BgsubEngine final : public Engine {
  private:
   void FinishStandstill() {
     standstill_sum_.convertTo(scene_.standstill, CV_8UC1, 1.0 / standstill_count_);
+    if (!options_.thesis_mode && options_.color_difference) {
+      standstill_bgr_sum_.convertTo(scene_.standstill_bgr, CV_8UC3, 1.0 / standstill_count_);
+    }
     bgsub::BuildScene(arm_length_gray_, arm_length_bgr_, options_, &buffers_, &scene_);
   }
 
@@ -251,6 +258,7 @@ class BgsubEngine final : public Engine {
   cv::Mat arm_length_gray_;
   cv::Mat arm_length_bgr_;
   cv::Mat standstill_sum_;
+  cv::Mat standstill_bgr_sum_;
   int standstill_count_ = 0;
   bool was_bent_ = false;
   cv::Mat gray_;

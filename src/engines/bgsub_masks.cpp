@@ -58,6 +58,27 @@ void DifferenceMask(const cv::Mat& image, const cv::Mat& reference, int offset, 
   }
 }
 
+void ColorDifferenceMask(const cv::Mat& image, const cv::Mat& reference, int offset, int threshold,
+                         cv::Mat* mask) {
+  CV_Assert(image.type() == CV_8UC3 && reference.type() == CV_8UC3 &&
+            image.size() == reference.size());
+  mask->create(image.size(), CV_8UC1);
+  for (int y = 0; y < image.rows; ++y) {
+    const uchar* a = image.ptr<uchar>(y);
+    const uchar* b = reference.ptr<uchar>(y);
+    uchar* m = mask->ptr<uchar>(y);
+    for (int x = 0; x < image.cols; ++x) {
+      int worst = 0;
+      for (int c = 0; c < 3; ++c) {
+        const int d =
+            std::abs(static_cast<int>(a[3 * x + c]) - static_cast<int>(b[3 * x + c]) - offset);
+        worst = std::max(worst, d);
+      }
+      m[x] = worst > threshold ? 255 : 0;
+    }
+  }
+}
+
 void RemoveShadow(const cv::Mat& bgr, const cv::Mat& background_bgr, cv::Mat* mask) {
   CV_Assert(bgr.type() == CV_8UC3 && background_bgr.type() == CV_8UC3 &&
             bgr.size() == background_bgr.size() && mask->size() == bgr.size());

@@ -27,6 +27,11 @@ void DifferenceMask(const cv::Mat& image, const cv::Mat& reference, int offset, 
 // darker by a similar ratio in [0.45, 0.97] (the hue kept, the brightness lowered).
 void RemoveShadow(const cv::Mat& bgr, const cv::Mat& background_bgr, cv::Mat* mask);
 
+// The colour form: 255 where any channel of |image - reference - offset| exceeds threshold
+// (CV_8UC3 inputs). Sees an arm whose grey level matches what is behind it but whose hue does not.
+void ColorDifferenceMask(const cv::Mat& image, const cv::Mat& reference, int offset, int threshold,
+                         cv::Mat* mask);
+
 // Keeps in *out (CV_8UC1, same size as labels, 0/255) only the pixels of component `c`.
 void ComponentMask(const cv::Mat& labels, const Component& c, cv::Mat* out);
 

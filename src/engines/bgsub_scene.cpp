@@ -65,8 +65,14 @@ bool FindArmMask(const cv::Mat& gray, const cv::Mat& bgr, const SceneModel& scen
     off_bg = BrightnessDrift(gray, scene.background, exclude);
     off_still = BrightnessDrift(gray, scene.standstill, exclude);
   }
-  DifferenceMask(gray, scene.background, off_bg, options.threshold, &buf->person);
-  DifferenceMask(gray, scene.standstill, off_still, options.threshold, &buf->moved);
+  if (improved && options.color_difference && !bgr.empty() && !scene.background_bgr.empty() &&
+      !scene.standstill_bgr.empty()) {
+    ColorDifferenceMask(bgr, scene.background_bgr, off_bg, options.threshold, &buf->person);
+    ColorDifferenceMask(bgr, scene.standstill_bgr, off_still, options.threshold, &buf->moved);
+  } else {
+    DifferenceMask(gray, scene.background, off_bg, options.threshold, &buf->person);
+    DifferenceMask(gray, scene.standstill, off_still, options.threshold, &buf->moved);
+  }
   cv::bitwise_and(buf->person, buf->moved, buf->candidate);
   if (improved && options.reject_shadow && !bgr.empty() && !scene.background_bgr.empty()) {
     RemoveShadow(bgr, scene.background_bgr, &buf->candidate);

@@ -23,11 +23,12 @@ struct Buffers {
 };
 
 struct SceneModel {
-  cv::Mat background_bgr;                     // CV_8UC3, the analysed region (shadow test)
-  cv::Mat background;                         // CV_8UC1, the analysed region
-  cv::Mat standstill;                         // CV_8UC1, mean of the standstill frames
-  std::optional<cv::Rect> body_box;           // box of mask2 (the standing body)
-  int side = 0;                               // moving arm on screen right +1, left -1, unknown 0
+  cv::Mat background_bgr;            // CV_8UC3, the analysed region (shadow test)
+  cv::Mat background;                // CV_8UC1, the analysed region
+  cv::Mat standstill_bgr;            // CV_8UC3, mean of the standstill frames (colour differencing)
+  cv::Mat standstill;                // CV_8UC1, mean of the standstill frames
+  std::optional<cv::Rect> body_box;  // box of mask2 (the standing body)
+  int side = 0;                      // moving arm on screen right +1, left -1, unknown 0
   std::optional<cv::Point2d> fixed_shoulder;  // EngineContext::shoulder_px, region coordinates
   std::optional<cv::Point2d> arm_shoulder;    // improved: where the horizontal arm meets the body
   double head_cx = kNaN;                      // x of the top of the standstill body (the head)

@@ -20,6 +20,7 @@ struct BgsubOptions {
 
   // --- Improvements (section 5.3 failures), used only when thesis_mode is false ---
   bool compensate_drift = true;   // subtract the global brightness drift before thresholding
+  bool color_difference = true;   // threshold the largest channel difference, not the grey one
   bool reject_shadow = true;      // drop pixels that are the background darkened, hue kept
   bool reject_head = true;        // ignore movement above the shoulders between them
   double near_shoulder = 0.5;     // keep the blob nearest the shoulder, within this * arm length

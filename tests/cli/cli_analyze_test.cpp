@@ -1,0 +1,156 @@
+// armmimic-cli background / analyze: exit codes, messages that name the file or flag, and an
+// end-to-end run through a real MJPG encode scored against the scene's truth.
+#include <gtest/gtest.h>
+
+#include "armmimic/core/angle_file.h"
+#include "armmimic/synth/arm_scene.h"
+#include "armmimic/synth/score.h"
+#include "armmimic/synth/truth_file.h"
+#include "test_util.h"
+
+namespace armmimic {
+namespace {
+
+bool Contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// One short MJPG scene shared by the tests of this file (written once).
+const std::string& SceneDir() {
+  static test::TempDir* dir = [] {
+    auto* d = new test::TempDir();
+    synth::ArmSceneOptions so;
+    so.seed = 7;
+    so.motion = synth::ArmMotion::kSwing;
+    so.motion_frames = 90;
+    so.noise_sigma = 3;
+    so.codec = "MJPG";
+    const Status st = synth::WriteArmScene(so, d->path(), {});
+    if (!st.ok()) ADD_FAILURE() << st.message();
+    return d;
+  }();
+  return dir->path();
+}
+
+TEST(CliAnalyze, MjpgSceneMeetsTheAccuracyTarget) {
+  const std::string dir = SceneDir();
+  const std::string out = dir + "/angles.tsv";
+  const test::CliResult r = test::RunCli({"analyze", dir + "/scene.avi", "-o", out, "--engine",
+                                          "bgsub", "--background-frames", "45", "--arm-length",
+                                          dir + "/armlength.png", "--start", "45"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(Contains(r.err, "analyze: 90 rows (")) << r.err;
+  EXPECT_TRUE(Contains(r.err, "-> " + out)) << r.err;
+  AngleFile angles;
+  ASSERT_TRUE(ReadAngleFile(out, &angles).ok());
+  EXPECT_EQ(angles.Meta("engine"), "bgsub");
+  EXPECT_EQ(angles.Meta("source"), "scene.avi");
+  EXPECT_EQ(angles.Meta("start"), "45");
+  EXPECT_EQ(angles.Meta("threshold"), "45");
+  EXPECT_EQ(angles.Meta("width"), "320");
+  EXPECT_TRUE(angles.complete);
+  ASSERT_EQ(angles.rows.size(), 90u);
+  EXPECT_EQ(angles.rows.front().frame, 45 + 60);  // frame indices are those of the file
+  synth::TruthFile truth;
+  ASSERT_TRUE(synth::ReadTruthFile(dir + "/truth.tsv", &truth).ok());
+  const synth::ScoreReport report = synth::ScoreAngles(truth, angles);
+  EXPECT_GE(report.summary.coverage, 0.98);
+  EXPECT_LE(report.summary.overall.mae, 3.0) << synth::FormatScoreSummary(report);
+}
+
+TEST(CliAnalyze, BackgroundCommandWritesTheMeanImage) {
+  const std::string dir = SceneDir();
+  const std::string bg = dir + "/bg_cli.png";
+  const test::CliResult r = test::RunCli({"-q", "background", dir + "/scene.avi", "-o", bg});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(test::ReadFile(bg).empty());
+  const test::CliResult with_bg =
+      test::RunCli({"-q", "analyze", dir + "/scene.avi", "-o", dir + "/a2.tsv", "--engine", "bgsub",
+                    "--background", bg, "--arm-length", dir + "/armlength.png", "--start", "45"});
+  EXPECT_EQ(with_bg.exit_code, 0) << with_bg.err;
+  EXPECT_TRUE(with_bg.err.empty()) << "-q must silence the summary: " << with_bg.err;
+}
+
+TEST(CliAnalyze, MissingVideoIsARuntimeErrorNamingIt) {
+  const std::string dir = SceneDir();
+  const test::CliResult r =
+      test::RunCli({"analyze", "/nonexistent/clip.avi", "-o", dir + "/x.tsv", "--engine", "bgsub",
+                    "--background-frames", "45", "--arm-length", dir + "/armlength.png"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_TRUE(Contains(r.err, "/nonexistent/clip.avi")) << r.err;
+  const test::CliResult b =
+      test::RunCli({"background", "/nonexistent/clip.avi", "-o", dir + "/bg.png"});
+  EXPECT_EQ(b.exit_code, 1);
+  EXPECT_TRUE(Contains(b.err, "/nonexistent/clip.avi")) << b.err;
+}
+
+TEST(CliAnalyze, UsageErrorsNameTheFlag) {
+  const std::string dir = SceneDir();
+  const std::string video = dir + "/scene.avi";
+  const std::string arm = dir + "/armlength.png";
+  struct Case {
+    std::vector<std::string> args;
+    std::string expect;
+  };
+  const std::vector<Case> cases = {
+      {{"analyze", video, "-o", "a.tsv", "--engine", "bgsub", "--background-frames", "45"},
+       "--arm-length"},
+      {{"analyze", video, "-o", "a.tsv", "--engine", "bgsub", "--arm-length", arm},
+       "--background-frames"},
+      {{"analyze", video, "-o", "a.tsv", "--engine", "bgsub", "--arm-length", arm,
+        "--background-frames", "45", "--threshold", "999"},
+       "--threshold"},
+      {{"analyze", video, "-o", "a.tsv", "--engine", "bgsub", "--arm-length", arm,
+        "--background-frames", "45", "--bogus"},
+       "--bogus"},
+      {{"analyze", video, "-o", "a.tsv", "--engine", "bgsub", "--arm-length", arm,
+        "--background-frames", "45", "--reference", arm},
+       "--reference"},
+      {{"analyze", video, "-o", "a.tsv", "--engine", "lk"}, "--shoulder"},
+      {{"analyze", video, "-o", "a.tsv", "--engine", "marker"}, "--reference"},
+      {{"analyze", video, "-o", "a.tsv", "--engine", "nope"}, "--engine"},
+      {{"analyze", video, "-o", "a.tsv", "--engine", "bgsub", "--arm-length", arm,
+        "--background-frames", "45", "--roi", "1,2,3"},
+       "--roi"},
+      {{"background", video}, "-o"},
+      {{"background", video, "-o", dir + "/bg.png", "--frames", "0"}, "--frames"},
+  };
+  for (const Case& c : cases) {
+    const test::CliResult r = test::RunCli(c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.expect << ": " << r.err;
+    EXPECT_TRUE(Contains(r.err, c.expect)) << c.expect << ": " << r.err;
+  }
+}
+
+TEST(CliAnalyze, RuntimeErrorsNameTheFile) {
+  const std::string dir = SceneDir();
+  const std::string video = dir + "/scene.avi";
+  test::WriteFile(dir + "/small.pgm", "P5\n4 4\n255\n" + std::string(16, '\x80'));
+  const test::CliResult size =
+      test::RunCli({"analyze", video, "-o", dir + "/x.tsv", "--engine", "bgsub",
+                    "--background-frames", "45", "--arm-length", dir + "/small.pgm"});
+  EXPECT_EQ(size.exit_code, 1);
+  EXPECT_TRUE(Contains(size.err, "small.pgm")) << size.err;
+  EXPECT_TRUE(Contains(size.err, "scene.avi")) << size.err;
+  const test::CliResult past = test::RunCli({"analyze", video, "-o", dir + "/x.tsv", "--engine",
+                                             "bgsub", "--background-frames", "45", "--arm-length",
+                                             dir + "/armlength.png", "--start", "100000"});
+  EXPECT_EQ(past.exit_code, 1);
+  EXPECT_TRUE(Contains(past.err, "--start")) << past.err;
+  const test::CliResult outdir = test::RunCli(
+      {"analyze", video, "-o", "/nonexistent-dir/a.tsv", "--engine", "bgsub", "--background-frames",
+       "45", "--arm-length", dir + "/armlength.png", "--start", "45"});
+  EXPECT_EQ(outdir.exit_code, 1);
+  EXPECT_TRUE(Contains(outdir.err, "/nonexistent-dir")) << outdir.err;
+}
+
+TEST(CliAnalyze, HelpWorks) {
+  for (const char* cmd : {"analyze", "background"}) {
+    const test::CliResult r = test::RunCli({cmd, "--help"});
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_TRUE(Contains(r.out, "Usage:")) << cmd;
+  }
+}
+
+}  // namespace
+}  // namespace armmimic
