@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
@@ -34,6 +35,8 @@ class CameraSource : public VideoSource {
         }
         opened = cap_.open(std::stoi(num), cv::CAP_ANY);
       } else {
+        // As for files: our message names the stream; FFmpeg's own log stays quiet.
+        if (!std::getenv("OPENCV_FFMPEG_DEBUG")) setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);
         opened = cap_.open(spec, cv::CAP_FFMPEG,
                            {cv::CAP_PROP_OPEN_TIMEOUT_MSEC, kOpenTimeoutMs,
                             cv::CAP_PROP_READ_TIMEOUT_MSEC, kReadTimeoutMs});
