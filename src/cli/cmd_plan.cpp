@@ -235,7 +235,7 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   const std::vector<std::string> header = {
       "source=" + HeaderValue(input[0]) + " engine=" + HeaderValue(angles.Meta("engine", "?")) +
           " rows=" + std::to_string(report.rows) + " fps=" + Num(report.sample_rate_hz, 3),
-      "mapping=" + o.mapping.Describe(),
+      "mapping=" + report.mapping,
       "filter cutoff_hz=" + Num(o.cutoff_hz, 3) +
           " gap=" + (o.gap == robot::GapMode::kHold ? "hold" : "interpolate") +
           " max_gap_s=" + Num(o.max_gap_s, 3) + " max_jump_deg_s=" + Num(o.max_jump_deg_s, 1),

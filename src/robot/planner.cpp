@@ -149,14 +149,33 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
   const int n = static_cast<int>(rows.size());
   report.rows = n;
   if (n == 0) return Status::Error("the angle file has no rows");
-  const bool marker = options.mapping.kind == SourceKind::kMarker;
-  if (DetectSourceKind(angles) != options.mapping.kind) {
-    return Status::Error(std::string("the angle file comes from the ") +
-                         (marker ? "arm engines" : "marker engine") +
-                         " but the mapping is for the " + SourceKindName(options.mapping.kind) +
-                         (marker ? " engine" : " engines") +
-                         " (start from MappingOptions::Default(DetectSourceKind(file)))");
+  // A mapping left at its kind's defaults follows the file's engine kind (so plain defaults
+  // plan marker and arm files alike); a customised mapping for the other kind is refused.
+  MappingOptions mapping = options.mapping;
+  const SourceKind file_kind = DetectSourceKind(angles);
+  if (file_kind != mapping.kind) {
+    const MappingOptions d = MappingOptions::Default(mapping.kind);
+    const bool untouched =
+        mapping.j1.sign == d.j1.sign && mapping.j1.offset_deg == d.j1.offset_deg &&
+        mapping.j2.sign == d.j2.sign && mapping.j2.offset_deg == d.j2.offset_deg &&
+        mapping.j3.sign == d.j3.sign && mapping.j3.offset_deg == d.j3.offset_deg &&
+        mapping.j2_elevation && mapping.j3_flexion;
+    if (!untouched) {
+      return Status::Error(std::string("the angle file comes from the ") +
+                           (file_kind == SourceKind::kMarker ? "marker engine" : "arm engines") +
+                           " but the mapping was set up for the " + SourceKindName(mapping.kind) +
+                           (mapping.kind == SourceKind::kMarker ? " engine" : " engines"));
+    }
+    MappingOptions adapted = MappingOptions::Default(file_kind);
+    adapted.mirror = mapping.mirror;
+    adapted.hold_deg = mapping.hold_deg;
+    mapping = adapted;
+    Warn(&report, rows.empty() ? 0 : rows[0].frame,
+         std::string("default ") + SourceKindName(file_kind) + " mapping used for this " +
+             SourceKindName(file_kind) + " file: " + mapping.Describe());
   }
+  const bool marker = mapping.kind == SourceKind::kMarker;
+  report.mapping = mapping.Describe();
 
   // Times: the file's, or frame counts at fallback_fps when they do not increase.
   std::vector<double> t(n);
@@ -293,7 +312,7 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
   std::vector<std::vector<double>> series(kJoints, std::vector<double>(m));
   for (int i = first; i <= last; ++i) {
     if (!std::isnan(yaw[i])) held_yaw = yaw[i];
-    const JointArray q = options.mapping.Map(upper[i], bend[i], held_yaw);
+    const JointArray q = mapping.Map(upper[i], bend[i], held_yaw);
     for (int j = 0; j < kJoints; ++j) series[j][i - first] = q[j];
   }
 

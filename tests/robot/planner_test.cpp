@@ -1,8 +1,10 @@
 #include "armmimic/robot/planner.h"
+#include "armmimic/robot/val_program.h"
 
 #include <cmath>
 #include <functional>
 #include <random>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -358,6 +360,66 @@ TEST(Planner, HoldsYawWhileTheArmIsBentAndMapsMarkerFiles) {
   EXPECT_NEAR(tr.keyframes.back().joint_deg[1], -90 - 39, 1e-9);
   EXPECT_NEAR(tr.keyframes.back().joint_deg[2], 0, 1e-9);
   EXPECT_NEAR(tr.keyframes.back().joint_deg[0], 10, 1e-9);
+}
+
+TEST(Planner, DefaultOptionsFollowTheFilesKindButACustomMappingMustMatch) {
+  AngleFile marker = MakeFile(30, [](int i, double) {
+    Pose p;
+    p.bend = i;
+    p.yaw = 5;
+    return p;
+  });
+  for (auto& r : marker.rows) r.upper_deg = kNaN;
+  marker.meta = {{"engine", "marker"}};
+  PlannerOptions o;  // arm defaults, as send uses them
+  o.cutoff_hz = 0;
+  Trajectory tr;
+  PlanReport rep;
+  ASSERT_TRUE(PlanTrajectory(marker, o, &tr, &rep).ok());
+  EXPECT_EQ(rep.mapping.rfind("marker j1=+yaw+0.00 j2=-bend-90.00", 0), 0u) << rep.mapping;
+  EXPECT_NEAR(tr.keyframes.back().joint_deg[1], -90 - 29, 1e-9);
+  o.mapping.j2 = {1, -100};
+  const Status s = PlanTrajectory(marker, o, &tr, &rep);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("comes from the marker engine"), std::string::npos) << s.message();
+}
+
+TEST(Planner, EveryPlannedProgramPassesSendsSafetyCheck) {
+  // Fast, noisy, lossy motion on the left side: the planned text must pass the same check send
+  // runs before each line, in both modes and with clamping.
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0, 1.5);
+  std::vector<double> n(400);
+  for (double& v : n) v = noise(rng);
+  auto f = [&](int i, double t) {
+    Pose p;
+    p.upper = -90 - 170 * std::abs(std::sin(2 * kPi * 0.3 * t)) + n[i];
+    p.bend = -140 * std::abs(std::sin(2 * kPi * 0.45 * t)) + n[(i + 7) % 400];
+    p.yaw = std::abs(40 * std::sin(2 * kPi * 0.2 * t));
+    p.lost = i % 37 == 5;
+    return p;
+  };
+  for (SendMode mode : {SendMode::kStream, SendMode::kProgram}) {
+    PlannerOptions o = Options();
+    o.limits.max_speed_deg_s = {20, 30, 40, 90, 90, 90};
+    o.limits.min_deg[2] = -120;  // tighter than the elbow's range: clamped
+    o.clamp = true;
+    Trajectory tr;
+    PlanReport rep;
+    ASSERT_TRUE(PlanTrajectory(MakeFile(400, f), o, &tr, &rep).ok());
+    EXPECT_GT(rep.stretch_s, 0);
+    EXPECT_GT(rep.clamped_rows, 0);
+    ControllerProfile profile;
+    profile.mode = mode;
+    std::string text;
+    ASSERT_TRUE(FormatValProgram(tr, profile, o.limits, {"source=x.tsv"}, &text).ok());
+    std::istringstream in(text);
+    ValProgram program;
+    ASSERT_TRUE(ParseValProgram(in, "x.val", 80, &program).ok());
+    SafetyState state = SafetyState::For(o.limits, profile);
+    const Status s = CheckProgram(program, state);
+    EXPECT_TRUE(s.ok()) << s.message();
+  }
 }
 
 TEST(Planner, OptionsCheckNamesTheBadOption) {

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <clocale>
+#include <locale>
 #include <sstream>
 
 #include <gtest/gtest.h>
 
+#include "armmimic/robot/mapping.h"
 #include "test_util.h"
 
 namespace armmimic::robot {
@@ -126,6 +128,35 @@ TEST(ValProgram, NumbersUseDotDecimalsUnderACommaLocale) {
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(p.lines[2].text, "DO MOVE #PPOINT(10.00,-100.50,-20.00,0.00,0.00,0.00)");
   EXPECT_DOUBLE_EQ(p.lines[2].time_s, 0.5);
+}
+
+// A global C++ locale with ',' decimals (as a GUI app may install) changes nothing either.
+struct CommaDecimals : std::numpunct<char> {
+  char do_decimal_point() const override { return ','; }
+  char do_thousands_sep() const override { return '.'; }
+  std::string do_grouping() const override { return "\3"; }
+};
+
+TEST(ValProgram, NumbersIgnoreAGlobalCommaLocale) {
+  const std::locale saved =
+      std::locale::global(std::locale(std::locale::classic(), new CommaDecimals));
+  std::string text;
+  const Status s = FormatValProgram(Sample(), ControllerProfile(), JointLimits(), {}, &text);
+  ValProgram p;
+  const Status r = Parse(text, &p);
+  ControllerProfile profile;
+  std::istringstream in("prompt_timeout_s = 2.5\n");
+  const Status q = ParseProfile(in, "x.profile", &profile);
+  JointMap jm;
+  const std::string m = ParseJointMap("-1,-12.5", &jm);
+  std::locale::global(saved);
+  ASSERT_TRUE(s.ok());
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(p.lines[2].text, "DO MOVE #PPOINT(10.00,-100.50,-20.00,0.00,0.00,0.00)");
+  ASSERT_TRUE(q.ok()) << q.message();
+  EXPECT_EQ(profile.prompt_timeout_s, 2.5);
+  EXPECT_EQ(m, "");
+  EXPECT_EQ(jm.offset_deg, -12.5);
 }
 
 TEST(ValProgram, RefusesToWriteLinesOverTheProfilesLimitOrTargetsOutsideLimits) {

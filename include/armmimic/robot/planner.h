@@ -64,9 +64,12 @@ struct PlanReport {
   double sample_rate_hz = 0;
   JointArray min_deg{};  // range of the keyframes, per joint
   JointArray max_deg{};
+  std::string mapping;              // the mapping used (MappingOptions::Describe())
   std::vector<PlanIssue> warnings;  // flagged jumps, filled gaps, clamps (first few of each)
 };
 
+// A mapping left at the defaults of its kind follows the file's kind (DetectSourceKind), keeping
+// mirror and holds; a changed mapping for the other kind is refused.
 Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Trajectory* out,
                       PlanReport* report);
 
