@@ -59,7 +59,9 @@ int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& globa
   p.Int("--frames", &o.motion_frames, "N", "frames of arm motion (default 150)", 1, 100000);
   p.Double("--noise", &o.noise_sigma, "S", "Gaussian sensor noise sigma, grey levels (default 3)");
   p.String("--codec", &codec, "CODEC", "MJPG (default), XVID or H264 (if an encoder is present)");
-  p.Int("--quality", &o.jpeg_quality, "Q", "MJPG quality 1..100 (default 90)", 1, 100);
+  p.Int("--quality", &o.jpeg_quality, "Q",
+        "MJPG quality 1..100 with OpenCV's encoder (default 0: FFmpeg's encoder and quality)", 0,
+        100);
   p.Double(
       "--contrast", &o.clothing_contrast, "C",
       "clothing contrast 0..2: 1 a dark shirt on a light wall, 0 the wall's colour (default 1)");

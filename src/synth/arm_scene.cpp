@@ -107,8 +107,8 @@ Status ArmSceneOptions::Check() const {
   if (codec != "MJPG" && codec != "XVID" && codec != "H264") {
     return err("codec '" + codec + "' is not one of MJPG, XVID, H264");
   }
-  if (jpeg_quality < 1 || jpeg_quality > 100) {
-    return err("quality " + std::to_string(jpeg_quality) + " is out of range 1..100");
+  if (jpeg_quality < 0 || jpeg_quality > 100) {
+    return err("quality " + std::to_string(jpeg_quality) + " is out of range 0..100");
   }
   if (!(clothing_contrast >= 0 && clothing_contrast <= 2)) {
     return err("clothing contrast " + std::to_string(clothing_contrast) + " is out of range 0..2");

@@ -49,18 +49,26 @@ Status WriteArmScene(const ArmSceneOptions& options, const std::string& outdir,
   {
     const std::string& c = options.codec;
     int api = cv::CAP_FFMPEG;
-    std::vector<int> params;
-    if (c == "MJPG") {
-      // OpenCV's own MJPEG writer: always present and honours the quality setting.
+    if (c == "MJPG" && options.jpeg_quality > 0) {
+      // An explicit quality needs OpenCV's own MJPEG writer, which honours it (FFmpeg's does
+      // not; it gives about half the size at the same fidelity, so it is the default).
       api = cv::CAP_OPENCV_MJPEG;
-      params = {cv::VIDEOWRITER_PROP_QUALITY, options.jpeg_quality};
     }
     const int fourcc = cv::VideoWriter::fourcc(c[0], c[1], c[2], c[3]);
     cv::VideoWriter writer;
-    try {
-      writer.open(temp_path, api, fourcc, options.fps, options.size, params);
-    } catch (const cv::Exception&) {
-      writer.release();
+    auto open = [&](int backend) {
+      try {
+        writer.open(temp_path, backend, fourcc, options.fps, options.size);
+      } catch (const cv::Exception&) {
+        writer.release();
+      }
+    };
+    open(api);
+    if (!writer.isOpened() && c == "MJPG" && api != cv::CAP_OPENCV_MJPEG) {
+      open(cv::CAP_OPENCV_MJPEG);  // always built in
+    }
+    if (writer.isOpened() && c == "MJPG" && options.jpeg_quality > 0) {
+      writer.set(cv::VIDEOWRITER_PROP_QUALITY, options.jpeg_quality);
     }
     if (!writer.isOpened()) {
       return Status::Error(video_path + ": codec " + c +

@@ -41,7 +41,9 @@ struct ArmSceneOptions {
   int motion_frames = 150;     // frames of arm motion after the standstill
   double noise_sigma = 3;      // Gaussian sensor noise, grey levels
   std::string codec = "MJPG";  // for WriteArmScene: MJPG, XVID or H264
-  int jpeg_quality = 90;       // MJPG quality, 1..100 (where the backend honours it)
+  // MJPG quality 1..100 with OpenCV's own encoder; 0 = FFmpeg's MJPEG encoder at its default
+  // quality (about half the size at the same fidelity).
+  int jpeg_quality = 0;
   // 1 = shirt far from the background colour; 0 = shirt the colour of the wall behind it.
   double clothing_contrast = 1.0;
   // Global gain change over the video: the gain ramps linearly from 1 to 1 + lighting_drift.
