@@ -457,16 +457,20 @@ int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
     const Status s = journal.Open(journal_path, hash, static_cast<int>(total), input, append);
     if (!s.ok()) return Fail(s.message());
   }
+  // A journal that cannot be written stops the stream: resume would not be safe without it.
   std::string journal_error;
   link.protocol().SetSentCallback([&](const robot::LinkLine& l) {
     const Status s = journal.Sent(l.index + 1, l.line_no);
-    if (!s.ok() && journal_error.empty()) journal_error = s.message();
+    if (!s.ok() && journal_error.empty()) {
+      journal_error = s.message();
+      link.protocol().Abort(s.message());
+    }
   });
   link.protocol().SetAckCallback([&](const robot::LinkLine& l, const std::vector<std::string>&) {
     const Status s = journal.Acked(l.index + 1, l.line_no);
     if (!s.ok() && journal_error.empty()) {
       journal_error = s.message();
-      QTimer::singleShot(0, &link, [&] { link.Cancel(journal_error); });
+      link.protocol().Abort(s.message());
     }
   });
 

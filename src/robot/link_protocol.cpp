@@ -382,6 +382,7 @@ void LinkProtocol::OnPrompt(double now_s) {
   written_ = false;
   ++next_;
   if (on_ack_) on_ack_(line, last_replies_);
+  if (finished()) return;  // the callback stopped the stream
   SendNext(now_s);
 }
 
@@ -399,6 +400,7 @@ void LinkProtocol::SendNext(double now_s) {
     }
   }
   if (on_sent_) on_sent_(line);
+  if (finished()) return;  // the callback stopped the stream: nothing is written
   out_ += line.text + settings_.terminator;
   written_ = true;
   echo_seen_ = false;

@@ -226,6 +226,28 @@ TEST(LinkProtocol, AbortStopsAndKeepsTheLineInFlight) {
   ASSERT_NE(f.link.in_flight(), nullptr);
 }
 
+TEST(LinkProtocol, ACallbackThatAbortsStopsBeforeTheNextWrite) {
+  LinkProtocol link;
+  link.SetAckCallback([&](const LinkLine& l, const std::vector<std::string>&) {
+    if (l.line_no == 5) link.Abort("journal full");
+  });
+  link.Start(Lines({"SPEED 50", "SPEED 60"}), "prog.val", 0);
+  link.TakeOutput();
+  link.OnBytes("\r\n.", 0.1);
+  EXPECT_EQ(link.TakeOutput(), "SPEED 50\r");
+  link.OnBytes("SPEED 50\r\n.", 0.2);
+  EXPECT_EQ(link.TakeOutput(), "");
+  EXPECT_EQ(link.error(), LinkError::kAborted);
+
+  LinkProtocol refuse;
+  refuse.SetSentCallback([&](const LinkLine&) { refuse.Abort("cannot write the journal"); });
+  refuse.Start(Lines({"SPEED 50"}), "prog.val", 0);
+  refuse.TakeOutput();
+  refuse.OnBytes("\r\n.", 0.1);
+  EXPECT_EQ(refuse.TakeOutput(), "");
+  EXPECT_EQ(refuse.error_message(), "cannot write the journal");
+}
+
 TEST(LinkHelpers, ParsesTargetsAndKnowsMotionLines) {
   JointArray j{};
   ASSERT_TRUE(ParsePpointTarget("DO MOVE #PPOINT(1.5, -90, 0,0,0, 2)", &j));

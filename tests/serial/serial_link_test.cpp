@@ -1,0 +1,138 @@
+// SerialLink in-process, the way the GUI uses it: a Qt event loop, signals, the emulator's pty.
+#include "armmimic/serial/serial_link.h"
+
+#include <QCoreApplication>
+#include <QEventLoop>
+#include <QTimer>
+
+#include <gtest/gtest.h>
+
+#include "armmimic/sim/pty_server.h"
+#include "test_util.h"
+
+namespace armmimic::serial {
+namespace {
+
+QCoreApplication* App() {
+  static int argc = 1;
+  static char name[] = "serial_tests";
+  static char* argv[] = {name, nullptr};
+  static QCoreApplication* app = QCoreApplication::instance() ? QCoreApplication::instance()
+                                                              : new QCoreApplication(argc, argv);
+  return app;
+}
+
+// Runs the event loop until `link` finishes or 20 s pass. Returns finished()'s value.
+bool RunUntilFinished(SerialLink& link, std::vector<int>* progress) {
+  QEventLoop loop;
+  bool ok = false;
+  QObject::connect(&link, &SerialLink::finished, &loop, [&](bool result) {
+    ok = result;
+    loop.quit();
+  });
+  QObject::connect(&link, &SerialLink::progress, &loop,
+                   [&](int done, int) { progress->push_back(done); });
+  QTimer::singleShot(20000, &loop, [&] { loop.quit(); });
+  loop.exec();
+  return ok;
+}
+
+std::vector<robot::LinkLine> Moves(int count) {
+  std::vector<robot::LinkLine> lines = {{"SPEED 60", 1, 0, 5}};
+  for (int i = 1; i <= count; ++i) {
+    lines.push_back(
+        {"DO MOVE #PPOINT(" + std::to_string(i) + ",-90,0,0,0," + std::to_string(-i) + ")", i + 1,
+         i, 5});
+  }
+  return lines;
+}
+
+TEST(SerialLink, StreamsToTheEmulatorAndReportsProgress) {
+  App();
+  sim::EmulatorOptions o;
+  o.time_scale = 0.02;
+  sim::PtyServer server(o);
+  ASSERT_TRUE(server.Start().ok());
+  SerialLink link(robot::LinkSettings{});
+  PortSettings port;
+  port.port = server.device_path();
+  port.baud = 19200;
+  port.stop_bits = 2;
+  port.flow = FlowControl::kXonXoff;
+  {
+    const Status s = link.Open(port);
+    ASSERT_TRUE(s.ok()) << s.message();
+  }
+  std::vector<int> acked_lines;
+  link.protocol().SetAckCallback([&](const robot::LinkLine& l, const std::vector<std::string>&) {
+    acked_lines.push_back(l.line_no);
+  });
+  std::vector<int> progress;
+  link.Start(Moves(5), "moves.val");
+  EXPECT_TRUE(RunUntilFinished(link, &progress)) << link.protocol().error_message();
+  EXPECT_EQ(progress, (std::vector<int>{1, 2, 3, 4, 5, 6}));
+  EXPECT_EQ(acked_lines, (std::vector<int>{1, 2, 3, 4, 5, 6}));
+  EXPECT_EQ(server.joints(), (robot::JointArray{5, -90, 0, 0, 0, -5}));
+  EXPECT_EQ(server.log().size(), 5u);
+}
+
+TEST(SerialLink, ASettingThePortRefusesIsNamed) {
+  App();
+  sim::PtyServer server;
+  ASSERT_TRUE(server.Start().ok());
+  SerialLink link(robot::LinkSettings{});
+  PortSettings port;
+  port.port = server.device_path();
+  port.parity = 'E';  // a pseudo-terminal has no parity bit
+  const Status s = link.Open(port);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("--parity"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find(server.device_path()), std::string::npos) << s.message();
+  EXPECT_FALSE(link.is_open());
+}
+
+TEST(SerialLink, CancelStopsTheStreamAndNothingMoreIsWritten) {
+  App();
+  sim::EmulatorOptions o;
+  o.time_scale = 1;
+  sim::PtyServer server(o);
+  ASSERT_TRUE(server.Start().ok());
+  SerialLink link(robot::LinkSettings{});
+  PortSettings port;
+  port.port = server.device_path();
+  {
+    const Status s = link.Open(port);
+    ASSERT_TRUE(s.ok()) << s.message();
+  }
+  link.protocol().SetAckCallback([&](const robot::LinkLine& l, const std::vector<std::string>&) {
+    if (l.line_no == 2) link.Cancel("stopped by the operator");
+  });
+  std::vector<int> progress;
+  link.Start(Moves(10), "moves.val");
+  EXPECT_FALSE(RunUntilFinished(link, &progress));
+  EXPECT_EQ(link.protocol().error(), robot::LinkError::kAborted);
+  EXPECT_EQ(link.protocol().error_message(), "stopped by the operator");
+  link.Close();
+  EXPECT_EQ(server.log().size(), 1u);
+}
+
+TEST(SerialLink, SettingsAndFlagParsersNameTheFlag) {
+  PortSettings p;
+  EXPECT_NE(p.Check().message().find("--port"), std::string::npos);
+  p.port = "/dev/ttyS0";
+  p.data_bits = 9;
+  EXPECT_NE(p.Check().message().find("--data-bits"), std::string::npos);
+  FlowControl f;
+  EXPECT_EQ(ParseFlowControl("RTSCTS", &f), "");
+  EXPECT_EQ(f, FlowControl::kRtsCts);
+  EXPECT_EQ(ParseFlowControl("xonxoff", &f), "");
+  EXPECT_EQ(f, FlowControl::kXonXoff);
+  EXPECT_NE(ParseFlowControl("maybe", &f), "");
+  char parity = 'N';
+  EXPECT_EQ(ParseParity("odd", &parity), "");
+  EXPECT_EQ(parity, 'O');
+  EXPECT_NE(ParseParity("mark", &parity), "");
+}
+
+}  // namespace
+}  // namespace armmimic::serial
