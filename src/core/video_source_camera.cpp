@@ -33,7 +33,13 @@ class CameraSource : public VideoSource {
             !std::all_of(num.begin(), num.end(), [](unsigned char c) { return std::isdigit(c); })) {
           return Status::Error(spec + ": expected camera:N with N a camera number, e.g. camera:0");
         }
+#ifdef __linux__
+        // V4L2 directly: CAP_ANY would first try GStreamer, which probes USB devices, prints
+        // warnings and never frees what it found.
+        opened = cap_.open(std::stoi(num), cv::CAP_V4L2);
+#else
         opened = cap_.open(std::stoi(num), cv::CAP_ANY);
+#endif
       } else {
         // As for files: our message names the stream; FFmpeg's own log stays quiet.
         if (!std::getenv("OPENCV_FFMPEG_DEBUG")) setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);
