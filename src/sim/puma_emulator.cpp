@@ -217,7 +217,7 @@ void PumaEmulator::ExecuteLine(const std::string& raw, double now_s) {
       Prompt();
       return;
     }
-    const std::string err = Instruction(line, now_s, nullptr);
+    const std::string err = Instruction(line, now_s);
     if (!err.empty()) {
       Emit(err);
     } else {
@@ -267,7 +267,7 @@ void PumaEmulator::TopLevel(const std::string& line, double now_s) {
       monitor_speed_ = v;
     }
   } else if (cmd == "DO") {
-    const std::string err = Instruction(rest, now_s, &monitor_speed_);
+    const std::string err = Instruction(rest, now_s);
     if (!err.empty()) {
       Emit(err);
     } else if (motion_.active || delay_until_s_ > now_s) {
@@ -313,8 +313,7 @@ void PumaEmulator::TopLevel(const std::string& line, double now_s) {
   Prompt();
 }
 
-std::string PumaEmulator::Instruction(const std::string& text, double now_s,
-                                      double* monitor_speed) {
+std::string PumaEmulator::Instruction(const std::string& text, double now_s) {
   const bool execute = mode_ != Mode::kEdit;
   std::string word, rest;
   SplitWord(text, &word, &rest);
@@ -367,7 +366,6 @@ std::string PumaEmulator::Instruction(const std::string& text, double now_s,
       return "*Joint " + std::to_string(j + 1) + " out of range*";
     }
   }
-  (void)monitor_speed;
   return StartMotion(to, speed, source_, now_s);
 }
 
@@ -406,7 +404,7 @@ void PumaEmulator::StepProgram(double now_s) {
     }
     const std::string instr = program[run_pc_++];
     source_ = run_name_ + " step " + std::to_string(run_pc_) + ": " + instr;
-    const std::string err = Instruction(instr, now_s, nullptr);
+    const std::string err = Instruction(instr, now_s);
     if (!err.empty()) {
       mode_ = Mode::kTop;
       Emit("");

@@ -116,6 +116,17 @@ TEST(CliSend, UsageErrorsExitTwoNamingTheFlag) {
   EXPECT_EQ(r.exit_code, 2);
 }
 
+TEST(CliSend, ListPortsExitsZeroAndPumaSimRefusesBadFlags) {
+  const test::CliResult r = test::RunCli({"send", "--list-ports"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  test::CliResult sim = test::RunCli({"puma-sim", "--time-scale", "-1"});
+  EXPECT_EQ(sim.exit_code, 2);
+  EXPECT_NE(sim.err.find("--time-scale"), std::string::npos) << sim.err;
+  sim = test::RunCli({"puma-sim", "--limits", "J2=5:-5"});
+  EXPECT_EQ(sim.exit_code, 2);
+  EXPECT_NE(sim.err.find("--limits"), std::string::npos) << sim.err;
+}
+
 TEST(CliSend, DryRunPrintsEveryLineWithItsTimeAndOpensNoPort) {
   test::TempDir dir;
   test::WriteFile(dir.file("p.val"), kProgram);

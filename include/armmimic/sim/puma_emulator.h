@@ -91,14 +91,13 @@ class PumaEmulator {
   void ExecuteLine(const std::string& raw, double now_s);
   void TopLevel(const std::string& line, double now_s);
   // Runs one instruction (MOVE, DRIVE, SPEED, DELAY). Returns "" or an error text.
-  std::string Instruction(const std::string& text, double now_s, double* monitor_speed);
+  std::string Instruction(const std::string& text, double now_s);
   std::string StartMotion(const robot::JointArray& to, double speed_pct, const std::string& source,
                           double now_s);
   void StepProgram(double now_s);
   void Emit(const std::string& text);  // one line
   void Prompt();
   void Advance(double now_s);
-  bool Silenced() const { return silenced_; }
 
   EmulatorOptions options_;
   robot::JointArray current_;
