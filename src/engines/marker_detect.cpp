@@ -414,8 +414,8 @@ MarkerAngles ComputeMarkerAngles(const MarkerTriple& t, const MarkerReference& r
   MarkerAngles out;
   const double n = t.right.centre.x - t.left.centre.x;
   const double ratio = std::clamp(n / ref.n_px, 0.0, 1.0);
-  const double yaw = std::acos(ratio);  // eq. 4-1
-  out.yaw_deg = DegFromRad(yaw);
+  double yaw = std::acos(ratio);  // eq. 4-1
+  out.acos_yaw_deg = DegFromRad(yaw);
   const cv::Point2d mid = (t.left.centre + t.right.centre) * 0.5;
   out.pivot_px = {mid.x, mid.y - ref.e_px};
   double dx = t.upper.centre.x - mid.x;
@@ -427,13 +427,25 @@ MarkerAngles ComputeMarkerAngles(const MarkerTriple& t, const MarkerReference& r
     // The turned-away marker shows less area; that gives the sign acos cannot.
     const double tan_alpha = std::tan(RadFromDeg(ref.alpha_deg));
     const double yaw_area = std::atan(((al - ar) / (al + ar)) / std::max(0.05, tan_alpha));
+    out.area_yaw_deg = DegFromRad(yaw_area);
+    // acos is blunt near zero yaw (d cos = 0) where the areas are sharp, and the reverse far
+    // from zero: weigh each by its expected spread (ratio noise 0.004, area estimate 3 deg).
+    const double sd_acos = 0.004 / std::max(std::sin(yaw), 0.03);
+    const double sd_area = RadFromDeg(3);
+    const double w_acos = 1 / (sd_acos * sd_acos);
+    const double w_area = 1 / (sd_area * sd_area);
+    yaw = (w_acos * yaw + w_area * std::abs(yaw_area)) / (w_acos + w_area);
     signed_yaw = yaw_area < 0 ? -yaw : yaw;
+    // Together the pair shows 2 cos(alpha) cos(yaw) of a full face.
+    out.pair_area_ratio =
+        (al + ar) / (2 * ref.face_area_px * std::cos(RadFromDeg(ref.alpha_deg)) * std::cos(yaw));
     // The upper marker sits on the front surface, R(1 - cos alpha) nearer the camera than the
     // lower pair's midpoint: after yaw it is shifted sideways by that depth times sin(yaw).
     const double depth = 0.5 * ref.n_px * std::tan(0.5 * RadFromDeg(ref.alpha_deg));
     dx -= depth * std::sin(signed_yaw);
     out.pivot_px.x += depth * std::sin(signed_yaw);
   }
+  out.yaw_deg = DegFromRad(yaw);
   out.signed_yaw_deg = DegFromRad(signed_yaw);
   const double cos_yaw = std::max(1e-3, std::cos(yaw));
   // Eqs. 4-2..4-5: the upper marker's offset from the pivot; the horizontal part shrinks by

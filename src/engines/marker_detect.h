@@ -6,6 +6,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "armmimic/core/angles.h"
 #include "armmimic/core/geometry.h"
 #include "armmimic/engines/marker_options.h"
 
@@ -88,10 +89,13 @@ SurfaceStretch SampleStretch(const cv::Mat& filtered, cv::Point2d a, cv::Point2d
 
 // Eqs. 4-1..4-5 and the yaw correction; see docs/marker.md.
 struct MarkerAngles {
-  double yaw_deg = 0;         // >= 0
-  double signed_yaw_deg = 0;  // sign from the lower markers' areas (default mode)
-  double bend_deg = 0;        // CCW on screen positive, 0 = straight
-  double foreshortening = 1;  // smaller lower-marker area / face area
+  double yaw_deg = 0;          // >= 0
+  double signed_yaw_deg = 0;   // sign from the lower markers' areas (default mode)
+  double acos_yaw_deg = 0;     // eq. 4-1 alone
+  double pair_area_ratio = 1;  // the lower pair's area over what the model expects
+  double area_yaw_deg = kNaN;  // signed, from the lower markers' areas alone (default mode)
+  double bend_deg = 0;         // CCW on screen positive, 0 = straight
+  double foreshortening = 1;   // smaller lower-marker area / face area
   cv::Point2d pivot_px;
 };
 MarkerAngles ComputeMarkerAngles(const MarkerTriple& t, const MarkerReference& ref,

@@ -41,6 +41,7 @@ Status MarkerOptions::Check() const {
     return Status::Error("--geometry-tolerance must be in (0, 1]");
   }
   if (!(ambiguity_margin >= 0)) return Status::Error("--ambiguity-margin must be >= 0");
+  if (!(max_area_misfit > 0)) return Status::Error("--max-area-misfit must be > 0");
   if (!(min_width_ratio > 0 && max_width_ratio >= min_width_ratio)) {
     return Status::Error("marker options: need 0 < min_width_ratio <= max_width_ratio");
   }
@@ -180,6 +181,18 @@ class MarkerEngine : public Engine {
     }
     m.marker_centres = {t.upper.centre, t.left.centre, t.right.centre};
     const MarkerAngles a = ComputeMarkerAngles(t, ref_, options_.thesis_mode);
+    if (!options_.thesis_mode && std::isfinite(a.area_yaw_deg) &&
+        std::abs(std::abs(a.area_yaw_deg) - a.acos_yaw_deg) > options_.max_yaw_disagreement_deg) {
+      m.note = "the lower markers' areas (yaw " + Fixed(std::abs(a.area_yaw_deg), 0) +
+               ") disagree with their distance (yaw " + Fixed(a.acos_yaw_deg, 0) +
+               "): not the markers";
+      return m;
+    }
+    if (!options_.thesis_mode && std::abs(a.pair_area_ratio - 1) > options_.max_area_misfit) {
+      m.note = "the lower pair shows " + Fixed(100 * a.pair_area_ratio, 0) +
+               " % of the area the joint would: not the markers";
+      return m;
+    }
     if (!options_.thesis_mode && ref_.alpha_deg + a.yaw_deg > options_.max_marker_turn_deg) {
       m.note = "a lower marker is nearly edge-on (turned " + Fixed(ref_.alpha_deg + a.yaw_deg, 0) +
                " degrees from the camera)";

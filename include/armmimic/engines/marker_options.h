@@ -31,6 +31,12 @@ struct MarkerOptions {
   // Geometry check: how far (relative to e) the upper marker may be from where the lower pair
   // puts it, and the accepted range of n / N.
   double geometry_tolerance = 0.15;
+  // A view is lost when the yaw from the lower markers' areas and from their distance differ
+  // by more than this (a blob standing in for a hidden marker).
+  double max_yaw_disagreement_deg = 10;
+  // ... or when the pair's area is off the model's 2 cos(alpha) cos(yaw) faces by more than
+  // this share.
+  double max_area_misfit = 0.2;
   // A view is lost when a second triple's misfit is within this margin of the best one's.
   double ambiguity_margin = 0.05;
   double min_width_ratio = 0.6;
