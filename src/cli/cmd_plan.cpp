@@ -188,6 +188,7 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   const bool mirror = o.mapping.mirror;
   o.mapping = robot::MappingOptions::Default(kind);
   o.mapping.mirror = mirror;
+  o.mapping.follow_file_kind = source_kind == "auto";
   o.mapping.hold_deg = hold;
   if (map[0].given) o.mapping.j1 = map[0].map;
   if (map[1].given) o.mapping.j2 = map[1].map;

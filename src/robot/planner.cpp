@@ -153,7 +153,7 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
   // plan marker and arm files alike); a customised mapping for the other kind is refused.
   MappingOptions mapping = options.mapping;
   const SourceKind file_kind = DetectSourceKind(angles);
-  if (file_kind != mapping.kind) {
+  if (mapping.follow_file_kind && file_kind != mapping.kind) {
     const MappingOptions d = MappingOptions::Default(mapping.kind);
     const bool untouched =
         mapping.j1.sign == d.j1.sign && mapping.j1.offset_deg == d.j1.offset_deg &&

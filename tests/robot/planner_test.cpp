@@ -382,6 +382,13 @@ TEST(Planner, DefaultOptionsFollowTheFilesKindButACustomMappingMustMatch) {
   const Status s = PlanTrajectory(marker, o, &tr, &rep);
   ASSERT_FALSE(s.ok());
   EXPECT_NE(s.message().find("comes from the marker engine"), std::string::npos) << s.message();
+  // A kind chosen by the user (a file whose header cannot tell) is used as given.
+  AngleFile bare = marker;
+  bare.meta.clear();
+  o.mapping = MappingOptions::Default(SourceKind::kMarker);
+  o.mapping.follow_file_kind = false;
+  ASSERT_TRUE(PlanTrajectory(bare, o, &tr, &rep).ok());
+  EXPECT_EQ(rep.mapping.rfind("marker", 0), 0u) << rep.mapping;
 }
 
 TEST(Planner, EveryPlannedProgramPassesSendsSafetyCheck) {

@@ -44,6 +44,9 @@ struct MappingOptions {
   bool j2_elevation = true;
   bool j3_flexion = true;
   JointArray hold_deg{};  // J4..J6 targets (entries 3..5); J1..J3 entries unused
+  // true: the planner checks `kind` against the file (DetectSourceKind); false: `kind` was chosen
+  // by the user for a file whose kind cannot be told from its header, and is used as given.
+  bool follow_file_kind = true;
 
   static MappingOptions Default(SourceKind kind);
   // sign is +1 or -1, offsets and holds finite.
