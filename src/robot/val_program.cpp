@@ -24,9 +24,23 @@ std::string Upper(std::string s) {
   return s;
 }
 
+// Plain decimal numbers only ([+-]digits[.digits]): no exponent, hex, inf or nan, so the value
+// checked is the value any controller reads.
 bool ParseDouble(const std::string& text, double* out) {
   const std::string t = Trim(text);
   if (t.empty()) return false;
+  std::size_t i = (t[0] == '+' || t[0] == '-') ? 1 : 0;
+  int digits = 0, dots = 0;
+  for (; i < t.size(); ++i) {
+    if (std::isdigit(static_cast<unsigned char>(t[i]))) {
+      ++digits;
+    } else if (t[i] == '.' && dots == 0) {
+      ++dots;
+    } else {
+      return false;
+    }
+  }
+  if (digits == 0) return false;
   const char* first = t.data();
   const char* last = t.data() + t.size();
   if (*first == '+') ++first;

@@ -263,7 +263,9 @@ TEST(SafetyCheck, RefusesWhatItCannotVerify) {
   for (const char* line :
        {"DO READY", "DO MOVE SAFE", "MOVES #PPOINT(0,0,0,0,0,0)", "DO MOVE #PPOINT(0,0,0,0,0)",
         "DO MOVE #PPOINT(0,0,0,0,0,0,0)", "HERE #A", "EXECUTE OTHER", "E", "; comment",
-        "DO MOVE #PPOINT(0,0,0,0,0,0) extra", "DO MOVE #PPOINT(0,nan,0,0,0,0)"}) {
+        "DO MOVE #PPOINT(0,0,0,0,0,0) extra", "DO MOVE #PPOINT(0,nan,0,0,0,0)",
+        "DO MOVE #PPOINT(0,-1e1,0,0,0,0)", "DO MOVE #PPOINT(0,0x10,0,0,0,0)", "SPEED .",
+        "SPEED inf", "SPEED 1e2"}) {
     EXPECT_FALSE(CheckLine(line, s).ok()) << line;
   }
   EXPECT_FALSE(CheckLine(std::string(81, ' ') + "SPEED 5", s).ok());
