@@ -119,12 +119,6 @@ TEST_F(SendE2E, SilentControllerTimesOutThenResumeRunsEveryMoveExactlyOnce) {
   EXPECT_NE(cut.err.find("--resume"), std::string::npos) << cut.err;
   EXPECT_EQ(server.log().size(), 4u);  // move 4 did run
 
-  // Without --resume, send refuses to start over silently.
-  const test::CliResult refused = Send(dir_.file("puma"));
-  EXPECT_EQ(refused.exit_code, 1);
-  EXPECT_NE(refused.err.find("--resume"), std::string::npos) << refused.err;
-  EXPECT_EQ(server.log().size(), 4u);
-
   const test::CliResult resumed = Send(dir_.file("puma"), {"--resume"});
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   EXPECT_NE(resumed.err.find("it ran"), std::string::npos) << resumed.err;
@@ -135,6 +129,22 @@ TEST_F(SendE2E, SilentControllerTimesOutThenResumeRunsEveryMoveExactlyOnce) {
   EXPECT_EQ(nothing.exit_code, 0);
   EXPECT_NE(nothing.out.find("nothing to resume"), std::string::npos) << nothing.out;
   ExpectExactlyOnce(server.log(), p);
+}
+
+TEST_F(SendE2E, PlainSendAfterAnInterruptedOneStartsOverWithAWarning) {
+  const Program p = MakeProgram(4);
+  Write(p);
+  sim::EmulatorOptions o = Fast();
+  o.fail_after = 2;
+  sim::PtyServer server(o);
+  ASSERT_TRUE(server.Start(dir_.file("puma")).ok());
+  EXPECT_EQ(Send(dir_.file("puma")).exit_code, 1);
+  EXPECT_EQ(server.log().size(), 1u);
+  const test::CliResult again = Send(dir_.file("puma"));
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.err.find("starting over"), std::string::npos) << again.err;
+  EXPECT_EQ(server.log().size(), 1u + p.targets.size());  // the first move is replayed
+  ExpectJointsNear(server.joints(), p.targets.back(), "final");
 }
 
 TEST_F(SendE2E, NoiseOnTheLineDoesNotStopTheStream) {
