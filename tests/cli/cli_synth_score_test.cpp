@@ -85,10 +85,8 @@ TEST(CliSynthArm, BadFlagsAreUsageErrorsNamingTheFlag) {
     std::string expect;
   };
   const std::vector<Case> cases = {
-      {{"--size", "10x10"}, "--size"},
-      {{"--motion", "dance"}, "--motion"},
-      {{"--codec", "DIVX"}, "--codec"},
-      {{"--frames", "0"}, "--frames"},
+      {{"--size", "10x10"}, "--size"},        {{"--motion", "dance"}, "--motion"},
+      {{"--codec", "DIVX"}, "--codec"},       {{"--frames", "0"}, "--frames"},
       {{"--no-such-flag"}, "--no-such-flag"},
   };
   for (const Case& c : cases) {
