@@ -1,0 +1,79 @@
+// armmimic-cli synth marker / analyze --engine marker / score, end to end, and exit codes.
+#include <gtest/gtest.h>
+
+#include "armmimic/core/angle_file.h"
+#include "test_util.h"
+
+namespace armmimic {
+namespace {
+
+TEST(CliMarker, SynthAnalyzeScore) {
+  test::TempDir dir;
+  const std::string scene = dir.file("scene");
+  test::CliResult r = test::RunCli({"-q", "synth", "marker", scene, "--seed", "4", "--views", "12",
+                                    "--lighting", "normal", "--max-yaw", "40"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string angles = dir.file("angles.tsv");
+  r = test::RunCli({"-q", "analyze", scene + "/views", "-o", angles, "--engine", "marker",
+                    "--reference", scene + "/reference.png"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  AngleFile f;
+  ASSERT_TRUE(ReadAngleFile(angles, &f).ok());
+  EXPECT_TRUE(f.has_file_column);
+  EXPECT_EQ(f.Meta("engine"), "marker");
+  ASSERT_EQ(f.rows.size(), 12u);
+  EXPECT_EQ(f.rows[0].file, "view_000.png");
+  EXPECT_EQ(f.rows[11].file, "view_011.png");
+  int ok = 0;
+  for (const AngleRow& row : f.rows) ok += row.ok();
+  EXPECT_GE(ok, 6);
+  r = test::RunCli({"score", scene + "/truth.tsv", angles});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("yaw"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("bend"), std::string::npos) << r.out;
+
+  // A list of files, in the order given.
+  const std::string two = dir.file("two.tsv");
+  r = test::RunCli({"-q", "analyze", scene + "/views/view_003.png", scene + "/views/view_001.png",
+                    "-o", two, "--engine", "marker", "--reference", scene + "/reference.png"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_TRUE(ReadAngleFile(two, &f).ok());
+  ASSERT_EQ(f.rows.size(), 2u);
+  EXPECT_EQ(f.rows[0].file, "view_003.png");
+  EXPECT_EQ(f.rows[1].file, "view_001.png");
+}
+
+TEST(CliMarker, ExitCodes) {
+  test::TempDir dir;
+  EXPECT_EQ(test::RunCli({"synth", "marker", "--help"}).exit_code, 0);
+  test::CliResult r = test::RunCli({"synth", "marker", dir.file("s"), "--lighting", "moon"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--lighting"), std::string::npos) << r.err;
+  r = test::RunCli({"synth", "marker", dir.file("s"), "--views", "zero"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--views"), std::string::npos) << r.err;
+  r = test::RunCli({"synth", "marker"});
+  EXPECT_EQ(r.exit_code, 2);
+
+  ASSERT_EQ(test::RunCli({"-q", "synth", "marker", dir.file("s"), "--views", "2"}).exit_code, 0);
+  // A reference that does not exist: a runtime failure naming the file.
+  r = test::RunCli({"-q", "analyze", dir.file("s/views"), "-o", dir.file("a.tsv"), "--engine",
+                    "marker", "--reference", dir.file("missing.png")});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("missing.png"), std::string::npos) << r.err;
+  // A reference without markers.
+  r = test::RunCli({"-q", "analyze", dir.file("s/views"), "-o", dir.file("a.tsv"), "--engine",
+                    "marker", "--reference", dir.file("s/views/view_000.png"), "--low", "0",
+                    "--high", "3"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--reference"), std::string::npos) << r.err;
+  // --low above --high is a usage error.
+  r = test::RunCli({"-q", "analyze", dir.file("s/views"), "-o", dir.file("a.tsv"), "--engine",
+                    "marker", "--reference", dir.file("s/reference.png"), "--low", "90"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--low"), std::string::npos) << r.err;
+  EXPECT_EQ(test::RunCli({"-q", "analyze", "--help"}).exit_code, 0);
+}
+
+}  // namespace
+}  // namespace armmimic
