@@ -500,6 +500,10 @@ int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
     const Status s = journal.Done();
     if (!s.ok()) return Fail(s.message());
   }
+  if (!global.quiet && link.protocol().noise_lines() > 0) {
+    std::cerr << "send: " << link.protocol().noise_lines()
+              << " unexpected lines from the controller ignored (noise or stale prompts)\n";
+  }
   if (!global.quiet) {
     std::cerr << "send: " << sent_count << " lines acknowledged by " << o.port.port
               << (start > 0 && start < total

@@ -157,6 +157,22 @@ TEST_F(SendE2E, NoiseOnTheLineDoesNotStopTheStream) {
   const test::CliResult r = Send(dir_.file("puma"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   ExpectExactlyOnce(server.log(), p);
+  // Counted and reported once, not per line.
+  EXPECT_NE(r.err.find("unexpected lines from the controller ignored"), std::string::npos) << r.err;
+}
+
+TEST_F(SendE2E, ControllersEndingLinesWithLfOrCrAloneWorkToo) {
+  const Program p = MakeProgram(4);
+  Write(p);
+  for (const char* newline : {"\n", "\r"}) {
+    sim::EmulatorOptions o = Fast();
+    o.newline = newline;
+    sim::PtyServer server(o);
+    ASSERT_TRUE(server.Start(dir_.file("puma")).ok());
+    const test::CliResult r = Send(dir_.file("puma"), {"--restart"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    ExpectExactlyOnce(server.log(), p);
+  }
 }
 
 TEST_F(SendE2E, ProgramModeUploadsThenExecutes) {
