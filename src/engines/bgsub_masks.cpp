@@ -63,17 +63,18 @@ void ColorDifferenceMask(const cv::Mat& image, const cv::Mat& reference, int off
   CV_Assert(image.type() == CV_8UC3 && reference.type() == CV_8UC3 &&
             image.size() == reference.size());
   // Whole-image SIMD passes (OpenCV's) instead of a per-pixel loop over interleaved channels.
-  thread_local cv::Mat shifted, diff, channels[3];
+  thread_local cv::Mat shifted, diff, any;
   const cv::Mat* ref = &reference;
   if (offset != 0) {
     cv::add(reference, cv::Scalar::all(offset), shifted);
     ref = &shifted;
   }
   cv::absdiff(image, *ref, diff);
-  cv::split(diff, channels);
-  cv::max(channels[0], channels[1], channels[0]);
-  cv::max(channels[0], channels[2], channels[0]);
-  cv::threshold(channels[0], *mask, threshold, 255, cv::THRESH_BINARY);
+  cv::threshold(diff, diff, threshold, 255, cv::THRESH_BINARY);
+  // Any channel over: every grey weight is positive, so the grey of the 0/255 image is non-zero
+  // exactly where some channel is 255.
+  cv::cvtColor(diff, any, cv::COLOR_BGR2GRAY);
+  cv::threshold(any, *mask, 0, 255, cv::THRESH_BINARY);
 }
 
 void RemoveShadow(const cv::Mat& bgr, const cv::Mat& background_bgr, cv::Mat* mask) {

@@ -17,7 +17,7 @@ void ToGray(const cv::Mat& bgr, cv::Mat* gray);
 // of image - reference over a sparse grid, skipping `exclude` (e.g. the body box). 0 when fewer
 // than 16 samples remain.
 int BrightnessDrift(const cv::Mat& image, const cv::Mat& reference, const cv::Rect& exclude,
-                    int step = 6);
+                    int step = 8);
 
 // mask = 255 where |image - reference - offset| > threshold, else 0 (CV_8UC1, same size).
 void DifferenceMask(const cv::Mat& image, const cv::Mat& reference, int offset, int threshold,
