@@ -1,5 +1,6 @@
 #include "armmimic/robot/link_protocol.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -274,7 +275,15 @@ void LinkProtocol::Scan(double now_s) {
     if (p == std::string::npos) break;
     const std::string segment = rx_.substr(0, p);
     rx_.erase(0, p + 1);
-    HandleLine(Clean(segment));
+    const std::string cleaned = Clean(segment);
+    // Bytes outside printable ASCII mark a garbled line: never taken as a reply.
+    dirty_ = cleaned.size() != segment.size() &&
+             segment.find_first_not_of(" \t") != std::string::npos &&
+             std::any_of(segment.begin(), segment.end(), [](char c) {
+               const unsigned char u = static_cast<unsigned char>(c);
+               return (u < 0x20 && c != '\t') || u >= 0x7f;
+             });
+    HandleLine(cleaned);
     if (pending_prompt_) {
       pending_prompt_ = false;
       OnPrompt(now_s);
@@ -332,6 +341,8 @@ void LinkProtocol::HandleLine(const std::string& s) {
     pending_prompt_ = true;
   } else if (s == settings_.prompt_running) {
     running_seen_ = true;
+  } else if (dirty_) {
+    ++noise_;
   } else {
     replies_.push_back(s);
   }

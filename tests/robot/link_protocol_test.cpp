@@ -159,6 +159,7 @@ TEST(LinkProtocol, GarbageAndStalePromptsBetweenLinesAreSkipped) {
   EXPECT_EQ(link.TakeOutput(), "\rSPEED 50\r");
   link.OnBytes("~#}@!\r\nSPEED 50\r\n\x01\xfe%&\r\n.", 1.8);
   EXPECT_EQ(link.acknowledged(), 1u);
+  EXPECT_TRUE(link.last_replies().empty());  // the garbled line is not a reply
   link.OnBytes("SPEED 60\r\n\r\n\r\n.", 1.9);
   EXPECT_EQ(link.state(), LinkState::kDone);
   EXPECT_GT(link.noise_lines(), 0);

@@ -122,7 +122,9 @@ class LinkProtocol {
   bool written_ = false;  // lines_[next_] went out and is not acknowledged yet
   bool echo_seen_ = false;
   bool running_seen_ = false;
-  bool pending_prompt_ = false;  // a prompt was found while scanning
+  bool pending_prompt_ = false;
+  bool dirty_ = false;  // the line being handled held control or non-ASCII bytes  // a prompt was
+                        // found while scanning
   std::vector<std::string> replies_;
   std::vector<std::string> last_replies_;
   int noise_ = 0;
