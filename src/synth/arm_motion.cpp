@@ -62,6 +62,9 @@ ArmMotionPlan::ArmMotionPlan(ArmMotion motion, int frames, uint64_t seed,
       std::uniform_real_distribution<double> upper(-90.0, 90.0), bend(0.0, 150.0);
       keys_.push_back(hang);
       const int count = std::max(2, frames / 60);
+      // Short scenes get smaller moves rather than faster ones: a minimum-jerk move of D degrees
+      // over T frames peaks at 1.875 D / T, so D <= 2 T keeps it under about 4 degrees a frame.
+      const double max_move = 2.0 * frames / count;
       for (int k = 0; k < count; ++k) {
         ArmPose next = hang;
         for (int attempt = 0; attempt < 200; ++attempt) {
@@ -69,6 +72,10 @@ ArmMotionPlan::ArmMotionPlan(ArmMotion motion, int frames, uint64_t seed,
           // Alternate large and small moves so the sequence covers the range.
           if (std::fabs(cand.upper_deg - keys_.back().upper_deg) < 30 &&
               std::fabs(cand.bend_deg - keys_.back().bend_deg) < 30) {
+            continue;
+          }
+          if (std::max(std::fabs(cand.upper_deg - keys_.back().upper_deg),
+                       std::fabs(cand.bend_deg - keys_.back().bend_deg)) > max_move) {
             continue;
           }
           if (SegmentValid(keys_.back(), cand, valid)) {
