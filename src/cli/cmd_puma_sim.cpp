@@ -19,8 +19,9 @@ int RunPumaSim(const std::vector<std::string>& args, const GlobalOptions& global
   std::string link_path, log_path;
   double exit_after_idle_s = 0;
   ArgParser p("puma-sim",
-              "armmimic-cli puma-sim [--link PATH] [--log FILE] [--time-scale X] "
-              "[fault options]",
+              "  armmimic-cli puma-sim [--link PATH] [--log FILE] [--time-scale X]\n"
+              "          [--fail-after N] [--silent-after N] [--garble-after N] "
+              "[--exit-after-idle S]",
               "Emulates a PUMA 760 VAL II controller on a pseudo-terminal and prints the device "
               "path to connect to (first line of standard output). It echoes, prompts with '.', "
               "takes CR-ended lines of at most 80 characters and interprets SPEED, DO MOVE "

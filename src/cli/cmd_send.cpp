@@ -171,8 +171,9 @@ int ListPorts() {
 int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
   SendOptions o;
   ArgParser p("send",
-              "armmimic-cli send (ANGLES.tsv | PROGRAM.val) --port DEVICE [--baud 9600] "
-              "[--dry-run] [--resume]\n  armmimic-cli send --list-ports",
+              "  armmimic-cli send (ANGLES.tsv | PROGRAM.val) --port DEVICE [--baud 9600]\n"
+              "          [--dry-run] [--resume] [--profile FILE]\n"
+              "  armmimic-cli send --list-ports",
               "Streams a VAL program to the controller one line at a time: each line waits for "
               "its echo and the prompt before the next goes out; an error reply or a silent "
               "controller stops the stream naming the line. An angle file is planned first with "
