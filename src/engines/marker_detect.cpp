@@ -23,23 +23,20 @@ int Find(std::vector<int>& parent, int i) {
 
 }  // namespace
 
-void MedianWhereDark(const cv::Mat& gray, int ksize, int high, cv::Mat* out, cv::Mat* tile_out) {
+void MedianWhereDark(const cv::Mat& gray, int ksize, int high, cv::Mat* out, cv::Mat* band_out) {
   out->create(gray.size(), CV_8UC1);
   out->setTo(255);
   const int r = ksize / 2;
-  constexpr int kTile = 40;
+  constexpr int kBand = 32;  // rows; full-width bands keep the filter's vector loops long
   const cv::Rect image(0, 0, gray.cols, gray.rows);
-  for (int ty = 0; ty < gray.rows; ty += kTile) {
-    for (int tx = 0; tx < gray.cols; tx += kTile) {
-      const cv::Rect tile = cv::Rect(tx, ty, kTile, kTile) & image;
-      const cv::Rect crop =
-          cv::Rect(tile.x - r, tile.y - r, tile.width + 2 * r, tile.height + 2 * r) & image;
-      double darkest = 0;
-      cv::minMaxLoc(gray(crop), &darkest);
-      if (darkest > high) continue;  // no window here holds a pixel <= high
-      MedianFilter(gray(crop), ksize, tile_out);
-      (*tile_out)(cv::Rect(tile.tl() - crop.tl(), tile.size())).copyTo((*out)(tile));
-    }
+  for (int y = 0; y < gray.rows; y += kBand) {
+    const cv::Rect band = cv::Rect(0, y, gray.cols, kBand) & image;
+    const cv::Rect crop = cv::Rect(0, band.y - r, gray.cols, band.height + 2 * r) & image;
+    double darkest = 0;
+    cv::minMaxLoc(gray(crop), &darkest);
+    if (darkest > high) continue;  // no window here holds a pixel <= high
+    MedianFilter(gray(crop), ksize, band_out);
+    (*band_out)(cv::Rect(0, band.y - crop.y, band.width, band.height)).copyTo((*out)(band));
   }
 }
 

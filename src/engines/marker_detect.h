@@ -31,7 +31,7 @@ struct MarkerScratch {
 
 // The thesis' median filter (4.2.1), computed only where it can matter: a pixel whose window
 // holds no value <= `high` has a median above `high` and gets 255, which thresholds the same.
-void MedianWhereDark(const cv::Mat& gray, int ksize, int high, cv::Mat* out, cv::Mat* tile);
+void MedianWhereDark(const cv::Mat& gray, int ksize, int high, cv::Mat* out, cv::Mat* band);
 
 // Thesis 4.2.1-4.2.4: grey, median filter, flood-fill components in [low, high], fragments of
 // one marker merged, then the area / aspect / fill heuristics (areas scaled to the image).
