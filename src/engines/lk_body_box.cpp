@@ -38,9 +38,13 @@ BodyBox FindBodyBox(const cv::Mat& background, const cv::Mat& standstill,
   out.box =
       cv::Rect(stats.at<int>(best, cv::CC_STAT_LEFT), stats.at<int>(best, cv::CC_STAT_TOP),
                stats.at<int>(best, cv::CC_STAT_WIDTH), stats.at<int>(best, cv::CC_STAT_HEIGHT));
-  const double y = out.box.y + out.box.height * (1.0 - options.shoulder_height);
-  out.left_shoulder = {out.box.x + out.box.width * options.shoulder_inset, y};
-  out.right_shoulder = {out.box.x + out.box.width * (1.0 - options.shoulder_inset), y};
+  const double height =
+      options.thesis_mode ? options.shoulder_height : options.anchored_shoulder_height;
+  const double inset =
+      options.thesis_mode ? options.shoulder_inset : options.anchored_shoulder_inset;
+  const double y = out.box.y + out.box.height * (1.0 - height);
+  out.left_shoulder = {out.box.x + out.box.width * inset, y};
+  out.right_shoulder = {out.box.x + out.box.width * (1.0 - inset), y};
   return out;
 }
 

@@ -100,6 +100,7 @@ class LkEngine : public Engine {
         start.gray = gray;
         start.bgr = view;
         start.shoulders = {*shoulder_given_};
+        start.shoulder_fixed = true;
         start.arm_length_px = 0.4 * roi_.height;
         state_ = State::kTracking;
         return Fill(tracker_->Start(start), m);

@@ -42,6 +42,8 @@ Status LkOptions::Check() const {
       Range("body_threshold", body_threshold, 0, 255),
       Range("shoulder_height", shoulder_height, 0, 1),
       Range("shoulder_inset", shoulder_inset, 0, 0.5),
+      Range("anchored_shoulder_height", anchored_shoulder_height, 0, 1),
+      Range("anchored_shoulder_inset", anchored_shoulder_inset, 0, 0.5),
       Range("initial_upper_deg (--initial-upper)", initial_upper_deg, -360, 360),
       Range("initial_fore_deg (--initial-fore)", initial_fore_deg, -360, 360),
       Range("max_corners", max_corners, 4, 10000),

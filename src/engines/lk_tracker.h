@@ -20,8 +20,9 @@ struct TrackerStart {
   cv::Mat bgr;   // the same frame in colour (CV_8UC3)
   // One shoulder when known; two (left, right) when the side is decided by the first motion.
   std::vector<cv::Point2d> shoulders;
-  double arm_length_px = 0;  // prior: shoulder to wrist
-  double head_limit_y = -1;  // motion above this line (the head) does not decide the side
+  bool shoulder_fixed = false;  // given by the user: not refined from the motion
+  double arm_length_px = 0;     // prior: shoulder to wrist
+  double head_limit_y = -1;     // motion above this line (the head) does not decide the side
 };
 
 struct TrackerPose {

@@ -13,10 +13,15 @@ enum class LkArmSide { kAuto, kLeft, kRight };  // left/right as seen on screen
 
 struct LkOptions {
   // --- setup (6.1): the background and the standstill only locate the shoulder ---
-  int standstill_frames = 60;         // frames averaged into the standstill image
-  int body_threshold = 45;            // grey-level difference standstill vs background (body box)
-  double shoulder_height = 0.6;       // shoulder at 3/5 of the body box height, from its bottom
-  double shoulder_inset = 1.0 / 6;    // and at 1/6 (or 5/6) of its width
+  int standstill_frames = 60;       // frames averaged into the standstill image
+  int body_threshold = 45;          // grey-level difference standstill vs background (body box)
+  double shoulder_height = 0.6;     // shoulder at 3/5 of the body box height, from its bottom
+  double shoulder_inset = 1.0 / 6;  // and at 1/6 (or 5/6) of its width
+  // The anchored path's body-box rule: the joint sits higher and nearer the box edge than the
+  // thesis rule puts it (measured on the armmimic synthetic person; the sleeve lines then refine
+  // it).
+  double anchored_shoulder_height = 0.7;
+  double anchored_shoulder_inset = 0.09;
   LkArmSide side = LkArmSide::kAuto;  // kAuto: the side where the first motion happens
 
   // --- known starting posture ---
@@ -44,6 +49,7 @@ struct LkOptions {
   bool use_bar = true;               // anchor each part on its sleeve colour (lk_arm_bar.h)
   double bar_search_deg = 30;        // searched around the features' estimate
   double bar_min_score = 0.4;        // weaker bars (part in front of the body) are not used
+  bool refine_shoulder = true;       // refine a body-box shoulder from the sleeve's lines
   double upper_fraction = 0.53;      // upper arm / (shoulder to wrist), the elbow prior
   double forward_backward_px = 1.0;  // drop a track whose backward track misses by more (0: off)
   double confirm_motion_px = 4.0;    // a feature joins the fit once the model moved it this far
