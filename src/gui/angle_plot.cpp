@@ -60,7 +60,7 @@ AnglePlot::AnglePlot(QWidget* parent)
   chart->setBackgroundRoundness(0);
   setChart(chart);
   setRenderHint(QPainter::Antialiasing);
-  setMinimumHeight(160);
+  setMinimumHeight(200);
   applyTheme();
   setCursorFrame(0);
 }

@@ -58,10 +58,13 @@ MainWindow::MainWindow(QWidget* parent)
   toggles << dock(tr("Analysis"), "analysisDock", settings_, Qt::LeftDockWidgetArea)
                  ->toggleViewAction();
   toggles << dock(tr("Angles"), "plotDock", plot_, Qt::BottomDockWidgetArea)->toggleViewAction();
-  toggles << dock(tr("Robot"), "robotDock", robot_, Qt::RightDockWidgetArea)->toggleViewAction();
+  toggles << dock(tr("Robot"), "robotDock", robot_, Qt::LeftDockWidgetArea)->toggleViewAction();
   log_dock_ = dock(tr("Messages"), "logDock", log_, Qt::BottomDockWidgetArea);
   toggles << log_dock_->toggleViewAction();
   tabifyDockWidget(findChild<QDockWidget*>("plotDock"), log_dock_);
+  tabifyDockWidget(findChild<QDockWidget*>("analysisDock"), findChild<QDockWidget*>("robotDock"));
+  findChild<QDockWidget*>("analysisDock")->raise();
+  resizeDocks({findChild<QDockWidget*>("plotDock")}, {260}, Qt::Vertical);
   findChild<QDockWidget*>("plotDock")->raise();
   actions_->populate(this, toggles);
   recent_ = new RecentFiles(actions_->recentMenu(), this);

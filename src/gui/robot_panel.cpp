@@ -19,6 +19,7 @@
 #include <QScrollArea>
 #include <QSerialPortInfo>
 #include <QSettings>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -50,25 +51,29 @@ RobotPanel::RobotPanel(QWidget* parent)
       sim_(new SimController(this)),
       preview_(new RobotPreview) {
   setObjectName("robotPanel");
-  auto* inner = new QWidget;
-  auto* layout = new QVBoxLayout(inner);
-  layout->addWidget(makePlanBox());
-  auto* pv = new QGroupBox(tr("Preview"));
+  auto* pv = new QWidget;
   auto* pvl = new QVBoxLayout(pv);
+  pvl->setContentsMargins(0, 0, 0, 0);
   pvl->addWidget(preview_, 1);
   animate_button_ = new QPushButton(tr("Animate plan"));
   animate_button_->setObjectName("animateButton");
   animate_button_->setCheckable(true);
   pvl->addWidget(animate_button_);
-  layout->addWidget(pv, 1);
-  layout->addWidget(makeLinkBox());
-  auto* scroll = new QScrollArea;
-  scroll->setWidget(inner);
-  scroll->setWidgetResizable(true);
-  scroll->setFrameShape(QFrame::NoFrame);
+  auto scrolled = [](QWidget* w) {
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(w);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    return scroll;
+  };
+  auto* tabs = new QTabWidget;
+  tabs->setObjectName("robotTabs");
+  tabs->addTab(scrolled(makePlanBox()), tr("Plan"));
+  tabs->addTab(scrolled(makeLinkBox()), tr("Controller"));
   auto* outer = new QVBoxLayout(this);
-  outer->setContentsMargins(0, 0, 0, 0);
-  outer->addWidget(scroll);
+  outer->setContentsMargins(2, 2, 2, 2);
+  outer->addWidget(pv, 2);
+  outer->addWidget(tabs, 3);
 
   animate_.setInterval(40);
   connect(&animate_, &QTimer::timeout, this, [this] {

@@ -1,0 +1,127 @@
+// armmimic-screenshot-tour: walks the workflow of docs/user-guide.md in the real application
+// window and saves a screenshot of the whole screen after each step. Run it under an X server
+// (scripts/screenshots.sh uses xvfb-run):  armmimic-screenshot-tour OUTDIR SAMPLE_DIR
+#include <cstdio>
+#include <functional>
+
+#include <QApplication>
+#include <QDir>
+#include <QDockWidget>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QScreen>
+#include <QSettings>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+
+#include "analysis_job.h"
+#include "app_actions.h"
+#include "engine_settings_panel.h"
+#include "main_window.h"
+#include "robot_panel.h"
+#include "sim_controller.h"
+#include "video_player.h"
+#include "video_view.h"
+
+namespace {
+
+QString g_out;
+
+void Shot(const QString& name) {
+  QTest::qWait(300);  // let the window settle and repaint
+  const QPixmap screen = QGuiApplication::primaryScreen()->grabWindow(0);
+  const QString path = QDir(g_out).filePath(name + ".png");
+  if (!screen.save(path)) std::fprintf(stderr, "cannot write %s\n", qPrintable(path));
+  std::printf("%s\n", qPrintable(path));
+}
+
+bool Wait(const std::function<bool()>& done, int ms = 60000) { return QTest::qWaitFor(done, ms); }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  QApplication app(argc, argv);
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: armmimic-screenshot-tour OUTDIR SAMPLE_DIR\n");
+    return 2;
+  }
+  g_out = QString::fromLocal8Bit(argv[1]);
+  const QDir sample(QString::fromLocal8Bit(argv[2]));
+  QDir().mkpath(g_out);
+  QTemporaryDir settings_dir;
+  QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settings_dir.path());
+  QApplication::setOrganizationName("armmimic-tour");
+  QApplication::setApplicationName("armmimic");
+  using armmimic::gui::MainWindow;
+
+  MainWindow w;
+  w.setGeometry(QGuiApplication::primaryScreen()->availableGeometry());
+  w.show();
+  Shot("01-start");
+
+  w.openInputs({sample.filePath("scene.avi")});
+  if (!Wait([&] { return w.player()->isOpen() && !w.view()->image().isNull(); })) return 1;
+  w.player()->seek(70);
+  Wait([&] { return w.view()->frameIndex() == 70; });
+  Shot("02-opened");
+
+  armmimic::AnalysisOptions o = w.settingsPanel()->options();
+  o.engine.kind = armmimic::EngineKind::kBgsub;
+  o.background_path = sample.filePath("background.png").toStdString();
+  o.arm_length_path = sample.filePath("armlength.png").toStdString();
+  o.start = 45;
+  w.settingsPanel()->setOptions(o);
+  Shot("03-settings");
+
+  bool mid_shot = false;
+  QObject::connect(w.job(), &armmimic::gui::AnalysisJob::progress, [&](int done, int total) {
+    if (!mid_shot && total > 0 && done > total / 3) {
+      mid_shot = true;
+      Shot("04-analysing");
+    }
+  });
+  w.startAnalysis();
+  if (!Wait([&] { return !w.job()->isRunning(); }, 300000)) return 1;
+  w.player()->seek(170);
+  Wait([&] { return w.view()->frameIndex() == 170; });
+  Shot("05-overlay");
+
+  w.actions()->ovContour->setChecked(true);
+  w.settingsPanel()->setRoi(cv::Rect(120, 20, 190, 200));
+  w.actions()->toolRoi->trigger();
+  Shot("06-roi");
+  w.actions()->ovContour->setChecked(false);
+  w.settingsPanel()->setRoi(std::nullopt);
+  w.actions()->toolPan->trigger();
+
+  w.findChild<QDockWidget*>("robotDock")->raise();
+  armmimic::gui::RobotPanel* robot = w.robotPanel();
+  robot->findChild<QTabWidget*>("robotTabs")->setCurrentIndex(1);
+  robot->startSimulator(0.05);
+  robot->connectTo(robot->simulator()->devicePath());
+  Shot("07-robot");
+  robot->findChild<QTabWidget*>("robotTabs")->setCurrentIndex(0);
+  Shot("07b-plan");
+  robot->findChild<QTabWidget*>("robotTabs")->setCurrentIndex(1);
+
+  QTimer::singleShot(800, [&] {
+    Shot("08-confirm");
+    for (QWidget* top : QApplication::topLevelWidgets()) {
+      if (auto* box = qobject_cast<QMessageBox*>(top)) {
+        for (QAbstractButton* b : box->buttons()) {
+          if (box->buttonRole(b) == QMessageBox::AcceptRole) b->click();
+        }
+      }
+    }
+  });
+  bool sent = false;
+  QObject::connect(robot, &armmimic::gui::RobotPanel::sendFinished, [&](bool) { sent = true; });
+  robot->sendPlan(false);
+  Wait([&] { return sent; }, 300000);
+  w.player()->seek(200);
+  Shot("09-sent");
+  w.close();
+  return 0;
+}
