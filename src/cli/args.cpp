@@ -167,7 +167,7 @@ std::string ArgParser::Help() const {
     }
     out << o.help << "\n";
   }
-  out << "  -h, --help" << std::string(20, ' ') << "show this help\n";
+  out << "  -h, --help" << std::string(18, ' ') << "show this help\n";
   out << "\nGlobal: -q (quiet), --progress / --no-progress, --version.\n";
   return out.str();
 }

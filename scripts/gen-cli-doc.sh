@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Regenerates docs/cli.md from armmimic-cli's own --help texts, so the page never drifts from
+# the program. Usage: scripts/gen-cli-doc.sh [path/to/armmimic-cli]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+CLI="${1:-build/bin/armmimic-cli}"
+out=docs/cli.md
+tmp=$(mktemp)
+{
+  cat <<'HEAD'
+# armmimic-cli
+
+The command-line twin of the desktop application. It fills the same option structs as the GUI,
+so both write the same files for the same options. This page is generated from the program's
+own `--help` texts by `scripts/gen-cli-doc.sh`.
+
+## Conventions
+
+- **Exit codes:** 0 ok; 1 runtime failure (unreadable video, bad file content, port error,
+  robot error, a refused plan); 2 usage error (unknown or malformed flag, missing argument).
+- Every message names the file, line or flag it is about, e.g.
+  `armmimic-cli analyze: --threshold: 'abc' is not a whole number`.
+- **Global options**, accepted before or after the subcommand: `-q` (quiet: only errors),
+  `--progress` / `--no-progress` (default: a progress bar when stderr is a terminal),
+  `--version`.
+- `--help` works on every subcommand.
+- Outputs (angle files, images, `.val` programs) are written to a temporary file beside the
+  target and renamed into place: an interrupted run never leaves half a file.
+- Numbers on the command line use `.` decimals whatever the locale. Points are `X,Y` and
+  rectangles `X,Y,W,H`, in full-image pixels.
+
+## A whole run
+
+```sh
+armmimic-cli synth arm scene/ --seed 7
+armmimic-cli background scene/scene.avi -o bg.png --frames 45
+armmimic-cli analyze scene/scene.avi -o angles.tsv --engine bgsub \
+    --background bg.png --arm-length scene/armlength.png --start 45
+armmimic-cli score scene/truth.tsv angles.tsv --plot err.png
+armmimic-cli plan angles.tsv -o arm.val
+armmimic-cli puma-sim --link /tmp/puma &
+armmimic-cli send arm.val --port /tmp/puma
+```
+
+## Commands
+
+HEAD
+  echo '```'
+  "$CLI" --help
+  echo '```'
+  for cmd in background analyze synth "synth arm" "synth marker" score plan send puma-sim; do
+    echo
+    echo "### $cmd"
+    echo
+    echo '```'
+    # shellcheck disable=SC2086
+    "$CLI" $cmd --help
+    echo '```'
+  done
+} > "$tmp"
+mv "$tmp" "$out"
+echo "wrote $out"
