@@ -6,6 +6,7 @@
 #include <sstream>
 #include <thread>
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -129,6 +130,43 @@ TEST_F(SendE2E, SilentControllerTimesOutThenResumeRunsEveryMoveExactlyOnce) {
   EXPECT_EQ(nothing.exit_code, 0);
   EXPECT_NE(nothing.out.find("nothing to resume"), std::string::npos) << nothing.out;
   ExpectExactlyOnce(server.log(), p);
+}
+
+TEST_F(SendE2E, ArmMovedByHandAfterACutIsLeftToTheOperator) {
+  const Program p = MakeProgram(5);
+  Write(p);
+  sim::EmulatorOptions o = Fast();
+  o.silent_after = 3;  // move 3 (prog.val:9) runs, its reply is lost
+  sim::PtyServer server(o);
+  ASSERT_TRUE(server.Start(dir_.file("puma")).ok());
+  EXPECT_EQ(Send(dir_.file("puma"), {"--motion-timeout", "1.5"}).exit_code, 1);
+  // Someone jogs joint 1 from a terminal before the operator resumes.
+  const int fd = open(dir_.file("puma").c_str(), O_RDWR | O_NOCTTY);
+  ASSERT_GE(fd, 0);
+  const std::string jog = "DO DRIVE 1,7,50\r";
+  ASSERT_EQ(write(fd, jog.data(), jog.size()), static_cast<ssize_t>(jog.size()));
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  while (server.log().size() < 4 && std::chrono::steady_clock::now() < until) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  close(fd);
+  ASSERT_EQ(server.log().size(), 4u);
+
+  const test::CliResult unsure = Send(dir_.file("puma"), {"--resume"});
+  EXPECT_EQ(unsure.exit_code, 1);
+  EXPECT_NE(unsure.err.find("prog.val:9: cannot tell whether this line ran"), std::string::npos)
+      << unsure.err;
+  EXPECT_NE(unsure.err.find("--resume-at 9"), std::string::npos) << unsure.err;
+  EXPECT_EQ(server.log().size(), 4u);  // WHERE moved nothing
+
+  // The operator decides move 3 ran and skips it.
+  const test::CliResult skip = Send(dir_.file("puma"), {"--resume-at", "11"});
+  ASSERT_EQ(skip.exit_code, 0) << skip.err;
+  const auto log = server.log();
+  ASSERT_EQ(log.size(), 6u);
+  ExpectJointsNear(log[4].target_deg, p.targets[3], "move 4");
+  ExpectJointsNear(server.joints(), p.targets.back(), "final");
 }
 
 TEST_F(SendE2E, PlainSendAfterAnInterruptedOneStartsOverWithAWarning) {
