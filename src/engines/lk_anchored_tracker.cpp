@@ -251,316 +251,311 @@ class AnchoredTracker : public Tracker {
     // The prior (where the part would be if it kept its pose) votes like a few features at the
     // part's end, so one stray feature cannot turn a part that has no trusted ones.
     votes.emplace_back(AngleDiff(prior_deg, previous_deg), prior_weight);
-    const Feature& f = feats_[idx[k]];
-    fprintf(stderr,
-            "  vote %.1f w %.1f p %.1f,%.1f seed %.1f,%.1f seedpose %.1f %.1f along %.1f conf %d\n",
-            votes[k].first, votes[k].second, f.p.x, f.p.y, f.seed_p.x, f.seed_p.y, f.seed_upper,
-            f.seed_fore, f.along, f.confirmed);
-  }
-} std::vector<std::pair<double, double>> sorted = votes;
-std::sort(sorted.begin(), sorted.end());
-double total = 0;
-for (const auto& v : sorted) total += v.second;
-double acc = 0, median = sorted.back().first;
-for (const auto& v : sorted) {
-  acc += v.second;
-  if (acc >= 0.5 * total) {
-    median = v.first;
-    break;
-  }
-}
-std::vector<cv::Point2d> from, to;
-std::vector<double> w;
-std::vector<int> used;
-for (std::size_t k = 0; k < n_features; ++k) {
-  if (std::abs(votes[k].first - median) > o_.inlier_deg) continue;
-  const Feature& f = feats_[idx[k]];
-  from.push_back(part == kUpper ? f.cu : f.cf);
-  to.emplace_back(f.p);
-  w.push_back(1.0);
-  used.push_back(idx[k]);
-}
-const double median_deg = Wrap180(previous_deg + median);
-Motion2D m = PartMotion(median_deg, joint_px);
-from.emplace_back(0, 0);
-to.push_back(joint_px);
-w.push_back(o_.joint_weight);
-Motion2D fitted;
-if (used.size() >= 2 && FitRigidMotion(from, to, w, &fitted) &&
-    std::abs(AngleDiff(fitted.RotationCcwDeg(), median_deg)) <= o_.inlier_deg) {
-  m = fitted;
-}
-for (int i : used) feats_[i].in_fit = true;
-*out = m;
-return true;
-}
-
-// Refines a part's direction with the bar search when the part stands out of its
-// surroundings (over the wall, not in front of the body in the same cloth).
-double RefineWithBar(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px, double deg,
-                     double length_px, bool* used) const {
-  *used = false;
-  if (!o_.use_bar || !bar.valid) return deg;
-  const BarSearch r =
-      SearchArmBar(bgr, bar, joint_px, deg, length_px, o_.bar_search_deg, o_.bar_min_score);
-  if (!r.found) return deg;
-  *used = true;
-  return r.deg;
-}
-
-// The shoulder from the body box is a rule of thumb; the upper arm's sleeve, wherever it stands
-// clear, lies on a line through the true shoulder. Each such line (the best direction and
-// sideways shift of the bar) is accumulated, and the shoulder becomes their least-squares
-// intersection once lines at different angles are in. Returns the direction refined about it.
-double RefineShoulder(const cv::Mat& bgr, double deg) {
-  const ArmBar& bar = upper_bar_[side_];
-  const cv::Point2d n0(-DirectionVector(deg).y, DirectionVector(deg).x);
-  double best = -2, best_d = 0, best_a = deg;
-  for (int d = -kShiftPx; d <= kShiftPx; ++d) {
-    for (int a = -2; a <= 2; ++a) {
-      const double score = ArmBarScore(bgr, bar, shoulder_ + d * n0, deg + a, lu_);
-      if (score > best) {
-        best = score;
-        best_d = d;
-        best_a = deg + a;
+    std::vector<std::pair<double, double>> sorted = votes;
+    std::sort(sorted.begin(), sorted.end());
+    double total = 0;
+    for (const auto& v : sorted) total += v.second;
+    double acc = 0, median = sorted.back().first;
+    for (const auto& v : sorted) {
+      acc += v.second;
+      if (acc >= 0.5 * total) {
+        median = v.first;
+        break;
       }
     }
+    std::vector<cv::Point2d> from, to;
+    std::vector<double> w;
+    std::vector<int> used;
+    for (std::size_t k = 0; k < n_features; ++k) {
+      if (std::abs(votes[k].first - median) > o_.inlier_deg) continue;
+      const Feature& f = feats_[idx[k]];
+      from.push_back(part == kUpper ? f.cu : f.cf);
+      to.emplace_back(f.p);
+      w.push_back(1.0);
+      used.push_back(idx[k]);
+    }
+    const double median_deg = Wrap180(previous_deg + median);
+    Motion2D m = PartMotion(median_deg, joint_px);
+    from.emplace_back(0, 0);
+    to.push_back(joint_px);
+    w.push_back(o_.joint_weight);
+    Motion2D fitted;
+    if (used.size() >= 2 && FitRigidMotion(from, to, w, &fitted) &&
+        std::abs(AngleDiff(fitted.RotationCcwDeg(), median_deg)) <= o_.inlier_deg) {
+      m = fitted;
+    }
+    for (int i : used) feats_[i].in_fit = true;
+    *out = m;
+    return true;
   }
-  if (best < o_.bar_min_score + 0.1 || std::abs(best_d) >= kShiftPx) return deg;
-  const cv::Point2d p = shoulder_ + best_d * n0;
-  const cv::Point2d u = DirectionVector(best_a);
-  const cv::Vec2d n(-u.y, u.x);
-  const double c = n[0] * p.x + n[1] * p.y;
-  line_a_ += cv::Matx22d(n[0] * n[0], n[0] * n[1], n[0] * n[1], n[1] * n[1]);
-  line_b_ += cv::Vec2d(n[0] * c, n[1] * c);
-  ++line_count_;
-  // Lines must span some angle: the smaller eigenvalue of the mean of n n^T.
-  const cv::Matx22d mean = line_a_ * (1.0 / line_count_);
-  const double tr = mean(0, 0) + mean(1, 1);
-  const double det = mean(0, 0) * mean(1, 1) - mean(0, 1) * mean(1, 0);
-  const double min_eig = 0.5 * tr - std::sqrt(std::max(0.0, 0.25 * tr * tr - det));
-  if (min_eig < 0.03) return deg;  // about 10 degrees of spread
-  const cv::Vec2d sol = line_a_.inv() * line_b_;
-  const cv::Point2d refined(sol[0], sol[1]);
-  if (Dist(refined, shoulder_start_) > 0.35 * arm_len_) return deg;
-  shoulder_ = refined;
-  tu_ = PartMotion(deg, shoulder_);
-  const BarSearch r = SearchArmBar(bgr, bar, shoulder_, deg, lu_, 5, o_.bar_min_score);
-  return r.found ? r.deg : deg;
-}
 
-void FitPose(const cv::Mat& bgr) {
-  ComputeReferences();
-  for (Feature& f : feats_) f.in_fit = false;
-  const double bend = AngleDiff(fore_deg_, upper_deg_);
-  Motion2D tu;
-  double up = upper_deg_;
-  if (FitPart(kUpper, shoulder_, upper_deg_, upper_deg_, o_.prior_weight * lu_,
-              CountConfirmed(kUpper) < 3, &tu)) {
-    up = Wrap180(tu.RotationCcwDeg());
+  // Refines a part's direction with the bar search when the part stands out of its
+  // surroundings (over the wall, not in front of the body in the same cloth).
+  double RefineWithBar(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px,
+                       double deg, double length_px, bool* used) const {
+    *used = false;
+    if (!o_.use_bar || !bar.valid) return deg;
+    const BarSearch r =
+        SearchArmBar(bgr, bar, joint_px, deg, length_px, o_.bar_search_deg, o_.bar_min_score);
+    if (!r.found) return deg;
+    *used = true;
+    return r.deg;
   }
-  up = RefineWithBar(bgr, upper_bar_[side_], shoulder_, up, lu_, &upper_bar_used_);
-  if (upper_bar_used_ && refine_shoulder_) up = RefineShoulder(bgr, up);
-  upper_deg_ = up;
-  tu_ = PartMotion(upper_deg_, shoulder_);
-  const cv::Point2d elbow = Elbow();
-  double fo = Wrap180(upper_deg_ + bend);
-  Motion2D tf;
-  if (FitPart(kFore, elbow, fore_deg_, fo, o_.prior_weight * lf_, CountConfirmed(kFore) < 3, &tf)) {
-    fo = Wrap180(tf.RotationCcwDeg());
-  }
-  fo = RefineWithBar(bgr, fore_bar_[side_], elbow, fo, lf_, &fore_bar_used_);
-  fore_deg_ = fo;
-  tf_ = PartMotion(fore_deg_, elbow);
-  for (Feature& f : feats_) {
-    f.ru = Dist(tu_.Apply(f.cu), cv::Point2d(f.p));
-    f.rf = Dist(tf_.Apply(f.cf), cv::Point2d(f.p));
-  }
-}
 
-void UpdateFeatures() {
-  std::vector<double> r;
-  for (const Feature& f : feats_) {
-    if (f.in_fit) r.push_back(f.label == kUpper ? f.ru : f.rf);
-  }
-  const double limit = std::max(o_.outlier_px, 2.5 * Median(r));
-  const double band = 2 * HalfWidth();
-  const cv::Point2d elbow = Elbow(), wrist = Wrist();
-  std::size_t w = 0;
-  for (std::size_t i = 0; i < feats_.size(); ++i) {
-    Feature f = feats_[i];
-    const Motion2D& m = f.label == kUpper ? tu_ : tf_;
-    const cv::Point2d ref = f.label == kUpper ? f.cu : f.cf;
-    const cv::Point2d predicted = m.Apply(ref);
-    const double res = Dist(predicted, cv::Point2d(f.p));
-    const double moved_by_model = Dist(predicted, f.seed_p);
-    const double moved = Dist(cv::Point2d(f.p), f.seed_p);
-    bool keep = true;
-    f.outlier = res > (f.confirmed ? limit : o_.outlier_px) ? f.outlier + 1 : 0;
-    if (f.confirmed) {
-      keep = f.outlier <= o_.outlier_frames_drop;
-    } else if (moved_by_model > o_.confirm_motion_px) {
-      if (moved < 2 * o_.motion_threshold_px) {
-        keep = false;  // the part moved, the feature did not: background or body behind it
-      } else if (f.outlier == 0) {
-        f.confirmed = ++f.agree >= kConfirmFrames;
-      } else {
-        f.agree = 0;
-        keep = f.outlier <= kCandidateOutlierFrames;  // moves, but not with the arm: a shadow
+  // The shoulder from the body box is a rule of thumb; the upper arm's sleeve, wherever it stands
+  // clear, lies on a line through the true shoulder. Each such line (the best direction and
+  // sideways shift of the bar) is accumulated, and the shoulder becomes their least-squares
+  // intersection once lines at different angles are in. Returns the direction refined about it.
+  double RefineShoulder(const cv::Mat& bgr, double deg) {
+    const ArmBar& bar = upper_bar_[side_];
+    const cv::Point2d n0(-DirectionVector(deg).y, DirectionVector(deg).x);
+    double best = -2, best_d = 0, best_a = deg;
+    for (int d = -kShiftPx; d <= kShiftPx; ++d) {
+      for (int a = -2; a <= 2; ++a) {
+        const double score = ArmBarScore(bgr, bar, shoulder_ + d * n0, deg + a, lu_);
+        if (score > best) {
+          best = score;
+          best_d = d;
+          best_a = deg + a;
+        }
       }
-    } else if (f.still > o_.still_frames_drop) {
-      // Thesis rule for features not (yet) on the arm: far from it and still, dropped.
-      const double d =
-          std::min(SegmentDistance(f.p, shoulder_, elbow), SegmentDistance(f.p, elbow, wrist));
-      keep = d <= band;
     }
-    if (keep) feats_[w++] = f;
+    if (best < o_.bar_min_score + 0.1 || std::abs(best_d) >= kShiftPx) return deg;
+    const cv::Point2d p = shoulder_ + best_d * n0;
+    const cv::Point2d u = DirectionVector(best_a);
+    const cv::Vec2d n(-u.y, u.x);
+    const double c = n[0] * p.x + n[1] * p.y;
+    line_a_ += cv::Matx22d(n[0] * n[0], n[0] * n[1], n[0] * n[1], n[1] * n[1]);
+    line_b_ += cv::Vec2d(n[0] * c, n[1] * c);
+    ++line_count_;
+    // Lines must span some angle: the smaller eigenvalue of the mean of n n^T.
+    const cv::Matx22d mean = line_a_ * (1.0 / line_count_);
+    const double tr = mean(0, 0) + mean(1, 1);
+    const double det = mean(0, 0) * mean(1, 1) - mean(0, 1) * mean(1, 0);
+    const double min_eig = 0.5 * tr - std::sqrt(std::max(0.0, 0.25 * tr * tr - det));
+    if (min_eig < 0.03) return deg;  // about 10 degrees of spread
+    const cv::Vec2d sol = line_a_.inv() * line_b_;
+    const cv::Point2d refined(sol[0], sol[1]);
+    if (Dist(refined, shoulder_start_) > 0.35 * arm_len_) return deg;
+    shoulder_ = refined;
+    tu_ = PartMotion(deg, shoulder_);
+    const BarSearch r = SearchArmBar(bgr, bar, shoulder_, deg, lu_, 5, o_.bar_min_score);
+    return r.found ? r.deg : deg;
   }
-  feats_.resize(w);
-}
 
-// Once the elbow bends, the features seeded on a straight arm tell where it is: those that
-// follow the upper arm lie before it, those that follow the forearm beyond it.
-void LearnElbow() {
-  if (std::abs(AngleDiff(fore_deg_, upper_deg_)) < o_.bend_for_elbow_deg) return;
-  std::vector<std::pair<double, int>> samples;
-  for (const Feature& f : feats_) {
-    if (!f.confirmed || f.outlier > 0) continue;
-    if (std::abs(f.ru - f.rf) < 1.5) continue;
-    samples.emplace_back(f.along, f.ru < f.rf ? kUpper : kFore);
-  }
-  int n_upper = 0;
-  for (const auto& s : samples) n_upper += s.second == kUpper;
-  const int n_fore = static_cast<int>(samples.size()) - n_upper;
-  if (n_upper < 3 || n_fore < 3) return;
-  std::sort(samples.begin(), samples.end());
-  // Errors of a split before sample k: forearm samples before it + upper samples after it.
-  int fore_before = 0, upper_after = n_upper;
-  int best_err = upper_after, best_k = 0;
-  for (std::size_t k = 0; k < samples.size(); ++k) {
-    if (samples[k].second == kUpper)
-      --upper_after;
-    else
-      ++fore_before;
-    const int err = fore_before + upper_after;
-    if (err < best_err) {
-      best_err = err;
-      best_k = static_cast<int>(k) + 1;
+  void FitPose(const cv::Mat& bgr) {
+    ComputeReferences();
+    for (Feature& f : feats_) f.in_fit = false;
+    const double bend = AngleDiff(fore_deg_, upper_deg_);
+    Motion2D tu;
+    double up = upper_deg_;
+    if (FitPart(kUpper, shoulder_, upper_deg_, upper_deg_, o_.prior_weight * lu_,
+                CountConfirmed(kUpper) < 3, &tu)) {
+      up = Wrap180(tu.RotationCcwDeg());
+    }
+    up = RefineWithBar(bgr, upper_bar_[side_], shoulder_, up, lu_, &upper_bar_used_);
+    if (upper_bar_used_ && refine_shoulder_) up = RefineShoulder(bgr, up);
+    upper_deg_ = up;
+    tu_ = PartMotion(upper_deg_, shoulder_);
+    const cv::Point2d elbow = Elbow();
+    double fo = Wrap180(upper_deg_ + bend);
+    Motion2D tf;
+    if (FitPart(kFore, elbow, fore_deg_, fo, o_.prior_weight * lf_, CountConfirmed(kFore) < 3,
+                &tf)) {
+      fo = Wrap180(tf.RotationCcwDeg());
+    }
+    fo = RefineWithBar(bgr, fore_bar_[side_], elbow, fo, lf_, &fore_bar_used_);
+    fore_deg_ = fo;
+    tf_ = PartMotion(fore_deg_, elbow);
+    for (Feature& f : feats_) {
+      f.ru = Dist(tu_.Apply(f.cu), cv::Point2d(f.p));
+      f.rf = Dist(tf_.Apply(f.cf), cv::Point2d(f.p));
     }
   }
-  if (best_k <= 0 || best_k >= static_cast<int>(samples.size())) return;
-  const double split = 0.5 * (samples[best_k - 1].first + samples[best_k].first);
-  if (split <= 0.15 * arm_len_ || split >= 0.85 * arm_len_) return;
-  lu_ = std::clamp(0.9 * lu_ + 0.1 * split, 0.3 * arm_len_, 0.7 * arm_len_);
-  // The forearm reaches as far as its farthest features (robustly).
-  std::vector<double> reach;
-  for (const Feature& f : feats_) {
-    if (f.confirmed && f.label == kFore && f.outlier == 0) reach.push_back(f.cf.x);
-  }
-  if (reach.size() >= 5) {
-    std::sort(reach.begin(), reach.end());
-    const double far = reach[reach.size() * 9 / 10];
-    if (far > 0.2 * arm_len_) lf_ = 0.9 * lf_ + 0.1 * far;
-  }
-}
 
-int CountPart(int part) const {
-  int n = 0;
-  for (const Feature& f : feats_) n += f.label == part && (f.confirmed || f.in_fit);
-  return n;
-}
-int CountConfirmed(int part) const {
-  int n = 0;
-  for (const Feature& f : feats_) n += f.label == part && f.confirmed;
-  return n;
-}
-
-// Seeds corners in a band along the current estimate of the arm (both parts), reaching
-// `reach` times the estimated lengths.
-void Seed(const cv::Mat& gray, int side, double reach) {
-  const int room = o_.max_corners - static_cast<int>(feats_.size());
-  if (room <= 0) return;
-  const cv::Point2d s = shoulder_;
-  const cv::Point2d e = s + lu_ * tu_.Scale() * DirectionVector(upper_deg_);
-  const cv::Point2d w = e + reach * lf_ * tf_.Scale() * DirectionVector(fore_deg_);
-  cv::Mat mask(gray.size(), CV_8U, cv::Scalar(0));
-  const int thickness = std::max(3, static_cast<int>(2 * HalfWidth() + 1));
-  cv::line(mask, cv::Point(cvRound(s.x), cvRound(s.y)), cv::Point(cvRound(e.x), cvRound(e.y)),
-           cv::Scalar(255), thickness);
-  cv::line(mask, cv::Point(cvRound(e.x), cvRound(e.y)), cv::Point(cvRound(w.x), cvRound(w.y)),
-           cv::Scalar(255), thickness);
-  std::vector<cv::Point2f> existing;
-  existing.reserve(feats_.size());
-  for (const Feature& f : feats_) existing.push_back(f.p);
-  const std::vector<cv::Point2f> corners = DetectCorners(gray, mask, existing, room, o_);
-  for (const cv::Point2f& c : corners) {
-    Feature f;
-    f.p = f.prev = c;
-    f.seed_p = c;
-    f.seed_upper = upper_deg_;
-    f.seed_fore = fore_deg_;
-    f.side = side;
-    const bool upper = SegmentDistance(c, s, e) <= SegmentDistance(c, e, w);
-    f.along = upper ? ToPartFrame(cv::Point2d(c) - s, upper_deg_).x
-                    : lu_ + ToPartFrame(cv::Point2d(c) - e, fore_deg_).x;
-    f.label = f.along < lu_ ? kUpper : kFore;
-    feats_.push_back(f);
+  void UpdateFeatures() {
+    std::vector<double> r;
+    for (const Feature& f : feats_) {
+      if (f.in_fit) r.push_back(f.label == kUpper ? f.ru : f.rf);
+    }
+    const double limit = std::max(o_.outlier_px, 2.5 * Median(r));
+    const double band = 2 * HalfWidth();
+    const cv::Point2d elbow = Elbow(), wrist = Wrist();
+    std::size_t w = 0;
+    for (std::size_t i = 0; i < feats_.size(); ++i) {
+      Feature f = feats_[i];
+      const Motion2D& m = f.label == kUpper ? tu_ : tf_;
+      const cv::Point2d ref = f.label == kUpper ? f.cu : f.cf;
+      const cv::Point2d predicted = m.Apply(ref);
+      const double res = Dist(predicted, cv::Point2d(f.p));
+      const double moved_by_model = Dist(predicted, f.seed_p);
+      const double moved = Dist(cv::Point2d(f.p), f.seed_p);
+      bool keep = true;
+      f.outlier = res > (f.confirmed ? limit : o_.outlier_px) ? f.outlier + 1 : 0;
+      if (f.confirmed) {
+        keep = f.outlier <= o_.outlier_frames_drop;
+      } else if (moved_by_model > o_.confirm_motion_px) {
+        if (moved < 2 * o_.motion_threshold_px) {
+          keep = false;  // the part moved, the feature did not: background or body behind it
+        } else if (f.outlier == 0) {
+          f.confirmed = ++f.agree >= kConfirmFrames;
+        } else {
+          f.agree = 0;
+          keep = f.outlier <= kCandidateOutlierFrames;  // moves, but not with the arm: a shadow
+        }
+      } else if (f.still > o_.still_frames_drop) {
+        // Thesis rule for features not (yet) on the arm: far from it and still, dropped.
+        const double d =
+            std::min(SegmentDistance(f.p, shoulder_, elbow), SegmentDistance(f.p, elbow, wrist));
+        keep = d <= band;
+      }
+      if (keep) feats_[w++] = f;
+    }
+    feats_.resize(w);
   }
-}
 
-TrackerPose MakePose() const {
-  TrackerPose pose;
-  pose.ok = true;
-  pose.upper_deg = upper_deg_;
-  pose.fore_deg = fore_deg_;
-  if (side_ < 0) {
-    pose.note = "waiting for the first motion to decide the arm's side";
+  // Once the elbow bends, the features seeded on a straight arm tell where it is: those that
+  // follow the upper arm lie before it, those that follow the forearm beyond it.
+  void LearnElbow() {
+    if (std::abs(AngleDiff(fore_deg_, upper_deg_)) < o_.bend_for_elbow_deg) return;
+    std::vector<std::pair<double, int>> samples;
+    for (const Feature& f : feats_) {
+      if (!f.confirmed || f.outlier > 0) continue;
+      if (std::abs(f.ru - f.rf) < 1.5) continue;
+      samples.emplace_back(f.along, f.ru < f.rf ? kUpper : kFore);
+    }
+    int n_upper = 0;
+    for (const auto& s : samples) n_upper += s.second == kUpper;
+    const int n_fore = static_cast<int>(samples.size()) - n_upper;
+    if (n_upper < 3 || n_fore < 3) return;
+    std::sort(samples.begin(), samples.end());
+    // Errors of a split before sample k: forearm samples before it + upper samples after it.
+    int fore_before = 0, upper_after = n_upper;
+    int best_err = upper_after, best_k = 0;
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+      if (samples[k].second == kUpper)
+        --upper_after;
+      else
+        ++fore_before;
+      const int err = fore_before + upper_after;
+      if (err < best_err) {
+        best_err = err;
+        best_k = static_cast<int>(k) + 1;
+      }
+    }
+    if (best_k <= 0 || best_k >= static_cast<int>(samples.size())) return;
+    const double split = 0.5 * (samples[best_k - 1].first + samples[best_k].first);
+    if (split <= 0.15 * arm_len_ || split >= 0.85 * arm_len_) return;
+    lu_ = std::clamp(0.9 * lu_ + 0.1 * split, 0.3 * arm_len_, 0.7 * arm_len_);
+    // The forearm reaches as far as its farthest features (robustly).
+    std::vector<double> reach;
+    for (const Feature& f : feats_) {
+      if (f.confirmed && f.label == kFore && f.outlier == 0) reach.push_back(f.cf.x);
+    }
+    if (reach.size() >= 5) {
+      std::sort(reach.begin(), reach.end());
+      const double far = reach[reach.size() * 9 / 10];
+      if (far > 0.2 * arm_len_) lf_ = 0.9 * lf_ + 0.1 * far;
+    }
+  }
+
+  int CountPart(int part) const {
+    int n = 0;
+    for (const Feature& f : feats_) n += f.label == part && (f.confirmed || f.in_fit);
+    return n;
+  }
+  int CountConfirmed(int part) const {
+    int n = 0;
+    for (const Feature& f : feats_) n += f.label == part && f.confirmed;
+    return n;
+  }
+
+  // Seeds corners in a band along the current estimate of the arm (both parts), reaching
+  // `reach` times the estimated lengths.
+  void Seed(const cv::Mat& gray, int side, double reach) {
+    const int room = o_.max_corners - static_cast<int>(feats_.size());
+    if (room <= 0) return;
+    const cv::Point2d s = shoulder_;
+    const cv::Point2d e = s + lu_ * tu_.Scale() * DirectionVector(upper_deg_);
+    const cv::Point2d w = e + reach * lf_ * tf_.Scale() * DirectionVector(fore_deg_);
+    cv::Mat mask(gray.size(), CV_8U, cv::Scalar(0));
+    const int thickness = std::max(3, static_cast<int>(2 * HalfWidth() + 1));
+    cv::line(mask, cv::Point(cvRound(s.x), cvRound(s.y)), cv::Point(cvRound(e.x), cvRound(e.y)),
+             cv::Scalar(255), thickness);
+    cv::line(mask, cv::Point(cvRound(e.x), cvRound(e.y)), cv::Point(cvRound(w.x), cvRound(w.y)),
+             cv::Scalar(255), thickness);
+    std::vector<cv::Point2f> existing;
+    existing.reserve(feats_.size());
+    for (const Feature& f : feats_) existing.push_back(f.p);
+    const std::vector<cv::Point2f> corners = DetectCorners(gray, mask, existing, room, o_);
+    for (const cv::Point2f& c : corners) {
+      Feature f;
+      f.p = f.prev = c;
+      f.seed_p = c;
+      f.seed_upper = upper_deg_;
+      f.seed_fore = fore_deg_;
+      f.side = side;
+      const bool upper = SegmentDistance(c, s, e) <= SegmentDistance(c, e, w);
+      f.along = upper ? ToPartFrame(cv::Point2d(c) - s, upper_deg_).x
+                      : lu_ + ToPartFrame(cv::Point2d(c) - e, fore_deg_).x;
+      f.label = f.along < lu_ ? kUpper : kFore;
+      feats_.push_back(f);
+    }
+  }
+
+  TrackerPose MakePose() const {
+    TrackerPose pose;
+    pose.ok = true;
+    pose.upper_deg = upper_deg_;
+    pose.fore_deg = fore_deg_;
+    if (side_ < 0) {
+      pose.note = "waiting for the first motion to decide the arm's side";
+      return pose;
+    }
+    pose.have_shoulder = true;
+    pose.shoulder = shoulder_;
+    pose.elbow = Elbow();
+    pose.wrist = Wrist();
+    for (const Feature& f : feats_) {
+      if (!(f.confirmed || f.in_fit)) continue;
+      (f.label == kUpper ? pose.upper_features : pose.fore_features).push_back(f.p);
+    }
+    pose.upper_com = pose.upper_features.empty() ? 0.5 * (pose.shoulder + pose.elbow)
+                                                 : MeanPoint(pose.upper_features);
+    pose.fore_com = pose.fore_features.empty() ? 0.5 * (pose.elbow + pose.wrist)
+                                               : MeanPoint(pose.fore_features);
+    pose.note = "anchored: " + std::to_string(pose.upper_features.size()) + " upper, " +
+                std::to_string(pose.fore_features.size()) + " forearm features";
     return pose;
   }
-  pose.have_shoulder = true;
-  pose.shoulder = shoulder_;
-  pose.elbow = Elbow();
-  pose.wrist = Wrist();
-  for (const Feature& f : feats_) {
-    if (!(f.confirmed || f.in_fit)) continue;
-    (f.label == kUpper ? pose.upper_features : pose.fore_features).push_back(f.p);
-  }
-  pose.upper_com = pose.upper_features.empty() ? 0.5 * (pose.shoulder + pose.elbow)
-                                               : MeanPoint(pose.upper_features);
-  pose.fore_com =
-      pose.fore_features.empty() ? 0.5 * (pose.elbow + pose.wrist) : MeanPoint(pose.fore_features);
-  pose.note = "anchored: " + std::to_string(pose.upper_features.size()) + " upper, " +
-              std::to_string(pose.fore_features.size()) + " forearm features";
-  return pose;
-}
 
-static constexpr double kMinLeverPx = 4;
-static constexpr int kShiftPx = 8;  // sideways search for the sleeve's axis (shoulder refinement)
-                                    // // features this near their joint tell no direction
-static constexpr int kConfirmFrames = 3;            // agreeing frames before a feature is used
-static constexpr int kCandidateOutlierFrames = 15;  // disagreeing frames before it is dropped
+  static constexpr double kMinLeverPx = 4;
+  static constexpr int kShiftPx = 8;  // sideways search for the sleeve's axis (shoulder refinement)
+                                      // // features this near their joint tell no direction
+  static constexpr int kConfirmFrames = 3;            // agreeing frames before a feature is used
+  static constexpr int kCandidateOutlierFrames = 15;  // disagreeing frames before it is dropped
 
-LkOptions o_;
-PyramidFlow flow_;
-cv::Size size_;
-std::vector<cv::Point2d> shoulders_;
-int side_ = -1;
-cv::Point2d shoulder_;
-double head_limit_y_ = -1;
-double arm_len_ = 0, lu_ = 0, lf_ = 0;
-double upper_deg_ = -90, fore_deg_ = -90;
-Motion2D tu_, tf_;
-std::vector<Feature> feats_;
-std::vector<ArmBar> upper_bar_, fore_bar_;  // per shoulder candidate
-std::vector<cv::Vec3d> side_lengths_;       // per shoulder candidate: arm, upper, forearm
-bool upper_bar_used_ = false, fore_bar_used_ = false;
-bool refine_shoulder_ = false;
-cv::Point2d shoulder_start_;
-cv::Matx22d line_a_ = cv::Matx22d::zeros();
-cv::Vec2d line_b_ = cv::Vec2d(0, 0);
-int line_count_ = 0;
-int frame_ = 0;
-int last_seed_ = 0;
+  LkOptions o_;
+  PyramidFlow flow_;
+  cv::Size size_;
+  std::vector<cv::Point2d> shoulders_;
+  int side_ = -1;
+  cv::Point2d shoulder_;
+  double head_limit_y_ = -1;
+  double arm_len_ = 0, lu_ = 0, lf_ = 0;
+  double upper_deg_ = -90, fore_deg_ = -90;
+  Motion2D tu_, tf_;
+  std::vector<Feature> feats_;
+  std::vector<ArmBar> upper_bar_, fore_bar_;  // per shoulder candidate
+  std::vector<cv::Vec3d> side_lengths_;       // per shoulder candidate: arm, upper, forearm
+  bool upper_bar_used_ = false, fore_bar_used_ = false;
+  bool refine_shoulder_ = false;
+  cv::Point2d shoulder_start_;
+  cv::Matx22d line_a_ = cv::Matx22d::zeros();
+  cv::Vec2d line_b_ = cv::Vec2d(0, 0);
+  int line_count_ = 0;
+  int frame_ = 0;
+  int last_seed_ = 0;
 };
 
 }  // namespace
