@@ -193,6 +193,13 @@ void LinkProtocol::OnBytes(std::string_view data, double now_s) {
   last_rx_s_ = now_s_;
   rx_.append(data.data(), data.size());
   Scan(now_s_);
+  // A controller line is at most a few hundred bytes: a longer run without a line end is noise.
+  // Keep only its end (where a prompt would be), so scanning stays linear.
+  constexpr std::size_t kMaxPending = 4096;
+  if (rx_.size() > kMaxPending) {
+    rx_.erase(0, rx_.size() - kMaxPending / 2);
+    ++noise_;
+  }
 }
 
 void LinkProtocol::OnTick(double now_s) {

@@ -249,6 +249,17 @@ TEST(LinkProtocol, ACallbackThatAbortsStopsBeforeTheNextWrite) {
   EXPECT_EQ(refuse.error_message(), "cannot write the journal");
 }
 
+TEST(LinkProtocol, EndlessBytesWithoutALineEndAreDroppedAsNoise) {
+  Fixture f({"SPEED 50"});
+  f.link.TakeOutput();
+  const std::string junk(1000, '#');
+  for (int i = 0; i < 100; ++i) f.link.OnBytes(junk, 0.1 + i * 0.001);
+  EXPECT_EQ(f.link.state(), LinkState::kWaitingReply);
+  EXPECT_GT(f.link.noise_lines(), 0);
+  f.link.OnBytes("\r\nSPEED 50\r\n.", 0.3);
+  EXPECT_EQ(f.link.state(), LinkState::kDone);
+}
+
 TEST(LinkHelpers, ParsesTargetsAndKnowsMotionLines) {
   JointArray j{};
   ASSERT_TRUE(ParsePpointTarget("DO MOVE #PPOINT(1.5, -90, 0,0,0, 2)", &j));
