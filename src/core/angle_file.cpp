@@ -111,8 +111,10 @@ std::string FormatNumber(double value, int decimals) {
     throw std::invalid_argument("FormatNumber: infinite value cannot be written to an angle file");
   }
   if (value == 0) value = 0;  // no "-0.000"
-  char buf[64];
+  // Fixed notation of a large double has up to 309 digits before the point.
+  char buf[512];
   const auto r = std::to_chars(buf, buf + sizeof(buf), value, std::chars_format::fixed, decimals);
+  if (r.ec != std::errc()) throw std::invalid_argument("FormatNumber: too many decimals");
   std::string s(buf, r.ptr);
   if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
   return s;
