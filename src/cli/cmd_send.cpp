@@ -193,7 +193,7 @@ int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
   p.Flag("--dry-run", &o.dry_run, "print every line with its planned time; open no port");
   p.Flag("--resume", &o.resume, "continue after the last line the journal shows acknowledged");
   p.Flag("--restart", &o.restart,
-         "start from the first line without the warning about an unfinished journal");
+         "start over from the first line even though the journal shows an unfinished send");
   p.Int("--resume-at", &o.resume_at, "LINE",
         "continue from this file line (after checking the arm yourself)", 1);
   p.Flag("--list-ports", &o.list_ports, "list the serial ports found and exit");
@@ -329,11 +329,12 @@ int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
       }
     }
   } else if (journal_state.exists && !journal_state.done && journal_state.hash == hash &&
-             journal_state.sent > 0 && !o.restart && !o.dry_run && !global.quiet) {
-    // Starting over is safe (every line is checked again) but replays the moves already made.
-    std::cerr << "armmimic-cli send: warning: " << journal_path << ": an earlier send of " << input
-              << " stopped after " << journal_state.acknowledged << " of " << total
-              << " lines; starting over from the first line (--resume continues instead)\n";
+             journal_state.sent > 0 && !o.restart && !o.dry_run) {
+    // Never replay moves silently: the operator chooses between continuing and starting over.
+    return Fail(journal_path + ": an earlier send of " + input + " stopped after " +
+                std::to_string(journal_state.acknowledged) + " of " + std::to_string(total) +
+                " lines; continue with --resume, or start over from the first line with "
+                "--restart (replays the moves already made)");
   }
 
   // The lines to send: the last monitor SPEED before the resume point goes out again first

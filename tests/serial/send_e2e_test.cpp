@@ -169,7 +169,7 @@ TEST_F(SendE2E, ArmMovedByHandAfterACutIsLeftToTheOperator) {
   ExpectJointsNear(server.joints(), p.targets.back(), "final");
 }
 
-TEST_F(SendE2E, PlainSendAfterAnInterruptedOneStartsOverWithAWarning) {
+TEST_F(SendE2E, PlainSendAfterAnInterruptedOneRefusesUntilTheOperatorChooses) {
   const Program p = MakeProgram(4);
   Write(p);
   sim::EmulatorOptions o = Fast();
@@ -178,10 +178,16 @@ TEST_F(SendE2E, PlainSendAfterAnInterruptedOneStartsOverWithAWarning) {
   ASSERT_TRUE(server.Start(dir_.file("puma")).ok());
   EXPECT_EQ(Send(dir_.file("puma")).exit_code, 1);
   EXPECT_EQ(server.log().size(), 1u);
+  // A plain send must not replay the move already made.
   const test::CliResult again = Send(dir_.file("puma"));
-  ASSERT_EQ(again.exit_code, 0) << again.err;
-  EXPECT_NE(again.err.find("starting over"), std::string::npos) << again.err;
-  EXPECT_EQ(server.log().size(), 1u + p.targets.size());  // the first move is replayed
+  EXPECT_EQ(again.exit_code, 1);
+  EXPECT_NE(again.err.find("--resume"), std::string::npos) << again.err;
+  EXPECT_NE(again.err.find("--restart"), std::string::npos) << again.err;
+  EXPECT_EQ(server.log().size(), 1u);
+  // --restart is the explicit choice to start over: the first move is replayed.
+  const test::CliResult restart = Send(dir_.file("puma"), {"--restart"});
+  ASSERT_EQ(restart.exit_code, 0) << restart.err;
+  EXPECT_EQ(server.log().size(), 1u + p.targets.size());
   ExpectJointsNear(server.joints(), p.targets.back(), "final");
 }
 
