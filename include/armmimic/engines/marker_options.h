@@ -24,8 +24,8 @@ struct MarkerOptions {
   bool thesis_mode = false;
   // Beyond the thesis: a view is lost when the more turned lower marker faces the camera at more
   // than this angle (alpha + yaw, alpha measured in the reference): it is nearly edge-on
-  // (thesis: hidden past about 35 degrees of yaw). 71 loses the views past about 31 degrees.
-  double max_marker_turn_deg = 71;
+  // (thesis: hidden past about 35 degrees of yaw). 70 loses the views past about 30 degrees.
+  double max_marker_turn_deg = 70;
   // ... or when it shows less than this share of its full-face area.
   double min_foreshortening = 0.2;
   // Geometry check: how far (relative to e) the upper marker may be from where the lower pair
