@@ -7,6 +7,7 @@
 #include <QMenu>
 #include <QMimeData>
 #include <QSaveFile>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QVBoxLayout>
@@ -86,6 +87,15 @@ QDockWidget* MainWindow::dock(const QString& title, const QString& name, QWidget
                               Qt::DockWidgetArea area) {
   auto* d = new QDockWidget(title, this);
   d->setObjectName(name);
+  if (w == settings_) {  // a tall panel scrolls instead of pushing the window taller
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(w);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setMinimumWidth(w->sizeHint().width() + 24);
+    w = scroll;
+  }
   d->setWidget(w);
   addDockWidget(area, d);
   return d;

@@ -59,6 +59,8 @@ int main(int argc, char** argv) {
   MainWindow w;
   w.setGeometry(QGuiApplication::primaryScreen()->availableGeometry());
   w.show();
+  QTest::qWait(200);
+  w.resizeDocks({w.findChild<QDockWidget*>("plotDock")}, {300}, Qt::Vertical);
   Shot("01-start");
 
   w.openInputs({sample.filePath("scene.avi")});
