@@ -147,6 +147,17 @@ Field StringField(std::string ControllerProfile::*member, const char* doc) {
           [member](const ControllerProfile& p) { return Escape(p.*member); }, doc};
 }
 
+// `decimals` fixed decimals when that reads back as the same value, else the shortest text that
+// does (a speed of 0.0012 must not be written as "0.0", which the reader refuses).
+std::string FormatExact(double v, int decimals) {
+  std::string s = FormatNumber(v, decimals);
+  double back = 0;
+  if (ParseDouble(s, &back) && back == v) return s;
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof(buf), v);
+  return std::string(buf, r.ptr);
+}
+
 Field DoubleField(double ControllerProfile::*member, const char* doc) {
   return {[member](const std::string& v, ControllerProfile* p) {
             double d = 0;
@@ -154,7 +165,7 @@ Field DoubleField(double ControllerProfile::*member, const char* doc) {
             p->*member = d;
             return std::string();
           },
-          [member](const ControllerProfile& p) { return FormatNumber(p.*member, 3); }, doc};
+          [member](const ControllerProfile& p) { return FormatExact(p.*member, 3); }, doc};
 }
 
 Field IntField(int ControllerProfile::*member, const char* doc) {
@@ -237,7 +248,7 @@ const FieldList& Fields() {
           std::string s;
           for (int j = 0; j < kJoints; ++j) {
             if (j) s += ',';
-            s += FormatNumber(p.joint_speed_at_100_deg_s[j], 1);
+            s += FormatExact(p.joint_speed_at_100_deg_s[j], 1);
           }
           return s;
         },
