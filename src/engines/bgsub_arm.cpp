@@ -185,8 +185,11 @@ double RayFit(const cv::Mat& mask, const cv::Point2d& origin, double d0, double 
 // bend the 30 % rule calls straight is seen. Returns false when no upper-arm ray is covered.
 static bool RayFitArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point2d& shoulder_px,
                       const BgsubOptions& options, bool was_bent, bool rule_bent,
-                      double upper_len_px, double fore_len_px, ArmGeometry* g) {
-  const double up = RayFit(mask, shoulder_px, 0.35 * upper_len_px, 0.95 * upper_len_px, kNaN, 0);
+                      double upper_len_px, double fore_len_px, ArmGeometry* g,
+                      double fixed_up = kNaN) {
+  const double up = std::isfinite(fixed_up) ? fixed_up
+                                            : RayFit(mask, shoulder_px, 0.35 * upper_len_px,
+                                                     0.95 * upper_len_px, kNaN, 0);
   if (!std::isfinite(up)) return false;
   const cv::Point2d e = shoulder_px + DirectionVector(up) * upper_len_px;
   const double fo = RayFit(mask, e, 0.25 * fore_len_px, 0.8 * fore_len_px, up + 180, 25);
@@ -219,6 +222,25 @@ static bool RayFitArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point2
   g->reach_px = ReachAlong(g->contour, shoulder_px, up);
   g->note = "bent arm (ray fit)";
   return true;
+}
+
+void RefitWithUpper(const cv::Mat& mask, const cv::Rect& box, const cv::Point2d& shoulder_px,
+                    const BgsubOptions& options, bool was_bent, double upper_deg,
+                    double upper_len_px, double fore_len_px, ArmGeometry* g) {
+  const bool rule_bent =
+      g->defect_depth_px >
+      (options.straight_ratio + (was_bent ? -1 : 1) * options.bend_hysteresis) * g->axes.major;
+  RayFitArm(mask, box, shoulder_px, options, was_bent, rule_bent, upper_len_px, fore_len_px, g,
+            upper_deg);
+  if (!g->bent) {
+    // Straight: one direction for both, the person-mask one near the shoulder.
+    g->upper_deg = upper_deg;
+    g->fore_deg = upper_deg;
+    const cv::Point2d v = DirectionVector(upper_deg);
+    g->reach_px = ReachAlong(g->contour, shoulder_px, upper_deg);
+    g->wrist_px = shoulder_px + v * g->reach_px;
+    g->elbow_px = shoulder_px + v * (g->reach_px / 2);
+  }
 }
 
 ArmGeometry AnalyzeArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point2d& shoulder_px,

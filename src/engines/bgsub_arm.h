@@ -60,6 +60,13 @@ ArmGeometry AnalyzeArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point
                        const BgsubOptions& options, bool was_bent, double upper_len_px = kNaN,
                        double fore_len_px = kNaN);
 
+// Improved: redoes the bent/straight decision and the forearm of `g` (from AnalyzeArm) with the
+// upper arm's direction given (found elsewhere, e.g. in the person mask): the elbow at
+// `upper_len_px` along it, the forearm the best ray from there.
+void RefitWithUpper(const cv::Mat& mask, const cv::Rect& box, const cv::Point2d& shoulder_px,
+                    const BgsubOptions& options, bool was_bent, double upper_deg,
+                    double upper_len_px, double fore_len_px, ArmGeometry* g);
+
 // The direction from `origin` along which `mask` is covered best between distances d0 and d1
 // (1-degree rays; the middle of the widest near-best run). Rays within `exclude_half_deg` of
 // `exclude_deg` are skipped. NaN when no ray is covered for at least half its length.

@@ -31,6 +31,9 @@ std::vector<cv::Point> Offset(std::vector<cv::Point> pts, const cv::Point& o) {
   return pts;
 }
 
+// The upper arm within this many degrees of its rest pose is fitted in the person mask.
+constexpr double kPersonFitDeg = 35;
+
 class BgsubEngine final : public Engine {
  public:
   explicit BgsubEngine(const BgsubOptions& options) : options_(options) {}
@@ -175,7 +178,18 @@ class BgsubEngine final : public Engine {
       m->note = g.note;
       return;
     }
-    if (improved && options_.rest_pose) ForearmOnly(*shoulder, &g);
+    if (improved && options_.rest_pose && !ForearmOnly(*shoulder, &g) &&
+        std::fabs(AngleDiff(g.upper_deg, options_.rest_deg)) < kPersonFitDeg &&
+        options_.upper_from_person) {
+      // The upper arm near its rest pose overlaps its standstill place, where nothing moved: its
+      // visible part is off its axis. The person mask shows all of it.
+      const double fit = scene_.UpperArmFromPerson(*shoulder, side, options_, &buffers_);
+      if (std::isfinite(fit) && std::fabs(AngleDiff(fit, options_.rest_deg)) < kPersonFitDeg) {
+        bgsub::RefitWithUpper(buffers_.arm, box, *shoulder, options_, was_bent_, fit, upper_len,
+                              fore_len, &g);
+        g.note += ", upper arm from the person mask";
+      }
+    }
     was_bent_ = g.bent;
     const cv::Point o = region_.tl();
     m->phase = MeasurementPhase::kOk;
@@ -197,21 +211,22 @@ class BgsubEngine final : public Engine {
   // The upper arm at rest (no moved pixels along it) and the moving region starting near the
   // rest elbow: only the forearm moved, e.g. flexing from the hanging pose. The standstill hides
   // the upper arm, so it keeps the rest direction.
-  void ForearmOnly(const cv::Point2d& shoulder, bgsub::ArmGeometry* g) const {
+  bool ForearmOnly(const cv::Point2d& shoulder, bgsub::ArmGeometry* g) const {
     const double upper_len = options_.upper_arm_fraction * scene_.ref_reach_px;
-    if (!(upper_len > 0)) return;
+    if (!(upper_len > 0)) return false;
     double nearest = 1e18;
     for (const cv::Point& p : g->contour) {
       nearest = std::min(nearest, std::hypot(p.x - shoulder.x, p.y - shoulder.y));
     }
-    if (nearest < 0.6 * upper_len || !scene_.ArmAtRest(shoulder, options_, buffers_)) return;
-    const cv::Point2d elbow = shoulder + DirectionVector(options_.rest_deg) * upper_len;
+    if (nearest < 0.6 * upper_len || !scene_.ArmAtRest(shoulder, options_, buffers_)) return false;
+    const double up = options_.rest_deg;
+    const cv::Point2d elbow = shoulder + DirectionVector(up) * upper_len;
     const cv::Point2d com(g->whole.cx, g->whole.cy);
-    g->upper_deg = options_.rest_deg;
+    g->upper_deg = up;
     g->fore_deg = ResolveDirection(g->axis_deg, elbow, com);
     g->bent = std::fabs(AngleDiff(g->fore_deg, g->upper_deg)) > 10;
     g->elbow_px = elbow;
-    g->upper_com_px = shoulder + DirectionVector(options_.rest_deg) * (upper_len / 2);
+    g->upper_com_px = shoulder + DirectionVector(up) * (upper_len / 2);
     g->fore_com_px = com;
     double far = -1;
     for (const cv::Point& p : g->contour) {
@@ -220,6 +235,7 @@ class BgsubEngine final : public Engine {
     }
     g->reach_px = upper_len + far;
     g->note = "upper arm at rest, forearm moved";
+    return true;
   }
 
   // Nothing moved and the arm's standstill place is unchanged: the arm is at its rest pose.

@@ -16,6 +16,9 @@ cv::Rect Expand(const cv::Rect& r, double fraction, const cv::Size& limit) {
          cv::Rect(0, 0, limit.width, limit.height);
 }
 
+// The torso edge, in arm half-widths inward of the shoulder (the hanging arm's inner edge).
+constexpr double kTorsoMargin = 1.0;
+
 }  // namespace
 
 std::optional<cv::Point2d> SceneModel::Shoulder(int arm_side, const BgsubOptions& options) const {
@@ -51,6 +54,34 @@ bool SceneModel::ArmAtRest(const cv::Point2d& shoulder, const BgsubOptions& opti
     }
   }
   return total > 0 && changed < 0.2 * total;
+}
+
+double SceneModel::UpperArmFromPerson(const cv::Point2d& shoulder, int arm_side,
+                                      const BgsubOptions& options, Buffers* buf) const {
+  if (!(ref_reach_px > 0) || !(arm_half_width_px > 0) || arm_side == 0 || buf->person.empty()) {
+    return kNaN;
+  }
+  const double upper = options.upper_arm_fraction * ref_reach_px;
+  const int r = static_cast<int>(std::ceil(upper)) + 2;
+  const cv::Rect full(0, 0, buf->person.cols, buf->person.rows);
+  const cv::Rect roi =
+      cv::Rect(cvFloor(shoulder.x) - r, cvFloor(shoulder.y) - r, 2 * r + 1, 2 * r + 1) & full;
+  if (roi.area() <= 0) return kNaN;
+  buf->person(roi).copyTo(buf->upper_fit);
+  // The torso: everything on the inner side of the hanging arm's inner edge.
+  const double edge = shoulder.x - arm_side * kTorsoMargin * arm_half_width_px - roi.x;
+  for (int y = 0; y < buf->upper_fit.rows; ++y) {
+    uchar* row = buf->upper_fit.ptr<uchar>(y);
+    if (arm_side > 0) {
+      const int end = std::clamp(static_cast<int>(std::ceil(edge)), 0, buf->upper_fit.cols);
+      std::fill(row, row + end, uchar{0});
+    } else {
+      const int begin = std::clamp(static_cast<int>(std::floor(edge)) + 1, 0, buf->upper_fit.cols);
+      std::fill(row + begin, row + buf->upper_fit.cols, uchar{0});
+    }
+  }
+  const cv::Point2d origin(shoulder.x - roi.x, shoulder.y - roi.y);
+  return RayFit(buf->upper_fit, origin, 0.35 * upper, 0.95 * upper, options.rest_deg + 180, 120);
 }
 
 bool FindArmMask(const cv::Mat& gray, const cv::Mat& bgr, const SceneModel& scene,

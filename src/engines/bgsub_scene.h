@@ -19,6 +19,7 @@ namespace armmimic::bgsub {
 // Per-frame working buffers, reused so that a frame allocates nothing after the first.
 struct Buffers {
   cv::Mat person, moved, candidate, labels, arm;
+  cv::Mat upper_fit;  // the person mask near the shoulder, torso removed (UpperArmFromPerson)
   std::vector<Component> components;
 };
 
@@ -46,6 +47,12 @@ struct SceneModel {
   // move) judged from the pixels that neither moved nor were vacated around the rest upper arm.
   bool ArmAtRest(const cv::Point2d& shoulder, const BgsubOptions& options,
                  const Buffers& buffers) const;
+  // Improved: the direction of an upper arm near its rest pose, which the frame-vs-standstill
+  // difference cannot see: the ray from the shoulder (within 60 degrees of the rest pose) best
+  // covered by the person mask (frame vs background) once the torso, everything on the inner
+  // side of the hanging arm, is removed. NaN when no such ray is covered.
+  double UpperArmFromPerson(const cv::Point2d& shoulder, int arm_side, const BgsubOptions& options,
+                            Buffers* buffers) const;
 };
 
 // The moving arm of `gray` (the analysed region): frame vs background gives the person, frame vs

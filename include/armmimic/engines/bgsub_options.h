@@ -31,6 +31,7 @@ struct BgsubOptions {
   bool rest_pose = true;                 // an unmoved arm is at its standstill pose, not lost
   double rest_deg = -90;                 // the standstill pose: arms hanging (thesis 5.2.2)
   double upper_arm_fraction = 0.45;      // upper arm / (shoulder-to-fingertip reach)
+  bool upper_from_person = true;  // upper arm near rest: fit it in the person mask, torso removed
 
   Status Check() const;  // messages name the CLI flag where there is one
 };
