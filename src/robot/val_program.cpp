@@ -429,10 +429,11 @@ Status CheckLine(const std::string& raw_line, double time_s, SafetyState& state)
       if (!ParseList(rest, &v) || v.size() != 3) {
         return Status::Error(cmd + "expected DRIVE joint,change,speed");
       }
-      const int joint = static_cast<int>(v[0]);
-      if (v[0] != joint || joint < 1 || joint > kJoints) {
+      // Range first: converting a double outside int's range is undefined.
+      if (!(v[0] >= 1 && v[0] <= kJoints) || v[0] != std::floor(v[0])) {
         return Status::Error(cmd + "joint must be 1..6");
       }
+      const int joint = static_cast<int>(v[0]);
       if (!(v[2] > 0 && v[2] <= 100)) return Status::Error(cmd + "speed must be in (0,100]");
       if (!state.have_position) {
         return Status::Error(cmd +

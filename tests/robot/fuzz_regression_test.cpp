@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "armmimic/robot/profile.h"
+#include "armmimic/robot/val_program.h"
 
 namespace armmimic::robot {
 namespace {
@@ -27,6 +28,20 @@ TEST(FuzzRegression, ProfileWithSmallValuesReadsBackUnchanged) {
   // Ordinary values keep their usual fixed decimals.
   EXPECT_NE(FormatProfile(q).find("joint_speed_at_100_deg_s = 60.0,60.0,60.0,120.0,120.0,0.0012"),
             std::string::npos);
+}
+
+// fuzz_val_program (UBSan): "DRIVE 5555...554,-10,50" converted the joint number to int before
+// checking its range, which is undefined for a value outside int's range.
+TEST(FuzzRegression, DriveWithHugeJointNumberIsRefused) {
+  SafetyState st = SafetyState::For(JointLimits(), ControllerProfile());
+  ASSERT_TRUE(CheckLine("SPEED 50", st).ok());
+  ASSERT_TRUE(CheckLine("DO MOVE #PPOINT(0,-90,0,0,0,0)", st).ok());
+  const Status s =
+      CheckLine("DO DRIVE 5555555555555555555555555555555555555555555555555554,-10,50", st);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("joint must be 1..6"), std::string::npos) << s.message();
+  EXPECT_FALSE(CheckLine("DO DRIVE -1e300,-10,50", st).ok());
+  EXPECT_TRUE(CheckLine("DO DRIVE 2,-10,50", st).ok());
 }
 
 }  // namespace
