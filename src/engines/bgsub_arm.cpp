@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include <opencv2/imgproc.hpp>
 
@@ -54,7 +55,8 @@ void FinishStraight(const cv::Mat& mask, const cv::Rect& box, const cv::Point2d&
     // the wrong side of a misplaced shoulder).
     double best = -1;
     for (const cv::Point& p : g->contour) {
-      const double d = std::hypot(p.x - shoulder.x, p.y - shoulder.y);
+      const double d =
+          (p.x - shoulder.x) * (p.x - shoulder.x) + (p.y - shoulder.y) * (p.y - shoulder.y);
       if (d > best) {
         best = d;
         towards = p;
@@ -145,6 +147,12 @@ double ReachAlong(const std::vector<cv::Point>& contour, const cv::Point2d& orig
 double RayFit(const cv::Mat& mask, const cv::Point2d& origin, double d0, double d1,
               double exclude_deg, double exclude_half_deg) {
   constexpr int kRays = 360;
+  // The 1-degree ray directions, computed once (sin/cos were a tenth of the ray fit's time).
+  static const std::vector<cv::Point2d> kDirections = [] {
+    std::vector<cv::Point2d> v(kRays);
+    for (int k = 0; k < kRays; ++k) v[static_cast<std::size_t>(k)] = DirectionVector(k - 179.0);
+    return v;
+  }();
   const int samples = std::max(2, static_cast<int>(d1 - d0));
   int score[kRays];
   int best = 0;
@@ -154,7 +162,7 @@ double RayFit(const cv::Mat& mask, const cv::Point2d& origin, double d0, double 
     if (std::isfinite(exclude_deg) && std::fabs(AngleDiff(deg, exclude_deg)) < exclude_half_deg) {
       continue;
     }
-    const cv::Point2d v = DirectionVector(deg);
+    const cv::Point2d v = kDirections[static_cast<std::size_t>(k)];
     for (int i = 0; i < samples; ++i) {
       const double t = d0 + (d1 - d0) * i / (samples - 1);
       const int x = cvRound(origin.x + v.x * t), y = cvRound(origin.y + v.y * t);

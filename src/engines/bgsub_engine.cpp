@@ -214,10 +214,12 @@ class BgsubEngine final : public Engine {
   bool ForearmOnly(const cv::Point2d& shoulder, bgsub::ArmGeometry* g) const {
     const double upper_len = options_.upper_arm_fraction * scene_.ref_reach_px;
     if (!(upper_len > 0)) return false;
-    double nearest = 1e18;
+    double nearest2 = 1e36;
     for (const cv::Point& p : g->contour) {
-      nearest = std::min(nearest, std::hypot(p.x - shoulder.x, p.y - shoulder.y));
+      const double dx = p.x - shoulder.x, dy = p.y - shoulder.y;
+      nearest2 = std::min(nearest2, dx * dx + dy * dy);
     }
+    const double nearest = std::sqrt(nearest2);
     if (nearest < 0.6 * upper_len || !scene_.ArmAtRest(shoulder, options_, buffers_)) return false;
     const double up = options_.rest_deg;
     const cv::Point2d elbow = shoulder + DirectionVector(up) * upper_len;

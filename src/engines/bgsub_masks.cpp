@@ -1,8 +1,11 @@
 #include "bgsub_masks.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 
 #include <opencv2/imgproc.hpp>
 
@@ -80,15 +83,30 @@ void ColorDifferenceMask(const cv::Mat& image, const cv::Mat& reference, int off
 void RemoveShadow(const cv::Mat& bgr, const cv::Mat& background_bgr, cv::Mat* mask) {
   CV_Assert(bgr.type() == CV_8UC3 && background_bgr.type() == CV_8UC3 &&
             bgr.size() == background_bgr.size() && mask->size() == bgr.size());
+  // 1 / (v + 1) for every byte: a multiplication per channel instead of a division.
+  static const std::array<float, 256> kInverse = [] {
+    std::array<float, 256> t{};
+    for (int v = 0; v < 256; ++v) t[static_cast<std::size_t>(v)] = 1.0f / (v + 1.0f);
+    return t;
+  }();
   for (int y = 0; y < bgr.rows; ++y) {
     uchar* m = mask->ptr<uchar>(y);
     const cv::Vec3b* f = bgr.ptr<cv::Vec3b>(y);
     const cv::Vec3b* b = background_bgr.ptr<cv::Vec3b>(y);
     for (int x = 0; x < bgr.cols; ++x) {
-      if (!m[x]) continue;
+      if (!m[x]) {
+        // Skip empty stretches of the mask eight bytes at a time.
+        while (x + 8 <= bgr.cols) {
+          std::uint64_t word;
+          std::memcpy(&word, m + x, sizeof word);
+          if (word != 0) break;
+          x += 8;
+        }
+        if (x >= bgr.cols || !m[x]) continue;
+      }
       float lo = 10, hi = 0;
       for (int c = 0; c < 3; ++c) {
-        const float r = (f[x][c] + 1.0f) / (b[x][c] + 1.0f);
+        const float r = (f[x][c] + 1.0f) * kInverse[b[x][c]];
         lo = std::min(lo, r);
         hi = std::max(hi, r);
       }
