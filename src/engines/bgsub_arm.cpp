@@ -16,13 +16,14 @@ constexpr int kMinPartPixels = 12;
 
 double Dot(const cv::Point2d& a, const cv::Point2d& b) { return a.x * b.x + a.y * b.y; }
 
-double DistanceToSegment(const cv::Point2d& p, const cv::Point2d& a, const cv::Point2d& b) {
+// Squared distance from p to the segment ab (compared, never needed as a length).
+double SquaredDistanceToSegment(const cv::Point2d& p, const cv::Point2d& a, const cv::Point2d& b) {
   const cv::Point2d ab = b - a;
   const double len2 = Dot(ab, ab);
   double t = len2 > 0 ? Dot(p - a, ab) / len2 : 0;
   t = std::clamp(t, 0.0, 1.0);
   const cv::Point2d q = a + ab * t;
-  return std::hypot(p.x - q.x, p.y - q.y);
+  return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y);
 }
 
 cv::Point2d Centre(const RegionMoments& m) { return {m.cx, m.cy}; }
@@ -110,7 +111,7 @@ cv::Point2d FarthestFrom(const cv::Mat& mask, const cv::Rect& box, const cv::Poi
   for (const cv::Point& p : contour) {
     const cv::Point2d d(p.x - from.x, p.y - from.y);
     if (Dot(d, side) <= 0) continue;
-    const double dist = std::hypot(d.x, d.y);
+    const double dist = d.x * d.x + d.y * d.y;
     if (dist > best) {
       best = dist;
       best_p = p;
@@ -163,11 +164,17 @@ double RayFit(const cv::Mat& mask, const cv::Point2d& origin, double d0, double 
       continue;
     }
     const cv::Point2d v = kDirections[static_cast<std::size_t>(k)];
+    int covered = 0;
     for (int i = 0; i < samples; ++i) {
       const double t = d0 + (d1 - d0) * i / (samples - 1);
       const int x = cvRound(origin.x + v.x * t), y = cvRound(origin.y + v.y * t);
-      if (x >= 0 && y >= 0 && x < mask.cols && y < mask.rows && mask.at<uchar>(y, x)) ++score[k];
+      if (static_cast<unsigned>(x) < static_cast<unsigned>(mask.cols) &&
+          static_cast<unsigned>(y) < static_cast<unsigned>(mask.rows) &&
+          mask.data[static_cast<std::size_t>(y) * mask.step[0] + static_cast<std::size_t>(x)]) {
+        ++covered;
+      }
     }
+    score[k] = covered;
     best = std::max(best, score[k]);
   }
   if (best * 2 < samples) return kNaN;
@@ -217,7 +224,7 @@ static bool RayFitArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point2
       mask, box,
       [&](int x, int y) {
         const cv::Point2d p(x, y);
-        return DistanceToSegment(p, shoulder_px, e) <= DistanceToSegment(p, e, w);
+        return SquaredDistanceToSegment(p, shoulder_px, e) <= SquaredDistanceToSegment(p, e, w);
       },
       &ua, &fa);
   g->bent = true;
@@ -338,7 +345,7 @@ ArmGeometry AnalyzeArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point
               mask, box,
               [&](int x, int y) {
                 const cv::Point2d p(x, y);
-                return DistanceToSegment(p, s, e) <= DistanceToSegment(p, e, w);
+                return SquaredDistanceToSegment(p, s, e) <= SquaredDistanceToSegment(p, e, w);
               },
               &ua, &fa)) {
         break;
