@@ -331,10 +331,12 @@ int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
   } else if (journal_state.exists && !journal_state.done && journal_state.hash == hash &&
              journal_state.sent > 0 && !o.restart && !o.dry_run) {
     // Never replay moves silently: the operator chooses between continuing and starting over.
-    return Fail(journal_path + ": an earlier send of " + input + " stopped after " +
+    // The journal cannot tell a send that stopped from one still running on another terminal.
+    return Fail(journal_path + ": an earlier send of " + input + " has not finished (" +
                 std::to_string(journal_state.acknowledged) + " of " + std::to_string(total) +
-                " lines; continue with --resume, or start over from the first line with "
-                "--restart (replays the moves already made)");
+                " lines acknowledged; if it is still running, let it end); continue with "
+                "--resume, or start over from the first line with --restart (replays the moves "
+                "already made)");
   }
 
   // The lines to send: the last monitor SPEED before the resume point goes out again first

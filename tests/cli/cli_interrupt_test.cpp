@@ -30,16 +30,17 @@ bool Contains(const std::string& text, const std::string& part) {
 }
 
 // A scene long enough that an analysis is still running when the test interrupts it:
-// 20 empty, 20 standstill and 900 moving frames of 320x240.
+// 20 empty, 20 standstill and 600 moving frames of 240x180.
 constexpr int kBackgroundFrames = 20;
 constexpr int kStandstillFrames = 20;
-constexpr int kMotionFrames = 900;
+constexpr int kMotionFrames = 600;
 
 const std::string& LongScene() {
   static test::TempDir* dir = [] {
     auto* d = new test::TempDir();
     synth::ArmSceneOptions so;
     so.seed = 11;
+    so.size = {240, 180};
     so.background_frames = kBackgroundFrames;
     so.standstill_frames = kStandstillFrames;
     so.motion_frames = kMotionFrames;

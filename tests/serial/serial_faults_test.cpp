@@ -155,6 +155,7 @@ TEST_F(SerialFaults, PortInUseByTheSameProgramLeavesTheRunningJournalAlone) {
   const test::CliResult plain = Send();
   EXPECT_EQ(plain.exit_code, 1) << plain.err;
   EXPECT_TRUE(Contains(plain.err, val_ + ".journal")) << plain.err;
+  EXPECT_TRUE(Contains(plain.err, "has not finished")) << plain.err;  // not "stopped": it runs
   // A --resume (the journal check passes) or --restart reaches the port and finds it taken,
   // before it writes anything to the journal.
   for (const char* flag : {"--resume", "--restart"}) {
