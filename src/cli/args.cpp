@@ -1,5 +1,7 @@
 #include "args.h"
 
+#include "armmimic/core/text.h"
+
 #include <charconv>
 #include <cmath>
 #include <iostream>
@@ -20,16 +22,7 @@ std::string LongName(const std::vector<std::string>& names) { return names.back(
 
 }  // namespace
 
-bool ParseDoubleArg(const std::string& value, double* out) {
-  if (value.empty()) return false;
-  const char* first = value.data();
-  if (*first == '+') ++first;
-  double v = 0;
-  const auto r = std::from_chars(first, value.data() + value.size(), v);
-  if (r.ec != std::errc() || r.ptr != value.data() + value.size() || !std::isfinite(v)) return false;
-  *out = v;
-  return true;
-}
+bool ParseDoubleArg(const std::string& value, double* out) { return ParseFiniteDouble(value, out); }
 
 bool ParseIntArg(const std::string& value, int* out) {
   if (value.empty()) return false;

@@ -1,4 +1,5 @@
 #include "armmimic/core/angle_file.h"
+#include "armmimic/core/text.h"
 
 #include <charconv>
 #include <cmath>
@@ -12,91 +13,11 @@
 
 namespace armmimic {
 
-const char* const kAngleColumns[11] = {"frame",    "time_s",   "status",   "upper_deg",
-                                       "fore_deg", "yaw_deg",  "bend_deg", "upper_cx",
-                                       "upper_cy", "fore_cx",  "fore_cy"};
+const char* const kAngleColumns[11] = {"frame",    "time_s",  "status",   "upper_deg",
+                                       "fore_deg", "yaw_deg", "bend_deg", "upper_cx",
+                                       "upper_cy", "fore_cx", "fore_cy"};
 
-namespace {
-
-std::vector<std::string> SplitTabs(const std::string& line) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t tab = line.find('\t', start);
-    if (tab == std::string::npos) {
-      out.push_back(line.substr(start));
-      return out;
-    }
-    out.push_back(line.substr(start, tab - start));
-    start = tab + 1;
-  }
-}
-
-std::string PercentEncode(const std::string& v) {
-  std::string out;
-  for (char c : v) {
-    if (c == ' ') out += "%20";
-    else if (c == '%') out += "%25";
-    else if (c == '\t') out += "%09";
-    else if (c == '\n') out += "%0A";
-    else if (c == '\r') out += "%0D";
-    else out += c;
-  }
-  return out;
-}
-
-std::string PercentDecode(const std::string& v) {
-  std::string out;
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    if (v[i] == '%' && i + 2 < v.size()) {
-      int code = 0;
-      const auto r = std::from_chars(v.data() + i + 1, v.data() + i + 3, code, 16);
-      if (r.ec == std::errc() && r.ptr == v.data() + i + 3) {
-        out += static_cast<char>(code);
-        i += 2;
-        continue;
-      }
-    }
-    out += v[i];
-  }
-  return out;
-}
-
-// Parses a number field: a finite decimal or "nan". `allow_nan` false rejects "nan".
-bool ParseNumber(const std::string& field, bool allow_nan, double* out) {
-  if (field == "nan") {
-    if (!allow_nan) return false;
-    *out = kNaN;
-    return true;
-  }
-  if (field.empty()) return false;
-  const char* first = field.data();
-  const char* last = field.data() + field.size();
-  if (*first == '+') return false;
-  // from_chars accepts "inf"/"infinity"/"nan(...)": reject anything that is not plain decimal.
-  for (const char* p = first; p != last; ++p) {
-    const char c = *p;
-    if (!((c >= '0' && c <= '9') || c == '.' || c == '-' || c == 'e' || c == 'E' || c == '+')) {
-      return false;
-    }
-  }
-  double v = 0;
-  const auto r = std::from_chars(first, last, v, std::chars_format::general);
-  if (r.ec != std::errc() || r.ptr != last || !std::isfinite(v)) return false;
-  *out = v;
-  return true;
-}
-
-bool ParseFrameIndex(const std::string& field, int* out) {
-  if (field.empty() || field.size() > 10) return false;
-  int v = 0;
-  const auto r = std::from_chars(field.data(), field.data() + field.size(), v, 10);
-  if (r.ec != std::errc() || r.ptr != field.data() + field.size() || v < 0) return false;
-  *out = v;
-  return true;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 std::string AngleFile::Meta(const std::string& key, const std::string& fallback) const {
   for (const auto& [k, v] : meta) {
@@ -179,8 +100,8 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
     if (!got_any) break;
     ++line_no;
     if (too_long || line.size() > kMaxAngleLineLength) {
-      return err(line_no, "line is longer than " + std::to_string(kMaxAngleLineLength) +
-                              " characters");
+      return err(line_no,
+                 "line is longer than " + std::to_string(kMaxAngleLineLength) + " characters");
     }
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.find('\0') != std::string::npos) return err(line_no, "line contains a NUL byte");
@@ -212,7 +133,8 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
       for (std::size_t i = 0; i < 11; ++i) {
         if (i >= cols.size() || cols[i] != kAngleColumns[i]) {
           std::string expected;
-          for (std::size_t j = 0; j < 11; ++j) expected += (j ? "\\t" : "") + std::string(kAngleColumns[j]);
+          for (std::size_t j = 0; j < 11; ++j)
+            expected += (j ? "\\t" : "") + std::string(kAngleColumns[j]);
           return err(line_no, "bad column header: column " + std::to_string(i + 1) + " is \"" +
                                   (i < cols.size() ? cols[i] : std::string()) +
                                   "\", expected the header " + expected);
@@ -234,11 +156,12 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
       return err(line_no, "frame \"" + f[0] + "\" is not a non-negative integer");
     }
     if (row.frame <= last_frame) {
-      return err(line_no, "frame " + f[0] + (row.frame == last_frame ? " is repeated" : " is out of order") +
+      return err(line_no, "frame " + f[0] +
+                              (row.frame == last_frame ? " is repeated" : " is out of order") +
                               " (previous row is frame " + std::to_string(last_frame) + ")");
     }
     last_frame = row.frame;
-    if (!ParseNumber(f[1], false, &row.time_s)) {
+    if (!ParseTableNumber(f[1], false, &row.time_s)) {
       return err(line_no, "time_s \"" + f[1] + "\" is not a finite number");
     }
     if (f[2] == "ok") {
@@ -248,10 +171,10 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
     } else {
       return err(line_no, "status \"" + f[2] + "\" is neither ok nor lost");
     }
-    double* values[8] = {&row.upper_deg, &row.fore_deg, &row.yaw_deg,  &row.bend_deg,
+    double* values[8] = {&row.upper_deg, &row.fore_deg, &row.yaw_deg, &row.bend_deg,
                          &row.upper_cx,  &row.upper_cy, &row.fore_cx, &row.fore_cy};
     for (int i = 0; i < 8; ++i) {
-      if (!ParseNumber(f[3 + i], true, values[i])) {
+      if (!ParseTableNumber(f[3 + i], true, values[i])) {
         return err(line_no, std::string(kAngleColumns[3 + i]) + " \"" + f[3 + i] +
                                 "\" is not a number (use '.' decimals, or nan)");
       }
@@ -262,8 +185,8 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
     }
     for (int i = 0; i < 4; ++i) {
       if (!std::isnan(*values[i]) && (*values[i] <= -180.0 - 1e-9 || *values[i] > 180.0 + 1e-9)) {
-        return err(line_no, std::string(kAngleColumns[3 + i]) + " " + f[3 + i] +
-                                " is outside (-180, 180]");
+        return err(line_no,
+                   std::string(kAngleColumns[3 + i]) + " " + f[3 + i] + " is outside (-180, 180]");
       }
     }
     if (!std::isnan(row.yaw_deg) && row.yaw_deg < 0) {
@@ -273,7 +196,8 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
     out->rows.push_back(std::move(row));
   }
   if (!have_header) {
-    return Status::Error(source_name + ": no column header found (is this an armmimic angle file?)");
+    return Status::Error(source_name +
+                         ": no column header found (is this an armmimic angle file?)");
   }
   return Status::Ok();
 }
@@ -300,8 +224,8 @@ int AngleFileWriter::rows_written() const { return impl_->rows; }
 
 namespace {
 std::string HeaderText(const AngleMeta& meta, bool file_column) {
-  std::string s = std::string(kAngleFileMagic) + "\n" + FormatMetaLine(meta) + "\n" +
-                  kAngleFileUnits + "\n";
+  std::string s =
+      std::string(kAngleFileMagic) + "\n" + FormatMetaLine(meta) + "\n" + kAngleFileUnits + "\n";
   for (int i = 0; i < 11; ++i) s += (i ? "\t" : "") + std::string(kAngleColumns[i]);
   if (file_column) s += "\tfile";
   return s + "\n";
@@ -326,7 +250,8 @@ Status AngleFileWriter::Open(const std::string& path, const AngleMeta& meta, boo
 Status AngleFileWriter::Write(const AngleRow& row) {
   if (!impl_->open) return Status::Error("angle file is not open");
   if (impl_->file_column && row.file.find_first_of("\t\n\r") != std::string::npos) {
-    return Status::Error(impl_->path + ": file name \"" + row.file + "\" contains a tab or newline");
+    return Status::Error(impl_->path + ": file name \"" + row.file +
+                         "\" contains a tab or newline");
   }
   const std::string s = FormatAngleRow(row, impl_->file_column) + "\n";
   if (std::fputs(s.c_str(), impl_->file.file()) < 0) {

@@ -1,4 +1,5 @@
 #include "armmimic/robot/limits.h"
+#include "armmimic/core/text.h"
 
 #include <algorithm>
 #include <charconv>
@@ -10,18 +11,6 @@
 
 namespace armmimic::robot {
 namespace {
-
-bool ParseNumber(const std::string& text, double* out) {
-  if (text.empty()) return false;
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  if (*first == '+') ++first;
-  double v = 0;
-  const auto r = std::from_chars(first, last, v);
-  if (r.ec != std::errc() || r.ptr != last || !std::isfinite(v)) return false;
-  *out = v;
-  return true;
-}
 
 std::vector<std::string> Split(const std::string& text, char sep) {
   std::vector<std::string> parts;
@@ -72,8 +61,8 @@ std::string ParseLimitsOverride(const std::string& value, JointLimits* limits) {
     const int joint = item[1] - '1';
     if (joint < 0 || joint >= kJoints) return "'" + item + "': joints are J1..J6";
     double lo = 0, hi = 0;
-    if (!ParseNumber(item.substr(eq + 1, colon - eq - 1), &lo) ||
-        !ParseNumber(item.substr(colon + 1), &hi)) {
+    if (!ParseFiniteDouble(item.substr(eq + 1, colon - eq - 1), &lo) ||
+        !ParseFiniteDouble(item.substr(colon + 1), &hi)) {
       return "'" + item + "' has a bad number" + form;
     }
     if (!(lo < hi)) return "'" + item + "' needs MIN < MAX";
@@ -92,7 +81,7 @@ std::string ParseSpeedLimits(const std::string& value, JointLimits* limits) {
   JointArray speeds{};
   for (std::size_t i = 0; i < parts.size(); ++i) {
     double v = 0;
-    if (!ParseNumber(parts[i], &v) || !(v > 0)) {
+    if (!ParseFiniteDouble(parts[i], &v) || !(v > 0)) {
       return "'" + parts[i] + "' is not a speed > 0 (deg/s)";
     }
     speeds[i] = v;

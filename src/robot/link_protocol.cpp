@@ -1,4 +1,5 @@
 #include "armmimic/robot/link_protocol.h"
+#include "armmimic/core/text.h"
 
 #include <algorithm>
 #include <cctype>
@@ -35,15 +36,6 @@ std::string FormatSeconds(double s) {
     if (c == ',') c = '.';
   }
   return out;
-}
-
-bool ParseDouble(const std::string& t, double* out) {
-  if (t.empty()) return false;
-  const char* b = t.data();
-  if (*b == '+') ++b;
-  const char* e = t.data() + t.size();
-  auto [p, ec] = std::from_chars(b, e, *out);
-  return ec == std::errc() && p == e && std::isfinite(*out);
 }
 
 // "MOVE" matched by any non-empty prefix of `keyword`, at least `min_len` letters.
@@ -99,7 +91,7 @@ bool ParseWhereReply(const std::vector<std::string>& replies, JointArray* joints
       if (c == ' ' || c == ',' || c == '\t') {
         if (!token.empty()) {
           double v = 0;
-          if (!ParseDouble(token, &v)) numbers_only = false;
+          if (!ParseFiniteDouble(token, &v)) numbers_only = false;
           values.push_back(v);
           token.clear();
         }
@@ -132,7 +124,7 @@ bool ParsePpointTarget(const std::string& line, JointArray* joints_deg) {
     while (!t.empty() && t.front() == ' ') t.erase(t.begin());
     while (!t.empty() && t.back() == ' ') t.pop_back();
     double v = 0;
-    if (!ParseDouble(t, &v)) return false;
+    if (!ParseFiniteDouble(t, &v)) return false;
     values.push_back(v);
     if (comma == std::string::npos) break;
     start = comma + 1;

@@ -1,4 +1,5 @@
 #include "armmimic/robot/profile.h"
+#include "armmimic/core/text.h"
 
 #include <cctype>
 #include <charconv>
@@ -14,25 +15,6 @@
 
 namespace armmimic::robot {
 namespace {
-
-std::string Trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t\r");
-  if (a == std::string::npos) return "";
-  const auto b = s.find_last_not_of(" \t\r");
-  return s.substr(a, b - a + 1);
-}
-
-bool ParseDouble(const std::string& text, double* out) {
-  if (text.empty()) return false;
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  if (*first == '+') ++first;
-  double v = 0;
-  const auto r = std::from_chars(first, last, v);
-  if (r.ec != std::errc() || r.ptr != last || !std::isfinite(v)) return false;
-  *out = v;
-  return true;
-}
 
 bool ParseInt(const std::string& text, int* out) {
   if (text.empty()) return false;
@@ -152,7 +134,7 @@ Field StringField(std::string ControllerProfile::*member, const char* doc) {
 std::string FormatExact(double v, int decimals) {
   std::string s = FormatNumber(v, decimals);
   double back = 0;
-  if (ParseDouble(s, &back) && back == v) return s;
+  if (ParseFiniteDouble(s, &back) && back == v) return s;
   char buf[64];
   const auto r = std::to_chars(buf, buf + sizeof(buf), v);
   return std::string(buf, r.ptr);
@@ -161,7 +143,7 @@ std::string FormatExact(double v, int decimals) {
 Field DoubleField(double ControllerProfile::*member, const char* doc) {
   return {[member](const std::string& v, ControllerProfile* p) {
             double d = 0;
-            if (!ParseDouble(v, &d)) return "'" + v + "' is not a number";
+            if (!ParseFiniteDouble(v, &d)) return "'" + v + "' is not a number";
             p->*member = d;
             return std::string();
           },
@@ -236,7 +218,7 @@ const FieldList& Fields() {
           JointArray speeds{};
           while (std::getline(ss, part, ',')) {
             double d = 0;
-            if (j >= kJoints || !ParseDouble(Trim(part), &d)) j = kJoints + 1;
+            if (j >= kJoints || !ParseFiniteDouble(Trim(part), &d)) j = kJoints + 1;
             if (j < kJoints) speeds[j] = d;
             ++j;
           }

@@ -1,4 +1,5 @@
 #include "armmimic/robot/val_program.h"
+#include "armmimic/core/text.h"
 
 #include <algorithm>
 #include <cctype>
@@ -11,13 +12,6 @@
 
 namespace armmimic::robot {
 namespace {
-
-std::string Trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t\r");
-  if (a == std::string::npos) return "";
-  const auto b = s.find_last_not_of(" \t\r");
-  return s.substr(a, b - a + 1);
-}
 
 std::string Upper(std::string s) {
   for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));

@@ -1,4 +1,5 @@
 #include "armmimic/synth/truth_file.h"
+#include "armmimic/core/text.h"
 
 #include <charconv>
 #include <cmath>
@@ -19,86 +20,6 @@ const char* const kTruthColumns[12] = {"frame",   "time_s",   "upper_deg",  "for
 namespace {
 
 constexpr std::size_t kMaxLineLength = 65536;
-
-std::vector<std::string> SplitTabs(const std::string& line) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t tab = line.find('\t', start);
-    if (tab == std::string::npos) {
-      out.push_back(line.substr(start));
-      return out;
-    }
-    out.push_back(line.substr(start, tab - start));
-    start = tab + 1;
-  }
-}
-
-// A finite plain decimal or "nan".
-bool ParseNumber(const std::string& field, double* out) {
-  if (field == "nan") {
-    *out = kNaN;
-    return true;
-  }
-  if (field.empty() || field[0] == '+') return false;
-  for (char c : field) {
-    if (!((c >= '0' && c <= '9') || c == '.' || c == '-' || c == 'e' || c == 'E' || c == '+')) {
-      return false;
-    }
-  }
-  double v = 0;
-  const char* last = field.data() + field.size();
-  const auto r = std::from_chars(field.data(), last, v, std::chars_format::general);
-  if (r.ec != std::errc() || r.ptr != last || !std::isfinite(v)) return false;
-  *out = v;
-  return true;
-}
-
-bool ParseFrame(const std::string& field, int* out) {
-  if (field.empty() || field.size() > 10) return false;
-  int v = 0;
-  const char* last = field.data() + field.size();
-  const auto r = std::from_chars(field.data(), last, v, 10);
-  if (r.ec != std::errc() || r.ptr != last || v < 0) return false;
-  *out = v;
-  return true;
-}
-
-std::string PercentDecode(const std::string& v) {
-  std::string out;
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    if (v[i] == '%' && i + 2 < v.size()) {
-      int code = 0;
-      const auto r = std::from_chars(v.data() + i + 1, v.data() + i + 3, code, 16);
-      if (r.ec == std::errc() && r.ptr == v.data() + i + 3) {
-        out += static_cast<char>(code);
-        i += 2;
-        continue;
-      }
-    }
-    out += v[i];
-  }
-  return out;
-}
-
-std::string PercentEncode(const std::string& v) {
-  std::string out;
-  for (char c : v) {
-    if (c == ' ')
-      out += "%20";
-    else if (c == '%')
-      out += "%25";
-    else if (c == '\t')
-      out += "%09";
-    else if (c == '\n')
-      out += "%0A";
-    else if (c == '\r')
-      out += "%0D";
-    else
-      out += c;
-  }
-  return out;
-}
 
 std::string Where(const std::string& source, int line) {
   return source + ":" + std::to_string(line) + ": ";
@@ -210,7 +131,7 @@ Status ParseTruthFile(std::istream& in, const std::string& source_name, TruthFil
                            std::to_string(want));
     }
     TruthRow row;
-    if (!ParseFrame(fields[0], &row.frame)) {
+    if (!ParseFrameIndex(fields[0], &row.frame)) {
       return Status::Error(Where(source_name, line_no) + "frame '" + fields[0] +
                            "' is not a non-negative integer");
     }
@@ -218,7 +139,7 @@ Status ParseTruthFile(std::istream& in, const std::string& source_name, TruthFil
                           &row.bend_deg, &row.shoulder_x, &row.shoulder_y, &row.elbow_x,
                           &row.elbow_y,  &row.wrist_x,    &row.wrist_y};
     for (int i = 0; i < 11; ++i) {
-      if (!ParseNumber(fields[i + 1], values[i])) {
+      if (!ParseTableNumber(fields[i + 1], true, values[i])) {
         return Status::Error(Where(source_name, line_no) + kTruthColumns[i + 1] + " '" +
                              fields[i + 1] + "' is not a number or nan");
       }

@@ -1,0 +1,31 @@
+// Small text helpers shared by the file readers (angle files, truth files, controller profiles,
+// VAL programs) and the command line: locale-independent number parsing, TSV fields, trimming
+// and the percent-encoding of meta values.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace armmimic {
+
+// Splits a line at every TAB (an empty line gives one empty field).
+std::vector<std::string> SplitTabs(const std::string& line);
+
+// A table field: a finite plain decimal ('.' decimals, optional exponent, no leading '+', no
+// "inf"/"0x"), or "nan" when `allow_nan`.
+bool ParseTableNumber(const std::string& field, bool allow_nan, double* out);
+
+// A frame index: a non-negative decimal integer of at most 10 digits.
+bool ParseFrameIndex(const std::string& field, int* out);
+
+// A finite number as std::from_chars reads it, with an optional leading '+', whatever the locale.
+bool ParseFiniteDouble(const std::string& text, double* out);
+
+// Removes spaces, tabs and CRs at both ends.
+std::string Trim(const std::string& text);
+
+// Meta values in a "# key=value" line: space, '%', TAB, LF and CR as %20 %25 %09 %0A %0D.
+std::string PercentEncode(const std::string& value);
+std::string PercentDecode(const std::string& value);
+
+}  // namespace armmimic
