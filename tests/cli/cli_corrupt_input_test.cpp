@@ -184,11 +184,18 @@ TEST_F(CorruptInput, MissingVideo) {
 }
 
 TEST_F(CorruptInput, UnreadableVideo) {
-  if (geteuid() == 0) GTEST_SKIP() << "root reads any file";
+  // As root every file is readable: the CLI then runs as nobody (setpriv).
+  if (!test::CanRunUnprivileged()) GTEST_SKIP() << "cannot drop root here (no setpriv)";
+  chmod(dir_.path().c_str(), 0777);
   const std::string video = dir_.file("locked.avi");
+  const std::string arm = dir_.file("arm.png");
   test::WriteFile(video, test::ReadFile(Scene()));
+  test::WriteFile(arm, test::ReadFile(ArmLength()));
   chmod(video.c_str(), 0);
-  ExpectFailure(Analyze(video), 1, video, "");
+  const std::vector<std::string> args = {
+      "--no-progress", "analyze", video,  "-o", out_, "--engine", "bgsub", "--standstill-frames",
+      "10", "--start", "10", "--background-frames", "10", "--arm-length", arm};
+  ExpectFailure(test::RunCliUnprivileged(args), 1, video, "Permission denied");
 }
 
 TEST_F(CorruptInput, VideoThatIsADirectory) {

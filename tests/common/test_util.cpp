@@ -31,7 +31,10 @@ TempDir::~TempDir() {
   std::filesystem::remove_all(path_, ec);
 }
 
-CliResult RunCli(const std::vector<std::string>& args, const std::string& stdin_text) {
+namespace {
+
+// Runs argv_s[0] with argv_s (no shell), capturing stdout and stderr.
+CliResult RunProgram(std::vector<std::string> argv_s, const std::string& stdin_text) {
   int out_pipe[2], err_pipe[2], in_pipe[2];
   if (pipe(out_pipe) || pipe(err_pipe) || pipe(in_pipe)) throw std::runtime_error("pipe failed");
   posix_spawn_file_actions_t fa;
@@ -42,13 +45,11 @@ CliResult RunCli(const std::vector<std::string>& args, const std::string& stdin_
   for (int fd : {in_pipe[0], in_pipe[1], out_pipe[0], out_pipe[1], err_pipe[0], err_pipe[1]}) {
     posix_spawn_file_actions_addclose(&fa, fd);
   }
-  std::vector<std::string> argv_s = {ARMMIMIC_CLI_PATH};
-  argv_s.insert(argv_s.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& a : argv_s) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = 0;
-  const int rc = posix_spawn(&pid, ARMMIMIC_CLI_PATH, &fa, nullptr, argv.data(), environ);
+  const int rc = posix_spawn(&pid, argv_s[0].c_str(), &fa, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&fa);
   close(in_pipe[0]);
   close(out_pipe[1]);
@@ -81,6 +82,25 @@ CliResult RunCli(const std::vector<std::string>& args, const std::string& stdin_
   waitpid(pid, &status, 0);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   return result;
+}
+
+}  // namespace
+
+CliResult RunCli(const std::vector<std::string>& args, const std::string& stdin_text) {
+  std::vector<std::string> argv = {ARMMIMIC_CLI_PATH};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return RunProgram(argv, stdin_text);
+}
+
+bool CanRunUnprivileged() { return geteuid() != 0 || access("/usr/bin/setpriv", X_OK) == 0; }
+
+CliResult RunCliUnprivileged(const std::vector<std::string>& args) {
+  if (geteuid() != 0) return RunCli(args);
+  std::vector<std::string> argv = {"/usr/bin/setpriv", "--reuid=65534", "--regid=65534",
+                                   "--clear-groups",   "--inh-caps=-all", "--",
+                                   ARMMIMIC_CLI_PATH};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return RunProgram(argv, "");
 }
 
 std::string ReadFile(const std::string& path) {

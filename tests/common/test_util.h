@@ -30,6 +30,12 @@ struct CliResult {
 // its standard input.
 CliResult RunCli(const std::vector<std::string>& args, const std::string& stdin_text = "");
 
+// Runs armmimic-cli as an unprivileged user (nobody, through setpriv) when the tests run as root,
+// so that permission errors can be provoked; as it is otherwise. CanRunUnprivileged() says
+// whether that is possible here.
+bool CanRunUnprivileged();
+CliResult RunCliUnprivileged(const std::vector<std::string>& args);
+
 std::string ReadFile(const std::string& path);
 void WriteFile(const std::string& path, const std::string& bytes);
 std::string SourcePath(const std::string& relative);  // path inside the source tree
