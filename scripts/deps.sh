@@ -10,7 +10,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
 )
 # Extra tools for the sanitizer/fuzz runs and the screenshots; installed with --with-extras.
-EXTRAS=(clang libclang-rt-14-dev xvfb xauth)
+EXTRAS=(clang libclang-rt-14-dev xvfb xauth locales)
 
 wanted=("${PACKAGES[@]}")
 if [[ "${1:-}" == "--with-extras" ]]; then wanted+=("${EXTRAS[@]}"); fi
@@ -21,7 +21,18 @@ for p in "${wanted[@]}"; do
     missing+=("$p")
   fi
 done
+# A comma-decimal locale, so the tests can prove numbers are written with '.' whatever the locale.
+ensure_test_locale() {
+  [[ "${1:-}" == "--with-extras" ]] || return 0
+  locale -a 2>/dev/null | grep -qi '^de_DE\.utf-\?8$' && return 0
+  [[ $(id -u) -eq 0 ]] || return 0
+  sed -i 's/^# *de_DE.UTF-8 UTF-8/de_DE.UTF-8 UTF-8/' /etc/locale.gen
+  grep -q '^de_DE.UTF-8 UTF-8' /etc/locale.gen || echo 'de_DE.UTF-8 UTF-8' >> /etc/locale.gen
+  locale-gen >/dev/null
+}
+
 if ((${#missing[@]} == 0)); then
+  ensure_test_locale "${1:-}"
   exit 0
 fi
 
@@ -36,3 +47,4 @@ fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+ensure_test_locale "${1:-}"
