@@ -13,9 +13,9 @@
 namespace armmimic::test {
 namespace {
 
-GuiScenes* g_scenes = nullptr;
-TempDir* g_scene_dir = nullptr;
-TempDir* g_settings_dir = nullptr;
+// Shared by every GUI test in the run; destroyed (and the folder removed) at exit.
+std::unique_ptr<GuiScenes> g_scenes;
+std::unique_ptr<TempDir> g_scene_dir;
 
 void EnsureApplication() {
   if (QApplication::instance()) return;
@@ -34,8 +34,7 @@ void EnsureApplication() {
 void GuiTest::SetUpTestSuite() {
   EnsureApplication();
   if (g_scenes) return;
-  g_scene_dir = new TempDir;
-  g_settings_dir = new TempDir;
+  g_scene_dir = std::make_unique<TempDir>();
   auto scenes = std::make_unique<GuiScenes>();
   scenes->arm_dir = g_scene_dir->file("arm");
   scenes->marker_dir = g_scene_dir->file("marker");
@@ -52,7 +51,7 @@ void GuiTest::SetUpTestSuite() {
   marker.views = 6;
   st = synth::WriteMarkerScene(marker, scenes->marker_dir, {});
   ASSERT_TRUE(st.ok()) << st.message();
-  g_scenes = scenes.release();
+  g_scenes = std::move(scenes);
 }
 
 void GuiTest::SetUp() {
