@@ -25,6 +25,7 @@
 #include "armmimic/core/angle_file.h"
 #include "armmimic/robot/link_protocol.h"
 #include "armmimic/sim/pty_server.h"
+#include "test_program.h"
 #include "test_util.h"
 
 extern char** environ;
@@ -40,31 +41,14 @@ bool Contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
-struct Program {
-  std::string text;
-  std::vector<JointArray> targets;
-};
+using test::Fast;
+using test::Program;
 
 // SPEED 50 and `moves` timed moves, each target distinct. Move i is on line 5 + 2 i.
 Program MakeProgram(int moves) {
-  Program p;
-  std::ostringstream s;
-  s << "; armmimic VAL program v1\n; source=faults\nSPEED 50\n";
-  for (int i = 0; i < moves; ++i) {
-    JointArray t = {std::round(std::cos(i * 0.9) * 1500) / 100, -90 + i * 2.0, -i * 1.5, 0, 0, 0};
-    p.targets.push_back(t);
-    s << "; t=" << i << ".000\nDO MOVE #PPOINT(";
-    for (int j = 0; j < robot::kJoints; ++j) s << (j ? "," : "") << FormatNumber(t[j], 2);
-    s << ")\n";
-  }
-  p.text = s.str();
-  return p;
-}
-
-sim::EmulatorOptions Fast() {
-  sim::EmulatorOptions o;
-  o.time_scale = 0.02;
-  return o;
+  return test::MakeTimedProgram(moves, "faults", [](int i) -> JointArray {
+    return {std::round(std::cos(i * 0.9) * 1500) / 100, -90 + i * 2.0, -i * 1.5, 0, 0, 0};
+  });
 }
 
 // Every planned target executed exactly once, in order, across all the controllers' logs.
