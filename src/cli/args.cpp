@@ -63,6 +63,17 @@ std::string ParseRectArg(const std::string& value, cv::Rect* out) {
   return "";
 }
 
+std::string ParseSizeArg(const std::string& value, cv::Size* out) {
+  const auto x = value.find_first_of("xX");
+  int w = 0, h = 0;
+  if (x == std::string::npos || !ParseIntArg(value.substr(0, x), &w) ||
+      !ParseIntArg(value.substr(x + 1), &h) || w <= 0 || h <= 0) {
+    return "'" + value + "' is not WxH (e.g. 320x240)";
+  }
+  *out = {w, h};
+  return "";
+}
+
 ArgParser::ArgParser(std::string command, std::string synopsis, std::string description)
     : command_(std::move(command)),
       synopsis_(std::move(synopsis)),

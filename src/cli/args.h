@@ -65,6 +65,8 @@ class ArgParser {
 // "X,Y" -> point; "X,Y,W,H" -> rectangle. Return an error text or "".
 std::string ParsePointArg(const std::string& value, cv::Point2d* out);
 std::string ParseRectArg(const std::string& value, cv::Rect* out);
+// "WxH" (or "WXH") with W, H > 0 -> size. Returns an error text or "".
+std::string ParseSizeArg(const std::string& value, cv::Size* out);
 // Plain number parsing with '.' decimals whatever the locale.
 bool ParseDoubleArg(const std::string& value, double* out);
 bool ParseIntArg(const std::string& value, int* out);

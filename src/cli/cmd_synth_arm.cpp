@@ -8,20 +8,6 @@
 #include "synth_commands.h"
 
 namespace armmimic::cli {
-namespace {
-
-std::string ParseSize(const std::string& v, cv::Size* out) {
-  const auto x = v.find_first_of("xX");
-  int w = 0, h = 0;
-  if (x == std::string::npos || !ParseIntArg(v.substr(0, x), &w) ||
-      !ParseIntArg(v.substr(x + 1), &h) || w <= 0 || h <= 0) {
-    return "'" + v + "' is not WxH (e.g. 320x240)";
-  }
-  *out = {w, h};
-  return "";
-}
-
-}  // namespace
 
 int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& global) {
   synth::ArmSceneOptions o;
@@ -50,7 +36,7 @@ int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& globa
              return "";
            });
   p.Custom("--size", "WxH", "frame size (default 320x240; at least 160x120)",
-           [&o](const std::string& v) { return ParseSize(v, &o.size); });
+           [&o](const std::string& v) { return ParseSizeArg(v, &o.size); });
   p.Double("--fps", &o.fps, "F", "frame rate (default 30)");
   p.Int("--background-frames", &o.background_frames, "K", "empty-scene frames (default 45)", 0,
         100000);

@@ -9,20 +9,6 @@
 #include "synth_commands.h"
 
 namespace armmimic::cli {
-namespace {
-
-std::string ParseMarkerSize(const std::string& v, cv::Size* out) {
-  const auto x = v.find_first_of("xX");
-  int w = 0, h = 0;
-  if (x == std::string::npos || !ParseIntArg(v.substr(0, x), &w) ||
-      !ParseIntArg(v.substr(x + 1), &h) || w <= 0 || h <= 0) {
-    return "'" + v + "' is not WxH (e.g. 320x240)";
-  }
-  *out = {w, h};
-  return "";
-}
-
-}  // namespace
 
 int RunSynthMarker(const std::vector<std::string>& args, const GlobalOptions& global) {
   synth::MarkerSceneOptions o;
@@ -54,7 +40,7 @@ int RunSynthMarker(const std::vector<std::string>& args, const GlobalOptions& gl
              return "";
            });
   p.Custom("--size", "WxH", "image size (default 320x240; at least 160x120, 4:3 or wider)",
-           [&o](const std::string& v) { return ParseMarkerSize(v, &o.size); });
+           [&o](const std::string& v) { return ParseSizeArg(v, &o.size); });
   p.Int("--views", &o.views, "N", "images besides the reference (default 48)", 1, 100000);
   p.Double("--max-yaw", &o.max_yaw_deg, "D",
            "yaw uniform in [-D, D] degrees (default 45; past ~35 a marker hides)");
