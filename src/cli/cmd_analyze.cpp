@@ -168,6 +168,13 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
               << " (marked complete=no)\n";
     return kExitFailure;
   }
+  if (summary.EndedEarly()) {
+    // Not an error (every row written is valid), but the operator must know rows stop early.
+    std::cerr << "armmimic-cli analyze: warning: " << source << ": the file announces "
+              << summary.video.frame_count << " frames but only " << summary.last_frame + 1
+              << " could be read (truncated or damaged video); the rows stop at frame "
+              << summary.last_frame << "\n";
+  }
   if (!global.quiet) {
     char rate[64];
     std::snprintf(rate, sizeof(rate), "%.2f s, %.0f frames/s", summary.seconds,

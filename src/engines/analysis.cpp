@@ -167,6 +167,7 @@ Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
       break;
     }
     const ArmMeasurement m = engine->Process(frame);
+    summary->last_frame = frame.index;
     ++done;
     if (callbacks.on_measurement) callbacks.on_measurement(frame, m);
     if (m.row()) {

@@ -109,10 +109,15 @@ TEST_F(CorruptInput, VideoTruncatedMidStreamIsAnalysedUpToItsEnd) {
   const test::CliResult r = Analyze(video);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(Contains(r.err, "from half.avi")) << r.err;
+  // ... and the operator is told the rows stop early, naming the file and the last frame.
+  EXPECT_TRUE(Contains(r.err, "warning: " + video)) << r.err;
+  EXPECT_TRUE(Contains(r.err, "truncated or damaged video")) << r.err;
   AngleFile angles;
   ASSERT_TRUE(ReadAngleFile(out_, &angles).ok());
   EXPECT_TRUE(angles.complete);
   EXPECT_GT(angles.rows.size(), 0u);
+  EXPECT_TRUE(Contains(r.err, "the rows stop at frame " + std::to_string(angles.rows.back().frame)))
+      << r.err;
   EXPECT_LT(angles.rows.size(), 10u);  // fewer than the 10 motion frames of the whole file
   for (std::size_t i = 0; i < angles.rows.size(); ++i) {
     EXPECT_EQ(angles.rows[i].frame, 20 + static_cast<int>(i));
@@ -192,9 +197,21 @@ TEST_F(CorruptInput, UnreadableVideo) {
   test::WriteFile(video, test::ReadFile(Scene()));
   test::WriteFile(arm, test::ReadFile(ArmLength()));
   chmod(video.c_str(), 0);
-  const std::vector<std::string> args = {
-      "--no-progress", "analyze", video,  "-o", out_, "--engine", "bgsub", "--standstill-frames",
-      "10", "--start", "10", "--background-frames", "10", "--arm-length", arm};
+  const std::vector<std::string> args = {"--no-progress",
+                                         "analyze",
+                                         video,
+                                         "-o",
+                                         out_,
+                                         "--engine",
+                                         "bgsub",
+                                         "--standstill-frames",
+                                         "10",
+                                         "--start",
+                                         "10",
+                                         "--background-frames",
+                                         "10",
+                                         "--arm-length",
+                                         arm};
   ExpectFailure(test::RunCliUnprivileged(args), 1, video, "Permission denied");
 }
 

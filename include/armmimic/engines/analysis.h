@@ -21,16 +21,16 @@
 namespace armmimic {
 
 struct AnalysisOptions {
-  std::vector<std::string> inputs;          // video, folder, image files or camera
+  std::vector<std::string> inputs;  // video, folder, image files or camera
   EngineOptions engine;
-  std::string background_path;              // --background
-  int background_frames = 0;                // --background-frames K (0: not used)
-  std::string arm_length_path;              // --arm-length
-  std::string reference_path;               // --reference (marker)
-  int start = 0;                            // --start F: first standstill frame
-  std::optional<cv::Point2d> shoulder_px;   // --shoulder X,Y
-  std::optional<cv::Rect> roi;              // --roi X,Y,W,H
-  Status Check() const;                     // messages name the flag
+  std::string background_path;             // --background
+  int background_frames = 0;               // --background-frames K (0: not used)
+  std::string arm_length_path;             // --arm-length
+  std::string reference_path;              // --reference (marker)
+  int start = 0;                           // --start F: first standstill frame
+  std::optional<cv::Point2d> shoulder_px;  // --shoulder X,Y
+  std::optional<cv::Rect> roi;             // --roi X,Y,W,H
+  Status Check() const;                    // messages name the flag
 };
 
 struct AnalysisCallbacks {
@@ -44,13 +44,21 @@ struct AnalysisCallbacks {
 };
 
 struct AnalysisSummary {
-  int frames = 0;      // rows produced (ok + lost)
+  int frames = 0;  // rows produced (ok + lost)
   int ok = 0;
   int lost = 0;
   double seconds = 0;  // wall time of the whole run
   bool cancelled = false;
-  VideoInfo video;
-  AngleMeta meta;      // the angle file's meta line for this run
+  VideoInfo video;      // as opened (frame_count: what the file announces)
+  int last_frame = -1;  // index of the last frame read, -1 if none
+  AngleMeta meta;       // the angle file's meta line for this run
+
+  // True when a video stopped before the frame count its header announces (a truncated or
+  // damaged file; the rows stop early). Not for cancelled runs, images or cameras.
+  bool EndedEarly() const {
+    return !cancelled && video.kind == SourceKind::kVideo && video.frame_count > 0 &&
+           last_frame + 1 < video.frame_count;
+  }
 };
 
 // Averages frames [start, start+count) of `inputs` (thesis 5.2.1) into a CV_8UC3 image.
