@@ -74,6 +74,16 @@ std::string ParseSizeArg(const std::string& value, cv::Size* out) {
   return "";
 }
 
+std::string ParseSeedArg(const std::string& value, std::uint64_t* out) {
+  std::uint64_t s = 0;
+  const auto r = std::from_chars(value.data(), value.data() + value.size(), s, 10);
+  if (value.empty() || r.ec != std::errc() || r.ptr != value.data() + value.size()) {
+    return "'" + value + "' is not a non-negative whole number";
+  }
+  *out = s;
+  return "";
+}
+
 ArgParser::ArgParser(std::string command, std::string synopsis, std::string description)
     : command_(std::move(command)),
       synopsis_(std::move(synopsis)),

@@ -2,6 +2,7 @@
 // positionals, --help, and errors that name the flag and end in exit code 2.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <set>
@@ -67,6 +68,8 @@ std::string ParsePointArg(const std::string& value, cv::Point2d* out);
 std::string ParseRectArg(const std::string& value, cv::Rect* out);
 // "WxH" (or "WXH") with W, H > 0 -> size. Returns an error text or "".
 std::string ParseSizeArg(const std::string& value, cv::Size* out);
+// A random seed: a non-negative decimal that fits 64 bits. Returns an error text or "".
+std::string ParseSeedArg(const std::string& value, std::uint64_t* out);
 // Plain number parsing with '.' decimals whatever the locale.
 bool ParseDoubleArg(const std::string& value, double* out);
 bool ParseIntArg(const std::string& value, int* out);

@@ -1,5 +1,4 @@
 // armmimic-cli synth arm OUTDIR: an arm scene (thesis protocol) with its ground truth.
-#include <charconv>
 #include <iostream>
 
 #include "args.h"
@@ -26,15 +25,7 @@ int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& globa
       "OUTDIR is created if missing. The same seed and options give the same files.");
   p.Positionals(&outdir, "OUTDIR", 1, 1);
   p.Custom("--seed", "N", "random seed for textures, colours, noise and mixed motion (default 1)",
-           [&o](const std::string& v) -> std::string {
-             uint64_t s = 0;
-             const auto r = std::from_chars(v.data(), v.data() + v.size(), s, 10);
-             if (v.empty() || r.ec != std::errc() || r.ptr != v.data() + v.size()) {
-               return "'" + v + "' is not a non-negative whole number";
-             }
-             o.seed = s;
-             return "";
-           });
+           [&o](const std::string& v) { return ParseSeedArg(v, &o.seed); });
   p.Custom("--size", "WxH", "frame size (default 320x240; at least 160x120)",
            [&o](const std::string& v) { return ParseSizeArg(v, &o.size); });
   p.Double("--fps", &o.fps, "F", "frame rate (default 30)");

@@ -1,6 +1,5 @@
 // armmimic-cli synth marker OUTDIR: the model joint of thesis chapter 4 rendered in 3D, with a
 // zero-pose reference and the ground truth.
-#include <charconv>
 #include <iostream>
 
 #include "args.h"
@@ -30,15 +29,7 @@ int RunSynthMarker(const std::vector<std::string>& args, const GlobalOptions& gl
       "The same seed and options give the same files.");
   p.Positionals(&outdir, "OUTDIR", 1, 1);
   p.Custom("--seed", "N", "random seed for the scene, the poses and the noise (default 1)",
-           [&o](const std::string& v) -> std::string {
-             uint64_t s = 0;
-             const auto r = std::from_chars(v.data(), v.data() + v.size(), s, 10);
-             if (v.empty() || r.ec != std::errc() || r.ptr != v.data() + v.size()) {
-               return "'" + v + "' is not a non-negative whole number";
-             }
-             o.seed = s;
-             return "";
-           });
+           [&o](const std::string& v) { return ParseSeedArg(v, &o.seed); });
   p.Custom("--size", "WxH", "image size (default 320x240; at least 160x120, 4:3 or wider)",
            [&o](const std::string& v) { return ParseSizeArg(v, &o.size); });
   p.Int("--views", &o.views, "N", "images besides the reference (default 48)", 1, 100000);
