@@ -73,14 +73,7 @@ class CameraSource : public VideoSource {
     } else if (!Grab(&img)) {
       return false;  // the stream ended or the camera went away
     }
-    if (img.size() != info_.size) {
-      st = Status::Error(info_.path + ": frame " + std::to_string(next_) + " changes size");
-      return false;
-    }
-    frame->image = img;
-    frame->index = next_;
-    frame->time_s = info_.fps > 0 ? next_ / info_.fps : 0;
-    frame->name.clear();
+    if (!DeliverStreamFrame(img, next_, info_, frame, &st)) return false;
     ++next_;
     return true;
   }

@@ -18,4 +18,20 @@ std::unique_ptr<VideoSource> OpenImageSource(const std::vector<std::string>& fil
 // "camera:N" or a stream URL.
 std::unique_ptr<VideoSource> OpenCameraSource(const std::string& spec, Status* status);
 
+// Hands out a decoded frame of a stream (video file or camera) as frame `index`: refuses a
+// frame whose size differs from the stream's (the message names the source and the frame),
+// then fills the frame's image, index and time.
+inline bool DeliverStreamFrame(const cv::Mat& img, int index, const VideoInfo& info, Frame* frame,
+                               Status* status) {
+  if (img.size() != info.size) {
+    *status = Status::Error(info.path + ": frame " + std::to_string(index) + " changes size");
+    return false;
+  }
+  frame->image = img;
+  frame->index = index;
+  frame->time_s = info.fps > 0 ? index / info.fps : 0;
+  frame->name.clear();
+  return true;
+}
+
 }  // namespace armmimic::internal
