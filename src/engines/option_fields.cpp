@@ -94,15 +94,20 @@ using M = MarkerOptions;
 const std::vector<OptionField<BgsubOptions>>& BgsubOptionFields() {
   static const std::vector<OptionField<B>> fields = {
       Int<B>("threshold", &B::threshold, 45, 1, 254, "Threshold",
-             "--threshold: grey-level difference from the background (5.2.2, 5.2.4)").Main(),
+             "--threshold: grey-level difference from the background (5.2.2, 5.2.4)")
+          .Main(),
       Int<B>("background_frames", &B::background_frames, 45, 1, 100000, "Background frames",
-             "--background-frames: frames averaged into the background image (5.2.1)").Input(),
+             "--background-frames: frames averaged into the background image (5.2.1)")
+          .Input(),
       Int<B>("standstill_frames", &B::standstill_frames, 60, 1, 100000, "Standstill frames",
-             "--standstill-frames: frames averaged into the standstill image (5.2.2)").Main(),
+             "--standstill-frames: frames averaged into the standstill image (5.2.2)")
+          .Main(),
       Real<B>("straight_ratio", &B::straight_ratio, 0.30, 0.10, 0.95, 2, "Straight-arm ratio",
-              "defect depth below this share of the semi-major axis: a straight arm").Main(),
+              "defect depth below this share of the semi-major axis: a straight arm")
+          .Main(),
       Int<B>("closing_size", &B::closing_size, 5, 0, 51, "Closing size",
-             "morphological closing kernel, pixels (0 or 1: none)").Main(),
+             "morphological closing kernel, pixels (0 or 1: none)")
+          .Main(),
       Int<B>("min_arm_area_px", &B::min_arm_area_px, 40, 1, 100000, "Minimum arm area",
              "a smaller moving region is no arm (lost), pixels"),
       Real<B>("shoulder_height", &B::shoulder_height, 0.6, 0, 1, 3, "Shoulder height",
@@ -110,7 +115,8 @@ const std::vector<OptionField<BgsubOptions>>& BgsubOptionFields() {
       Real<B>("shoulder_side", &B::shoulder_side, 1.0 / 6, 0, 0.5, 3, "Shoulder inset",
               "shoulder at this share of the body box width in from the moving arm's side"),
       Bool<B>("thesis_mode", &B::thesis_mode, false, "Thesis path only",
-              "--thesis: none of the improvements below").Main(),
+              "--thesis: none of the improvements below")
+          .Main(),
       Bool<B>("compensate_drift", &B::compensate_drift, true, "Compensate brightness drift",
               "subtract the global brightness drift before thresholding"),
       Bool<B>("color_difference", &B::color_difference, true, "Colour difference",
@@ -146,7 +152,8 @@ const std::vector<OptionField<BgsubOptions>>& BgsubOptionFields() {
 const std::vector<OptionField<LkOptions>>& LkOptionFields() {
   static const std::vector<OptionField<L>> fields = {
       Int<L>("standstill_frames", &L::standstill_frames, 60, 1, 100000, "Standstill frames",
-             "--standstill-frames: frames averaged into the standstill image (6.1)").Main(),
+             "--standstill-frames: frames averaged into the standstill image (6.1)")
+          .Main(),
       Int<L>("body_threshold", &L::body_threshold, 45, 0, 255, "Body threshold",
              "grey-level difference standstill vs background that makes the body box"),
       Real<L>("shoulder_height", &L::shoulder_height, 0.6, 0, 1, 3, "Shoulder height",
@@ -160,9 +167,11 @@ const std::vector<OptionField<LkOptions>>& LkOptionFields() {
       Enum<L>("side", &L::side, LkArmSide::kAuto, {"auto", "left", "right"}, "Arm side",
               "side of the body box the moving arm is on, as seen on screen"),
       Real<L>("initial_upper_deg", &L::initial_upper_deg, -90, -180, 180, 1, "Initial upper arm",
-              "--initial-upper: upper-arm direction at the start, degrees").Main(),
+              "--initial-upper: upper-arm direction at the start, degrees")
+          .Main(),
       Real<L>("initial_fore_deg", &L::initial_fore_deg, -90, -180, 180, 1, "Initial forearm",
-              "--initial-fore: forearm direction at the start, degrees").Main(),
+              "--initial-fore: forearm direction at the start, degrees")
+          .Main(),
       Int<L>("max_corners", &L::max_corners, 300, 4, 10000, "Max. corners",
              "strongest Shi-Tomasi corners kept per detection (6.2.1)"),
       Real<L>("quality_level", &L::quality_level, 0.01, 0.0001, 1, 4, "Corner quality",
@@ -172,7 +181,8 @@ const std::vector<OptionField<LkOptions>>& LkOptionFields() {
       Int<L>("block_size", &L::block_size, 3, 3, 31, "Eigenvalue block",
              "eigenvalue neighbourhood, pixels"),
       Int<L>("window_px", &L::window_px, 15, 5, 101, "LK window",
-             "Lucas-Kanade search window, pixels, odd (6.2.2)").Step(2),
+             "Lucas-Kanade search window, pixels, odd (6.2.2)")
+          .Step(2),
       Int<L>("pyramid_levels", &L::pyramid_levels, 3, 0, 8, "Pyramid levels",
              "pyramid levels above the full image"),
       Int<L>("max_iterations", &L::max_iterations, 20, 1, 1000, "LK iterations",
@@ -182,11 +192,12 @@ const std::vector<OptionField<LkOptions>>& LkOptionFields() {
       Real<L>("motion_threshold_px", &L::motion_threshold_px, 1.0, 0, 100, 2, "Motion threshold",
               "a feature that moved more than this is on the arm, pixels (6.2.3)"),
       Int<L>("still_frames_drop", &L::still_frames_drop, 10, 0, 100000, "Drop still features after",
-             "a feature still for more than this many frames is dropped").Main(),
+             "a feature still for more than this many frames is dropped")
+          .Main(),
       Bool<L>("thesis_mode", &L::thesis_mode, false, "Thesis path only",
-              "--thesis: 2-means and summed increments only, none of the improvements").Main(),
-      Bool<L>("use_bar", &L::use_bar, true, "Sleeve bars",
-              "anchor each part on its sleeve colour"),
+              "--thesis: 2-means and summed increments only, none of the improvements")
+          .Main(),
+      Bool<L>("use_bar", &L::use_bar, true, "Sleeve bars", "anchor each part on its sleeve colour"),
       Real<L>("bar_search_deg", &L::bar_search_deg, 30, 1, 90, 1, "Bar search",
               "bars searched this far around the features' estimate, degrees"),
       Real<L>("bar_min_score", &L::bar_min_score, 0.4, -1, 1, 2, "Bar minimum score",
@@ -196,7 +207,8 @@ const std::vector<OptionField<LkOptions>>& LkOptionFields() {
       Real<L>("upper_fraction", &L::upper_fraction, 0.53, 0.2, 0.8, 2, "Upper-arm fraction",
               "upper arm / shoulder-to-wrist, the elbow prior"),
       Real<L>("forward_backward_px", &L::forward_backward_px, 1.0, 0, 100, 2,
-              "Forward-backward check", "drop a track whose backward track misses by more, pixels "
+              "Forward-backward check",
+              "drop a track whose backward track misses by more, pixels "
               "(0: off)"),
       Real<L>("confirm_motion_px", &L::confirm_motion_px, 4.0, 0, 1000, 1, "Confirm motion",
               "a feature joins the fit once the model moved it this far, pixels"),
@@ -225,19 +237,27 @@ const std::vector<OptionField<LkOptions>>& LkOptionFields() {
 const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields() {
   static const std::vector<OptionField<M>> fields = {
       Int<M>("median_size", &M::median_size, 5, 1, 31, "Median window",
-             "median filter window, odd (4.2.1)").Step(2).Main(),
+             "median filter window, odd (4.2.1)")
+          .Step(2)
+          .Main(),
       Int<M>("low", &M::low, 20, 0, 255, "Low threshold",
-             "--low: darkest marker grey level (4.2.2)").Below("high").Main(),
+             "--low: darkest marker grey level (4.2.2)")
+          .Below("high")
+          .Main(),
       Int<M>("high", &M::high, 80, 0, 255, "High threshold",
-             "--high: brightest marker grey level (4.2.2)").Main(),
+             "--high: brightest marker grey level (4.2.2)")
+          .Main(),
       Int<M>("flood_range", &M::flood_range, 10, 0, 255, "Flood range",
-             "flood-fill value range (+/-) around the seed (4.2.3)").Main(),
+             "flood-fill value range (+/-) around the seed (4.2.3)")
+          .Main(),
       Int<M>("min_area", &M::min_area, 10, 1, 100000, "Min. area",
-             "smallest marker area, pixels at 320x240 (4.2.4)").Below("max_area"),
+             "smallest marker area, pixels at 320x240 (4.2.4)")
+          .Below("max_area"),
       Int<M>("max_area", &M::max_area, 200, 1, 100000, "Max. area",
              "largest marker area, pixels at 320x240 (4.2.4)"),
       Real<M>("min_aspect", &M::min_aspect, 0.2, 0.01, 100, 2, "Min. aspect",
-              "smallest bounding-box width / height").Below("max_aspect"),
+              "smallest bounding-box width / height")
+          .Below("max_aspect"),
       Real<M>("max_aspect", &M::max_aspect, 3.0, 0.01, 100, 2, "Max. aspect",
               "largest bounding-box width / height"),
       Real<M>("min_fill", &M::min_fill, 0.7, 0, 1, 2, "Min. fill",
@@ -246,22 +266,25 @@ const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields() {
               "when [low, high] misses the reference's markers, use the nearest window that "
               "shows them"),
       Bool<M>("thesis_mode", &M::thesis_mode, false, "Thesis path only",
-              "--thesis: three largest survivors, box centres, no geometry check").Main(),
+              "--thesis: three largest survivors, box centres, no geometry check")
+          .Main(),
       Real<M>("max_marker_turn_deg", &M::max_marker_turn_deg, 70, 1, 90, 1, "Max. marker turn",
               "a view is lost when a lower marker faces the camera at more than this, degrees"),
-      Real<M>("min_foreshortening", &M::min_foreshortening, 0.2, 0, 0.99, 2,
-              "Min. foreshortening", "... or shows less than this share of its full-face area"),
-      Real<M>("geometry_tolerance", &M::geometry_tolerance, 0.15, 0.01, 1, 2,
-              "Geometry tolerance", "how far (relative to e) the upper marker may be off"),
+      Real<M>("min_foreshortening", &M::min_foreshortening, 0.2, 0, 0.99, 2, "Min. foreshortening",
+              "... or shows less than this share of its full-face area"),
+      Real<M>("geometry_tolerance", &M::geometry_tolerance, 0.15, 0.01, 1, 2, "Geometry tolerance",
+              "how far (relative to e) the upper marker may be off"),
       Real<M>("max_yaw_disagreement_deg", &M::max_yaw_disagreement_deg, 10, 0, 180, 1,
-              "Max. yaw disagreement", "lost when the yaw from areas and from distance differ "
+              "Max. yaw disagreement",
+              "lost when the yaw from areas and from distance differ "
               "by more, degrees"),
       Real<M>("max_area_misfit", &M::max_area_misfit, 0.2, 0.01, 10, 2, "Max. area misfit",
               "lost when the pair's area is off the model by more than this share"),
       Real<M>("ambiguity_margin", &M::ambiguity_margin, 0.05, 0, 10, 3, "Ambiguity margin",
               "lost when a second triple's misfit is within this margin of the best"),
       Real<M>("min_width_ratio", &M::min_width_ratio, 0.6, 0.01, 10, 2, "Min. width ratio",
-              "accepted range of the markers' width ratio, lower end").Below("max_width_ratio"),
+              "accepted range of the markers' width ratio, lower end")
+          .Below("max_width_ratio"),
       Real<M>("max_width_ratio", &M::max_width_ratio, 1.1, 0.01, 10, 2, "Max. width ratio",
               "accepted range of the markers' width ratio, upper end"),
   };

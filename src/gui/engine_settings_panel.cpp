@@ -14,6 +14,7 @@
 #include <QStackedWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <cmath>
 
 namespace armmimic::gui {
 namespace {
@@ -48,9 +49,10 @@ EngineSettingsPanel::EngineSettingsPanel(QWidget* parent)
   engine_->addItem(tr("Background subtraction (ch. 5)"), int(EngineKind::kBgsub));
   engine_->addItem(tr("Lucas–Kanade tracking (ch. 6)"), int(EngineKind::kLk));
   engine_->addItem(tr("Marker joint (ch. 4)"), int(EngineKind::kMarker));
-  pages_->addWidget(makeBgsubPage());
-  pages_->addWidget(makeLkPage());
-  pages_->addWidget(makeMarkerPage());
+  pages_->addWidget(makeEnginePage(EngineKind::kBgsub, BgsubOptionFields(), &EngineOptions::bgsub));
+  pages_->addWidget(makeEnginePage(EngineKind::kLk, LkOptionFields(), &EngineOptions::lk));
+  pages_->addWidget(
+      makeEnginePage(EngineKind::kMarker, MarkerOptionFields(), &EngineOptions::marker));
   auto* params = new QGroupBox(tr("Engine parameters"));
   auto* pl = new QVBoxLayout(params);
   pl->addWidget(pages_);
@@ -161,68 +163,141 @@ QWidget* EngineSettingsPanel::makeInputs() {
   return box;
 }
 
-QWidget* EngineSettingsPanel::makeBgsubPage() {
-  const BgsubOptions d;
-  auto* w = new QWidget;
-  auto* f = new QFormLayout(w);
-  threshold_ =
-      Spin(1, 255, d.threshold, tr("--threshold: grey-level difference (5.2.2)"), "threshold");
-  bg_standstill_ =
-      Spin(1, 100000, d.standstill_frames,
-           tr("--standstill-frames: frames averaged into the standstill image"), "bgsubStandstill");
-  straight_ratio_ = DSpin(0.01, 1.0, d.straight_ratio, 2,
-                          tr("defect depth below this share of the semi-major axis: straight arm"),
-                          "straightRatio");
-  closing_ = Spin(1, 51, d.closing_size, tr("morphological closing kernel, pixels"), "closing");
-  bg_thesis_ = new QCheckBox(tr("Thesis path only"));
-  bg_thesis_->setObjectName("bgsubThesis");
-  f->addRow(tr("Threshold"), threshold_);
-  f->addRow(tr("Standstill frames"), bg_standstill_);
-  f->addRow(tr("Straight-arm ratio"), straight_ratio_);
-  f->addRow(tr("Closing size"), closing_);
-  f->addRow(bg_thesis_);
-  return w;
+template <typename O>
+QWidget* EngineSettingsPanel::makeEnginePage(EngineKind engine,
+                                             const std::vector<OptionField<O>>& fields,
+                                             O EngineOptions::*member) {
+  const QString name = EngineName(engine);
+  auto* page = new QWidget;
+  auto* v = new QVBoxLayout(page);
+  v->setContentsMargins(0, 0, 0, 0);
+  auto* main_form = new QFormLayout;
+  auto* advanced = new QWidget;
+  advanced->setObjectName(name + "Advanced");
+  auto* advanced_form = new QFormLayout(advanced);
+  advanced_form->setContentsMargins(12, 0, 0, 0);
+  advanced_form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+  int advanced_count = 0;
+  for (const OptionField<O>& f : fields) {
+    if (f.group == OptionGroup::kInput) continue;  // an analysis input, edited with the inputs
+    const QString label = QString::fromStdString(f.label);
+    QString tip = QString::fromStdString(f.help);
+    QWidget* editor = nullptr;
+    switch (f.kind) {
+      case OptionKind::kInt: {
+        auto* spin = new QSpinBox;
+        spin->setRange(int(f.min), int(f.max));
+        spin->setSingleStep(int(f.step));
+        editor = spin;
+        tip += tr("\nDefault %1, range %2 to %3").arg(f.default_value).arg(f.min).arg(f.max);
+        break;
+      }
+      case OptionKind::kDouble: {
+        auto* spin = new QDoubleSpinBox;
+        spin->setDecimals(f.decimals);
+        spin->setRange(f.min, f.max);
+        spin->setSingleStep(f.step);
+        editor = spin;
+        tip += tr("\nDefault %1, range %2 to %3")
+                   .arg(f.default_value, 0, 'g', 6)
+                   .arg(f.min)
+                   .arg(f.max);
+        break;
+      }
+      case OptionKind::kBool:
+        editor = new QCheckBox(label);
+        tip += f.default_value != 0 ? tr("\nDefault: on") : tr("\nDefault: off");
+        break;
+      case OptionKind::kEnum: {
+        auto* combo = new QComboBox;
+        for (const std::string& c : f.choices) combo->addItem(QString::fromStdString(c));
+        connect(combo, &QComboBox::currentIndexChanged, this, &EngineSettingsPanel::changed);
+        editor = combo;
+        tip += tr("\nDefault: %1").arg(QString::fromStdString(f.choices[int(f.default_value)]));
+        break;
+      }
+    }
+    editor->setObjectName(name + "." + QString::fromStdString(f.key));
+    editor->setToolTip(tip);
+    editor->setFocusPolicy(Qt::StrongFocus);
+    QFormLayout* form = f.group == OptionGroup::kMain ? main_form : advanced_form;
+    if (f.group == OptionGroup::kAdvanced) ++advanced_count;
+    if (f.kind == OptionKind::kBool) {
+      form->addRow(editor);
+    } else {
+      auto* l = new QLabel(label);
+      l->setToolTip(tip);
+      form->addRow(l, editor);
+    }
+    ParamEditor p{engine, f.key,     f.kind, f.group, f.decimals, f.min,
+                  f.max,  f.choices, editor, nullptr, nullptr};
+    const auto get = f.get;
+    const auto set = f.set;
+    p.get = [get, member](const EngineOptions& o) { return get(o.*member); };
+    p.set = [set, member](EngineOptions& o, double value) { set(o.*member, value); };
+    params_.push_back(std::move(p));
+    setEditorValue(params_.back(), f.default_value);
+  }
+  auto* toggle = new QToolButton;
+  toggle->setObjectName(name + "AdvancedToggle");
+  toggle->setText(tr("Advanced (%1 more)").arg(advanced_count));
+  toggle->setToolTip(tr("Every other parameter of this engine"));
+  toggle->setCheckable(true);
+  toggle->setAutoRaise(true);
+  toggle->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+  toggle->setArrowType(Qt::RightArrow);
+  advanced->setVisible(false);
+  connect(toggle, &QToolButton::toggled, this, [toggle, advanced](bool on) {
+    toggle->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
+    advanced->setVisible(on);
+  });
+  advanced_[int(engine)] = toggle;
+  v->addLayout(main_form);
+  v->addWidget(toggle);
+  v->addWidget(advanced);
+  return page;
 }
 
-QWidget* EngineSettingsPanel::makeLkPage() {
-  const LkOptions d;
-  auto* w = new QWidget;
-  auto* f = new QFormLayout(w);
-  lk_standstill_ = Spin(1, 100000, d.standstill_frames,
-                        tr("--standstill-frames: used to locate the shoulder"), "lkStandstill");
-  initial_upper_ =
-      DSpin(-180, 180, d.initial_upper_deg, 1, tr("--initial-upper, degrees"), "initialUpper");
-  initial_fore_ =
-      DSpin(-180, 180, d.initial_fore_deg, 1, tr("--initial-fore, degrees"), "initialFore");
-  still_drop_ = Spin(1, 100000, d.still_frames_drop,
-                     tr("a feature still for more than this many frames is dropped"), "stillDrop");
-  lk_thesis_ = new QCheckBox(tr("Thesis path only"));
-  lk_thesis_->setObjectName("lkThesis");
-  f->addRow(tr("Standstill frames"), lk_standstill_);
-  f->addRow(tr("Initial upper arm"), initial_upper_);
-  f->addRow(tr("Initial forearm"), initial_fore_);
-  f->addRow(tr("Drop still features after"), still_drop_);
-  f->addRow(lk_thesis_);
-  return w;
+double EngineSettingsPanel::editorValue(const ParamEditor& p) const {
+  switch (p.kind) {
+    case OptionKind::kInt:
+      return static_cast<QSpinBox*>(p.widget)->value();
+    case OptionKind::kDouble:
+      return static_cast<QDoubleSpinBox*>(p.widget)->value();
+    case OptionKind::kBool:
+      return static_cast<QCheckBox*>(p.widget)->isChecked() ? 1 : 0;
+    case OptionKind::kEnum:
+      return static_cast<QComboBox*>(p.widget)->currentIndex();
+  }
+  return 0;
 }
 
-QWidget* EngineSettingsPanel::makeMarkerPage() {
-  const MarkerOptions d;
-  auto* w = new QWidget;
-  auto* f = new QFormLayout(w);
-  median_ = Spin(1, 31, d.median_size, tr("median filter window (odd)"), "median");
-  median_->setSingleStep(2);
-  low_ = Spin(0, 255, d.low, tr("--low: darkest marker grey level"), "markerLow");
-  high_ = Spin(0, 255, d.high, tr("--high: brightest marker grey level"), "markerHigh");
-  flood_ = Spin(0, 255, d.flood_range, tr("flood-fill value range (+/-)"), "floodRange");
-  marker_thesis_ = new QCheckBox(tr("Thesis path only"));
-  marker_thesis_->setObjectName("markerThesis");
-  f->addRow(tr("Median window"), median_);
-  f->addRow(tr("Low threshold"), low_);
-  f->addRow(tr("High threshold"), high_);
-  f->addRow(tr("Flood range"), flood_);
-  f->addRow(marker_thesis_);
-  return w;
+void EngineSettingsPanel::setEditorValue(const ParamEditor& p, double value) {
+  switch (p.kind) {
+    case OptionKind::kInt:
+      static_cast<QSpinBox*>(p.widget)->setValue(int(std::lround(value)));
+      break;
+    case OptionKind::kDouble:
+      static_cast<QDoubleSpinBox*>(p.widget)->setValue(value);
+      break;
+    case OptionKind::kBool:
+      static_cast<QCheckBox*>(p.widget)->setChecked(value != 0);
+      break;
+    case OptionKind::kEnum:
+      static_cast<QComboBox*>(p.widget)->setCurrentIndex(int(std::lround(value)));
+      break;
+  }
+}
+
+QWidget* EngineSettingsPanel::parameterEditor(EngineKind engine, const QString& key) const {
+  for (const ParamEditor& p : params_) {
+    if (p.engine == engine && QString::fromStdString(p.key) == key) return p.widget;
+  }
+  return nullptr;
+}
+
+QToolButton* EngineSettingsPanel::advancedToggle(EngineKind engine) const {
+  return advanced_[int(engine)];
 }
 
 void EngineSettingsPanel::updateEnabled() {
@@ -249,21 +324,16 @@ AnalysisOptions EngineSettingsPanel::options() const {
   o.shoulder_px.reset();
   o.roi.reset();
   o.engine.kind = static_cast<EngineKind>(engine_->currentData().toInt());
-  o.engine.bgsub.threshold = threshold_->value();
-  o.engine.bgsub.standstill_frames = bg_standstill_->value();
-  o.engine.bgsub.straight_ratio = straight_ratio_->value();
-  o.engine.bgsub.closing_size = closing_->value();
-  o.engine.bgsub.thesis_mode = bg_thesis_->isChecked();
-  o.engine.lk.standstill_frames = lk_standstill_->value();
-  o.engine.lk.initial_upper_deg = initial_upper_->value();
-  o.engine.lk.initial_fore_deg = initial_fore_->value();
-  o.engine.lk.still_frames_drop = still_drop_->value();
-  o.engine.lk.thesis_mode = lk_thesis_->isChecked();
-  o.engine.marker.median_size = median_->value();
-  o.engine.marker.low = low_->value();
-  o.engine.marker.high = high_->value();
-  o.engine.marker.flood_range = flood_->value();
-  o.engine.marker.thesis_mode = marker_thesis_->isChecked();
+  for (const ParamEditor& p : params_) {
+    const double shown = editorValue(p);
+    // A double the spin box rounded for display keeps its exact value (1/6 shows as 0.167)
+    // until the operator changes it, so the GUI and the CLI analyse with the same number.
+    if (p.kind == OptionKind::kDouble) {
+      const double scale = std::pow(10.0, p.decimals);
+      if (std::round(p.get(base_.engine) * scale) == std::round(shown * scale)) continue;
+    }
+    p.set(o.engine, shown);
+  }
   const bool marker = o.engine.kind == EngineKind::kMarker;
   if (marker) {
     o.reference_path = reference_->text().toStdString();
@@ -289,21 +359,7 @@ AnalysisOptions EngineSettingsPanel::options() const {
 void EngineSettingsPanel::setOptions(const AnalysisOptions& o) {
   base_ = o;
   engine_->setCurrentIndex(engine_->findData(int(o.engine.kind)));
-  threshold_->setValue(o.engine.bgsub.threshold);
-  bg_standstill_->setValue(o.engine.bgsub.standstill_frames);
-  straight_ratio_->setValue(o.engine.bgsub.straight_ratio);
-  closing_->setValue(o.engine.bgsub.closing_size);
-  bg_thesis_->setChecked(o.engine.bgsub.thesis_mode);
-  lk_standstill_->setValue(o.engine.lk.standstill_frames);
-  initial_upper_->setValue(o.engine.lk.initial_upper_deg);
-  initial_fore_->setValue(o.engine.lk.initial_fore_deg);
-  still_drop_->setValue(o.engine.lk.still_frames_drop);
-  lk_thesis_->setChecked(o.engine.lk.thesis_mode);
-  median_->setValue(o.engine.marker.median_size);
-  low_->setValue(o.engine.marker.low);
-  high_->setValue(o.engine.marker.high);
-  flood_->setValue(o.engine.marker.flood_range);
-  marker_thesis_->setChecked(o.engine.marker.thesis_mode);
+  for (const ParamEditor& p : params_) setEditorValue(p, p.get(o.engine));
   if (!o.background_path.empty()) {
     bg_mode_->setCurrentIndex(kBgImage);
   } else if (o.background_frames > 0) {
@@ -358,21 +414,24 @@ void EngineSettingsPanel::save(QSettings& s) const {
   s.setValue("armLength", arm_length_->text());
   s.setValue("reference", reference_->text());
   s.setValue("start", start_->value());
-  s.setValue("bgsub/threshold", o.engine.bgsub.threshold);
-  s.setValue("bgsub/standstill", o.engine.bgsub.standstill_frames);
-  s.setValue("bgsub/straightRatio", o.engine.bgsub.straight_ratio);
-  s.setValue("bgsub/closing", o.engine.bgsub.closing_size);
-  s.setValue("bgsub/thesis", o.engine.bgsub.thesis_mode);
-  s.setValue("lk/standstill", o.engine.lk.standstill_frames);
-  s.setValue("lk/initialUpper", o.engine.lk.initial_upper_deg);
-  s.setValue("lk/initialFore", o.engine.lk.initial_fore_deg);
-  s.setValue("lk/stillDrop", o.engine.lk.still_frames_drop);
-  s.setValue("lk/thesis", o.engine.lk.thesis_mode);
-  s.setValue("marker/median", o.engine.marker.median_size);
-  s.setValue("marker/low", o.engine.marker.low);
-  s.setValue("marker/high", o.engine.marker.high);
-  s.setValue("marker/flood", o.engine.marker.flood_range);
-  s.setValue("marker/thesis", o.engine.marker.thesis_mode);
+  for (const ParamEditor& p : params_) {
+    const QString key = QString("%1/%2").arg(EngineName(p.engine), QString::fromStdString(p.key));
+    const double v = p.get(o.engine);
+    switch (p.kind) {
+      case OptionKind::kInt:
+        s.setValue(key, int(std::lround(v)));
+        break;
+      case OptionKind::kDouble:
+        s.setValue(key, v);
+        break;
+      case OptionKind::kBool:
+        s.setValue(key, v != 0);
+        break;
+      case OptionKind::kEnum:
+        s.setValue(key, QString::fromStdString(p.choices[int(v)]));
+        break;
+    }
+  }
   s.endGroup();
 }
 
@@ -381,24 +440,24 @@ void EngineSettingsPanel::load(QSettings& s) {
   AnalysisOptions o;
   o.engine.kind =
       static_cast<EngineKind>(std::clamp(s.value("engine", int(EngineKind::kBgsub)).toInt(), 0, 2));
-  o.engine.bgsub.threshold = s.value("bgsub/threshold", o.engine.bgsub.threshold).toInt();
-  o.engine.bgsub.standstill_frames =
-      s.value("bgsub/standstill", o.engine.bgsub.standstill_frames).toInt();
-  o.engine.bgsub.straight_ratio =
-      s.value("bgsub/straightRatio", o.engine.bgsub.straight_ratio).toDouble();
-  o.engine.bgsub.closing_size = s.value("bgsub/closing", o.engine.bgsub.closing_size).toInt();
-  o.engine.bgsub.thesis_mode = s.value("bgsub/thesis", false).toBool();
-  o.engine.lk.standstill_frames = s.value("lk/standstill", o.engine.lk.standstill_frames).toInt();
-  o.engine.lk.initial_upper_deg =
-      s.value("lk/initialUpper", o.engine.lk.initial_upper_deg).toDouble();
-  o.engine.lk.initial_fore_deg = s.value("lk/initialFore", o.engine.lk.initial_fore_deg).toDouble();
-  o.engine.lk.still_frames_drop = s.value("lk/stillDrop", o.engine.lk.still_frames_drop).toInt();
-  o.engine.lk.thesis_mode = s.value("lk/thesis", false).toBool();
-  o.engine.marker.median_size = s.value("marker/median", o.engine.marker.median_size).toInt();
-  o.engine.marker.low = s.value("marker/low", o.engine.marker.low).toInt();
-  o.engine.marker.high = s.value("marker/high", o.engine.marker.high).toInt();
-  o.engine.marker.flood_range = s.value("marker/flood", o.engine.marker.flood_range).toInt();
-  o.engine.marker.thesis_mode = s.value("marker/thesis", false).toBool();
+  for (const ParamEditor& p : params_) {
+    const QString key = QString("%1/%2").arg(EngineName(p.engine), QString::fromStdString(p.key));
+    if (!s.contains(key)) continue;
+    const QVariant value = s.value(key);
+    double v = 0;
+    bool ok = true;
+    if (p.kind == OptionKind::kBool) {
+      v = value.toBool() ? 1 : 0;
+    } else if (p.kind == OptionKind::kEnum) {
+      const auto it = std::find(p.choices.begin(), p.choices.end(), value.toString().toStdString());
+      ok = it != p.choices.end();
+      v = double(it - p.choices.begin());
+    } else {
+      v = value.toDouble(&ok);
+    }
+    // A hand-edited or outdated settings file cannot put a parameter out of its range.
+    if (ok) p.set(o.engine, std::clamp(v, p.min, p.max));
+  }
   o.arm_length_path = s.value("armLength").toString().toStdString();
   o.reference_path = s.value("reference").toString().toStdString();
   o.start = s.value("start", 0).toInt();

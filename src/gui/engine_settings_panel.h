@@ -1,10 +1,17 @@
 // EngineSettingsPanel: the engine choice, its parameters and the analysis inputs, edited in the
-// same AnalysisOptions/EngineOptions structs the CLI fills from its flags.
+// same AnalysisOptions/EngineOptions structs the CLI fills from its flags. The parameter forms
+// (the main ones and a collapsible "Advanced" section per engine) and their saved settings are
+// built from the engines' parameter tables (armmimic/engines/option_fields.h), so every option
+// is editable.
 #pragma once
 
 #include <QWidget>
+#include <functional>
+#include <string>
+#include <vector>
 
 #include "armmimic/engines/analysis.h"
+#include "armmimic/engines/option_fields.h"
 
 class QCheckBox;
 class QComboBox;
@@ -14,6 +21,7 @@ class QLineEdit;
 class QSettings;
 class QSpinBox;
 class QStackedWidget;
+class QToolButton;
 
 namespace armmimic::gui {
 
@@ -33,24 +41,47 @@ class EngineSettingsPanel : public QWidget {
   void save(QSettings& settings) const;
   void load(QSettings& settings);
 
+  // The editor of one engine parameter, named "<engine>.<key>" ("lk.max_corners"): a QSpinBox,
+  // QDoubleSpinBox, QCheckBox or QComboBox. nullptr for an unknown key.
+  QWidget* parameterEditor(EngineKind engine, const QString& key) const;
+  // The button that shows or hides an engine's "Advanced" section.
+  QToolButton* advancedToggle(EngineKind engine) const;
+
  signals:
   void changed();
   void roiChanged(const std::optional<cv::Rect>& roi);
   void shoulderChanged(const std::optional<cv::Point2d>& shoulder_px);
 
  private:
+  // One row of an engine's parameter table, bound to its editor widget.
+  struct ParamEditor {
+    EngineKind engine;
+    std::string key;  // the table's key
+    OptionKind kind;
+    OptionGroup group;
+    int decimals;
+    double min, max;
+    std::vector<std::string> choices;
+    QWidget* widget;
+    std::function<double(const EngineOptions&)> get;
+    std::function<void(EngineOptions&, double)> set;
+  };
+  template <typename O>
+  QWidget* makeEnginePage(EngineKind engine, const std::vector<OptionField<O>>& fields,
+                          O EngineOptions::*member);
   QWidget* makeInputs();
-  QWidget* makeBgsubPage();
-  QWidget* makeLkPage();
-  QWidget* makeMarkerPage();
   QLineEdit* fileRow(QWidget* parent, const QString& name, QWidget** row);
   void updateEnabled();
+  double editorValue(const ParamEditor& p) const;
+  void setEditorValue(const ParamEditor& p, double value);
 
   // Fields the panel does not show keep the values last given to setOptions().
   AnalysisOptions base_;
 
   QComboBox* engine_;
   QStackedWidget* pages_;
+  std::vector<ParamEditor> params_;
+  QToolButton* advanced_[3] = {};
   // Inputs.
   QComboBox* bg_mode_;
   QLineEdit* background_;
@@ -66,24 +97,6 @@ class EngineSettingsPanel : public QWidget {
   QDoubleSpinBox* shoulder_y_;
   QGroupBox* roi_box_;
   QSpinBox* roi_[4];
-  // bgsub.
-  QSpinBox* threshold_;
-  QSpinBox* bg_standstill_;
-  QDoubleSpinBox* straight_ratio_;
-  QSpinBox* closing_;
-  QCheckBox* bg_thesis_;
-  // lk.
-  QSpinBox* lk_standstill_;
-  QDoubleSpinBox* initial_upper_;
-  QDoubleSpinBox* initial_fore_;
-  QSpinBox* still_drop_;
-  QCheckBox* lk_thesis_;
-  // marker.
-  QSpinBox* median_;
-  QSpinBox* low_;
-  QSpinBox* high_;
-  QSpinBox* flood_;
-  QCheckBox* marker_thesis_;
 };
 
 }  // namespace armmimic::gui
