@@ -17,7 +17,6 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
-#include <QSerialPortInfo>
 #include <QSettings>
 #include <QTabWidget>
 #include <QTableWidget>
@@ -25,6 +24,7 @@
 
 #include "armmimic/core/atomic_file.h"
 #include "armmimic/robot/val_program.h"
+#include "armmimic/serial/serial_link.h"
 #include "robot_link.h"
 #include "robot_preview.h"
 #include "sim_controller.h"
@@ -293,9 +293,10 @@ void RobotPanel::refreshPorts() {
   const QString current = port_->currentText();
   port_->clear();
   if (sim_->isRunning()) port_->addItem(sim_->devicePath() + " (simulated)");
-  for (const QSerialPortInfo& info : QSerialPortInfo::availablePorts()) {
-    port_->addItem(info.systemLocation() +
-                   (info.description().isEmpty() ? QString() : " (" + info.description() + ")"));
+  for (const serial::PortInfo& info : serial::ListPorts()) {
+    const QString description = QString::fromStdString(info.description);
+    port_->addItem(QString::fromStdString(info.system_location) +
+                   (description.isEmpty() ? QString() : " (" + description + ")"));
   }
   if (!current.isEmpty() && port_->findText(current) < 0 && !sim_->isRunning()) {
     port_->setEditText(current);

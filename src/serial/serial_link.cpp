@@ -173,10 +173,40 @@ void SerialLink::Close() {
   }
 }
 
-double SerialLink::Now() const { return static_cast<double>(clock_.nsecsElapsed()) * 1e-9; }
+double SerialLink::Now() const {
+  const qint64 now = clock_.isValid() ? clock_.nsecsElapsed() : 0;
+  const qint64 paused = paused_ns_ + (paused_ ? now - pause_started_ns_ : 0);
+  return static_cast<double>(now - paused) * 1e-9;
+}
+
+void SerialLink::SetLinkSettings(const robot::LinkSettings& settings) {
+  protocol_ = robot::LinkProtocol(settings);
+}
+
+void SerialLink::SetPaused(bool paused) {
+  if (paused == paused_) return;
+  const qint64 now = clock_.isValid() ? clock_.nsecsElapsed() : 0;
+  if (paused) {
+    pause_started_ns_ = now;
+    paused_ = true;
+    return;
+  }
+  paused_ns_ += now - pause_started_ns_;
+  paused_ = false;
+  if (!held_.isEmpty()) {
+    const QByteArray data = held_;
+    held_.clear();
+    protocol_.OnBytes(std::string_view(data.constData(), static_cast<std::size_t>(data.size())),
+                      Now());
+  }
+  Flush();
+}
 
 void SerialLink::Start(std::vector<robot::LinkLine> lines, const std::string& source_name) {
   clock_.start();
+  paused_ = false;
+  paused_ns_ = 0;
+  held_.clear();
   reported_ = 0;
   finished_sent_ = false;
   protocol_.Start(std::move(lines), source_name, Now());
@@ -191,6 +221,18 @@ void SerialLink::Cancel(const std::string& reason) {
 
 void SerialLink::OnReadyRead() {
   const QByteArray data = port_->readAll();
+  for (char c : data) {
+    if (c == '\r' || c == '\n') {
+      if (!rx_line_.isEmpty()) emit lineReceived(QString::fromLatin1(rx_line_));
+      rx_line_.clear();
+    } else {
+      rx_line_.append(c);
+    }
+  }
+  if (paused_) {
+    held_.append(data);
+    return;
+  }
   if (!data.isEmpty()) {
     protocol_.OnBytes(std::string_view(data.constData(), static_cast<std::size_t>(data.size())),
                       Now());
@@ -201,7 +243,13 @@ void SerialLink::OnReadyRead() {
 void SerialLink::OnError(QSerialPort::SerialPortError error) {
   if (error == QSerialPort::NoError || error == QSerialPort::TimeoutError) return;
   const std::string qt = port_->errorString().toStdString();
-  if (finished_sent_) return;
+  if (finished_sent_) {
+    if (error == QSerialPort::ResourceError) {
+      emit portError(
+          QString::fromStdString("--port " + settings_.port + ": the connection was lost: " + qt));
+    }
+    return;
+  }
   if (error != QSerialPort::ResourceError && error != QSerialPort::ReadError &&
       error != QSerialPort::WriteError) {
     return;
@@ -213,6 +261,7 @@ void SerialLink::OnError(QSerialPort::SerialPortError error) {
 }
 
 void SerialLink::OnTick() {
+  if (paused_) return;
   protocol_.OnTick(Now());
   Flush();
 }

@@ -1,6 +1,8 @@
 // The robot side: plan from the analysis, see limit violations before anything moves, export
 // the .val, and send to the built-in simulated controller over a pseudo-terminal.
 #include <QFileInfo>
+#include <QPushButton>
+#include <QTest>
 
 #include "analysis_job.h"
 #include "armmimic/robot/val_program.h"
@@ -74,6 +76,45 @@ TEST_F(RobotPanelTest, PlansExportsAndSendsToTheSimulatedController) {
         return true;
       },
       5000));
+  EXPECT_FALSE(panel->replyLog().isEmpty());
+}
+
+TEST_F(RobotPanelTest, PauseHoldsTheSendAndAbortStopsIt) {
+  MainWindow w;
+  Analyze(w);
+  gui::RobotPanel* panel = w.robotPanel();
+  ASSERT_TRUE(panel->plan().planned()) << w.log()->text().toStdString();
+  ASSERT_TRUE(panel->startSimulator(1.0)) << w.log()->text().toStdString();  // real-time moves
+  ASSERT_TRUE(panel->connectTo(panel->simulator()->devicePath())) << w.log()->text().toStdString();
+  bool finished = false, ok = true;
+  QObject::connect(panel, &gui::RobotPanel::sendFinished, [&](bool success) {
+    finished = true;
+    ok = success;
+  });
+  auto* pause = panel->findChild<QPushButton*>("pauseButton");
+  auto* abort = panel->findChild<QPushButton*>("abortButton");
+  ASSERT_TRUE(pause && abort);
+  EXPECT_FALSE(pause->isEnabled());
+  ASSERT_TRUE(panel->sendPlan(true)) << w.log()->text().toStdString();
+  ASSERT_TRUE(pause->isEnabled());
+  ASSERT_TRUE(WaitUntil([&] { return panel->link()->acknowledged() >= 2 || finished; }, 20000));
+  ASSERT_FALSE(finished) << w.log()->text().toStdString();
+  pause->click();
+  EXPECT_TRUE(panel->link()->isPaused());
+  // While paused nothing is acknowledged, however long the controller takes.
+  const int acked = panel->link()->acknowledged();
+  QTest::qWait(600);
+  EXPECT_EQ(panel->link()->acknowledged(), acked);
+  EXPECT_FALSE(finished);
+  abort->click();
+  ASSERT_TRUE(WaitUntil([&] { return finished; }, 5000));
+  EXPECT_FALSE(ok);
+  EXPECT_NE(w.log()->text().indexOf("aborted by the operator"), -1)
+      << w.log()->text().toStdString();
+  EXPECT_LT(panel->simulator()->movesExecuted(),
+            static_cast<int>(panel->plan().trajectory().keyframes.size()));
+  EXPECT_FALSE(panel->link()->isSending());
+  EXPECT_FALSE(pause->isEnabled());
   EXPECT_FALSE(panel->replyLog().isEmpty());
 }
 

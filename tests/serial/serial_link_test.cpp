@@ -3,6 +3,7 @@
 
 #include <QCoreApplication>
 #include <QEventLoop>
+#include <QStringList>
 #include <QTimer>
 
 #include <gtest/gtest.h>
@@ -114,6 +115,58 @@ TEST(SerialLink, CancelStopsTheStreamAndNothingMoreIsWritten) {
   EXPECT_EQ(link.protocol().error_message(), "stopped by the operator");
   link.Close();
   EXPECT_EQ(server.log().size(), 1u);
+}
+
+TEST(SerialLink, PauseHoldsTheNextLineAndEveryReplyLineIsReported) {
+  App();
+  sim::EmulatorOptions o;
+  o.time_scale = 0.02;
+  sim::PtyServer server(o);
+  ASSERT_TRUE(server.Start().ok());
+  SerialLink link(robot::LinkSettings{});
+  PortSettings port;
+  port.port = server.device_path();
+  {
+    const Status s = link.Open(port);
+    ASSERT_TRUE(s.ok()) << s.message();
+  }
+  QStringList replies;
+  QObject::connect(&link, &SerialLink::lineReceived, [&](const QString& line) { replies << line; });
+  bool finished = false, ok = false;
+  QObject::connect(&link, &SerialLink::finished, [&](bool result) {
+    finished = true;
+    ok = result;
+  });
+  int acked = 0;
+  QObject::connect(&link, &SerialLink::progress, [&](int done, int) {
+    acked = done;
+    if (done == 2) link.SetPaused(true);
+  });
+  link.Start(Moves(5), "moves.val");
+  QEventLoop loop;
+  auto pump = [&](int ms) {
+    QTimer::singleShot(ms, &loop, [&] { loop.quit(); });
+    loop.exec();
+  };
+  for (int i = 0; i < 200 && !link.paused() && !finished; ++i) pump(10);
+  ASSERT_TRUE(link.paused());
+  // Whatever the controller answers meanwhile is held: no acknowledgement, no further line.
+  pump(400);
+  const int received = server.lines_received();
+  const std::size_t moves = server.log().size();
+  pump(400);
+  EXPECT_EQ(acked, 2);
+  EXPECT_FALSE(finished);
+  EXPECT_EQ(server.lines_received(), received);
+  EXPECT_EQ(server.log().size(), moves);
+  link.SetPaused(false);
+  for (int i = 0; i < 2000 && !finished; ++i) pump(10);
+  EXPECT_TRUE(ok) << link.protocol().error_message();
+  EXPECT_EQ(acked, 6);
+  EXPECT_EQ(server.joints(), (robot::JointArray{5, -90, 0, 0, 0, -5}));
+  // Lines as received: the prompt the controller printed, then its echo of our line.
+  EXPECT_TRUE(replies.contains(".SPEED 60")) << replies.join(" | ").toStdString();
+  EXPECT_GE(replies.size(), 6);
 }
 
 TEST(SerialLink, SettingsAndFlagParsersNameTheFlag) {

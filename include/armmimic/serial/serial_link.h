@@ -64,6 +64,13 @@ class SerialLink : public QObject {
   void Start(std::vector<robot::LinkLine> lines, const std::string& source_name);
   // Stops the stream (kAborted) with `reason`; nothing more is written.
   void Cancel(const std::string& reason);
+  // Replaces the protocol (prompt, terminator, timeouts) for the next Start(). The protocol's
+  // callbacks are reset too: set them after this call.
+  void SetLinkSettings(const robot::LinkSettings& settings);
+  // Pause holds back what the controller sends, so the next line waits; the protocol's clock
+  // stands still meanwhile (a pause is no timeout). Resuming feeds what arrived.
+  void SetPaused(bool paused);
+  bool paused() const { return paused_; }
 
   // For callbacks (safety gate, journal) and results. Set callbacks before Start().
   robot::LinkProtocol& protocol() { return protocol_; }
@@ -72,6 +79,10 @@ class SerialLink : public QObject {
  signals:
   void progress(int acknowledged, int total);
   void finished(bool ok);
+  // Each non-empty line the controller sent, as received (for a reply log).
+  void lineReceived(const QString& line);
+  // The port failed while no stream was running (a stream fails through finished() instead).
+  void portError(const QString& message);
 
  private:
   void OnReadyRead();
@@ -87,6 +98,11 @@ class SerialLink : public QObject {
   PortSettings settings_;
   std::size_t reported_ = 0;
   bool finished_sent_ = true;
+  bool paused_ = false;
+  QByteArray held_;       // received while paused
+  QByteArray rx_line_;    // the reply line being assembled for lineReceived()
+  qint64 paused_ns_ = 0;  // time spent paused, not seen by the protocol
+  qint64 pause_started_ns_ = 0;
 };
 
 }  // namespace armmimic::serial
