@@ -144,7 +144,22 @@ Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
     if (!st) return finish(st);
   }
 
-  if (arm_engine && options.start > 0) {
+  if (arm_engine && options.start > 0 && info.kind == SourceKind::kCamera) {
+    // A live camera or stream cannot seek: its first `start` frames are read and dropped, so
+    // frame numbers still count from the first frame it delivered.
+    Frame skipped;
+    for (int i = 0; i < options.start; ++i) {
+      if (Cancelled(callbacks)) {
+        summary->cancelled = true;
+        return finish(Status::Ok());
+      }
+      if (!source->Read(&skipped, &st)) {
+        return finish(Status::Error("--start " + std::to_string(options.start) + ": " +
+                                    info.path + " ended after " + std::to_string(i) + " frames" +
+                                    (st ? std::string() : " (" + st.message() + ")")));
+      }
+    }
+  } else if (arm_engine && options.start > 0) {
     st = source->Seek(options.start);
     if (!st)
       return finish(
