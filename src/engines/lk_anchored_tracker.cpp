@@ -114,6 +114,8 @@ class AnchoredTracker : public Tracker {
     line_count_ = 0;
     SetPoseMotions();
     last_seed_ = 0;
+    elbow_num_ = elbow_den_ = 0;
+    elbow_from_bar_ = false;
     return MakePose();
   }
 
@@ -291,12 +293,15 @@ class AnchoredTracker : public Tracker {
 
   // Refines a part's direction with the bar search when the part stands out of its
   // surroundings (over the wall, not in front of the body in the same cloth).
+  // For the forearm (`avoid_fold`), directions folded back onto the upper arm beyond
+  // `max_bend_deg` are not searched: there the forearm's strip lies on the upper arm's sleeve.
   double RefineWithBar(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px,
-                       double deg, double length_px, bool* used) const {
+                       double deg, double length_px, bool avoid_fold, bool* used) const {
     *used = false;
     if (!o_.use_bar || !bar.valid) return deg;
-    const BarSearch r =
-        SearchArmBar(bgr, bar, joint_px, deg, length_px, o_.bar_search_deg, o_.bar_min_score);
+    const BarSearch r = SearchArmBar(bgr, bar, joint_px, deg, length_px, o_.bar_search_deg,
+                                     o_.bar_min_score, Wrap180(upper_deg_ + 180),
+                                     avoid_fold ? 180 - o_.max_bend_deg : 0);
     if (!r.found) return deg;
     *used = true;
     return r.deg;
@@ -349,24 +354,41 @@ class AnchoredTracker : public Tracker {
     const double bend = AngleDiff(fore_deg_, upper_deg_);
     Motion2D tu;
     double up = upper_deg_;
-    if (FitPart(kUpper, shoulder_, upper_deg_, upper_deg_, o_.prior_weight * lu_,
-                CountConfirmed(kUpper) < 3, &tu)) {
-      up = Wrap180(tu.RotationCcwDeg());
+    const bool fitted_up = FitPart(kUpper, shoulder_, upper_deg_, upper_deg_,
+                                   o_.prior_weight * lu_, CountConfirmed(kUpper) < 3, &tu);
+    if (fitted_up) up = Wrap180(tu.RotationCcwDeg());
+    up = RefineWithBar(bgr, upper_bar_[side_], shoulder_, up, lu_, false, &upper_bar_used_);
+    if (!upper_bar_used_) {
+      // The features may have been misled (too few, or on the background); the sleeve may still
+      // be where the part was.
+      up = RefineWithBar(bgr, upper_bar_[side_], shoulder_, upper_deg_, lu_, false,
+                         &upper_bar_used_);
+      if (!upper_bar_used_ && fitted_up) up = Wrap180(tu.RotationCcwDeg());
     }
-    up = RefineWithBar(bgr, upper_bar_[side_], shoulder_, up, lu_, &upper_bar_used_);
     if (upper_bar_used_ && refine_shoulder_) up = RefineShoulder(bgr, up);
     upper_deg_ = up;
     tu_ = PartMotion(upper_deg_, shoulder_);
     const cv::Point2d elbow = Elbow();
-    double fo = Wrap180(upper_deg_ + bend);
+    const double fo_prior = Wrap180(upper_deg_ + bend);
+    double fo = fo_prior;
     Motion2D tf;
     if (FitPart(kFore, elbow, fore_deg_, fo, o_.prior_weight * lf_, CountConfirmed(kFore) < 3,
                 &tf)) {
       fo = Wrap180(tf.RotationCcwDeg());
     }
-    fo = RefineWithBar(bgr, fore_bar_[side_], elbow, fo, lf_, &fore_bar_used_);
+    const double fo_feat = fo;
+    fo = RefineWithBar(bgr, fore_bar_[side_], elbow, fo_feat, lf_, true, &fore_bar_used_);
+    if (!fore_bar_used_) {
+      fo = RefineWithBar(bgr, fore_bar_[side_], elbow, fo_prior, lf_, true, &fore_bar_used_);
+      if (!fore_bar_used_) fo = fo_feat;
+    }
+    if (fore_bar_used_) {
+      LocateElbowOnBar(bgr, fo);
+      // The forearm's sleeve about the elbow found so far.
+      fo = RefineWithBar(bgr, fore_bar_[side_], Elbow(), fo, lf_, true, &fore_bar_used_);
+    }
     fore_deg_ = fo;
-    tf_ = PartMotion(fore_deg_, elbow);
+    tf_ = PartMotion(fore_deg_, Elbow());
     for (Feature& f : feats_) {
       f.ru = Dist(tu_.Apply(f.cu), cv::Point2d(f.p));
       f.rf = Dist(tf_.Apply(f.cf), cv::Point2d(f.p));
@@ -414,6 +436,38 @@ class AnchoredTracker : public Tracker {
     feats_.resize(w);
   }
 
+  // Where the elbow lies along the upper arm, from the sleeves in the current frame: once the arm
+  // is bent, the forearm's sleeve is found by moving its pivot along the upper arm as well as
+  // turning it, and the best pivot is where the two sleeves meet. Each frame's pivot is averaged
+  // with weight sin^2(bend), as a straighter arm tells less.
+  void LocateElbowOnBar(const cv::Mat& bgr, double fore_deg) {
+    const double bend = AngleDiff(fore_deg, upper_deg_);
+    if (std::abs(bend) < o_.bend_for_elbow_deg) return;
+    const ArmBar& bar = fore_bar_[side_];
+    const cv::Point2d u = DirectionVector(upper_deg_);
+    const int n_l = 2 * kElbowShiftPx + 1;
+    std::vector<double> best_per_l(n_l, -2);
+    int best_i = -1;
+    for (int i = 0; i < n_l; ++i) {
+      const cv::Point2d pivot = shoulder_ + (lu_ + i - kElbowShiftPx) * u;
+      for (int a = -kElbowTurnDeg; a <= kElbowTurnDeg; ++a) {
+        best_per_l[i] = std::max(best_per_l[i], ArmBarScore(bgr, bar, pivot, fore_deg + a, kElbowStripFraction * lf_));
+      }
+      if (best_i < 0 || best_per_l[i] > best_per_l[best_i]) best_i = i;
+    }
+    // A best pivot at the edge of the search is no measurement.
+    if (best_i <= 0 || best_i >= n_l - 1 || best_per_l[best_i] < o_.bar_min_score) return;
+    double offset = best_i - kElbowShiftPx;
+    const double a = best_per_l[best_i - 1], b = best_per_l[best_i], c = best_per_l[best_i + 1];
+    const double den = a - 2 * b + c;
+    if (den < 0) offset += std::clamp(0.5 * (a - c) / den, -0.5, 0.5);
+    const double s = std::sin(bend * kPi / 180);
+    elbow_num_ += s * s * (lu_ + offset);
+    elbow_den_ += s * s;
+    lu_ = std::clamp(elbow_num_ / elbow_den_, 0.3 * arm_len_, 0.75 * arm_len_);
+    elbow_from_bar_ = true;
+  }
+
   // Once the elbow bends, the features seeded on a straight arm tell where it is: those that
   // follow the upper arm lie before it, those that follow the forearm beyond it.
   void LearnElbow() {
@@ -446,7 +500,7 @@ class AnchoredTracker : public Tracker {
     if (best_k <= 0 || best_k >= static_cast<int>(samples.size())) return;
     const double split = 0.5 * (samples[best_k - 1].first + samples[best_k].first);
     if (split <= 0.15 * arm_len_ || split >= 0.85 * arm_len_) return;
-    lu_ = std::clamp(0.9 * lu_ + 0.1 * split, 0.3 * arm_len_, 0.7 * arm_len_);
+    if (!elbow_from_bar_) lu_ = std::clamp(0.9 * lu_ + 0.1 * split, 0.3 * arm_len_, 0.7 * arm_len_);
     // The forearm reaches as far as its farthest features (robustly).
     std::vector<double> reach;
     for (const Feature& f : feats_) {
@@ -556,6 +610,14 @@ class AnchoredTracker : public Tracker {
   int line_count_ = 0;
   int frame_ = 0;
   int last_seed_ = 0;
+  // Elbow from the sleeves (LocateElbowOnBar).
+  static constexpr int kElbowShiftPx = 8;   // pivot searched this far along the upper arm
+  static constexpr int kElbowTurnDeg = 4;   // and the forearm turned this far
+  // Only the forearm's sleeve near the elbow is scored there: the hand and the cuff beyond it
+  // would favour a pivot that pulls the strip back.
+  static constexpr double kElbowStripFraction = 0.75;
+  double elbow_num_ = 0, elbow_den_ = 0;
+  bool elbow_from_bar_ = false;
 };
 
 }  // namespace

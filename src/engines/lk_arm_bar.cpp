@@ -9,7 +9,9 @@
 namespace armmimic::lk {
 namespace {
 
-constexpr double kColourSigma = 30;  // grey levels: how far a pixel may be from the bar colour
+// Grey levels: how far a pixel may be from the bar colour. Wide enough for the shading of a
+// sleeve that turned away from the light since its colour was learned, and for its cuff.
+constexpr double kColourSigma = 45;
 constexpr int kAlongSamples = 10;
 constexpr double kAlongFrom = 0.2, kAlongTo = 0.8;
 
@@ -99,17 +101,23 @@ double ArmBarScore(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joi
 }
 
 BarSearch SearchArmBar(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px,
-                       double predicted_deg, double length_px, double range_deg, double min_score) {
+                       double predicted_deg, double length_px, double range_deg, double min_score,
+                       double avoid_deg, double avoid_half_deg) {
   BarSearch out;
   if (!bar.valid || !(length_px > 2)) return out;
   const int steps = static_cast<int>(std::ceil(range_deg));
   std::vector<double> scores(2 * steps + 1);
   int best = -1;
   for (int i = 0; i <= 2 * steps; ++i) {
-    scores[i] = ArmBarScore(bgr, bar, joint_px, predicted_deg + (i - steps), length_px);
+    const double deg = predicted_deg + (i - steps);
+    if (avoid_half_deg > 0 && std::abs(AngleDiff(deg, avoid_deg)) < avoid_half_deg) {
+      scores[i] = -2;  // lowest possible score
+      continue;
+    }
+    scores[i] = ArmBarScore(bgr, bar, joint_px, deg, length_px);
     if (best < 0 || scores[i] > scores[best]) best = i;
   }
-  if (scores[best] < min_score) return out;
+  if (best < 0 || scores[best] < min_score) return out;
   double offset = best - steps;
   if (best > 0 && best < 2 * steps) {
     const double a = scores[best - 1], b = scores[best], c = scores[best + 1];

@@ -32,9 +32,11 @@ struct BarSearch {
   double score = 0;  // its score
 };
 
-// Searches directions within `range_deg` of `predicted_deg`.
+// Searches directions within `range_deg` of `predicted_deg`, skipping those within
+// `avoid_half_deg` of `avoid_deg` (e.g. the forearm folded back onto the upper arm's sleeve).
 BarSearch SearchArmBar(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px,
-                       double predicted_deg, double length_px, double range_deg, double min_score);
+                       double predicted_deg, double length_px, double range_deg, double min_score,
+                       double avoid_deg = 0, double avoid_half_deg = 0);
 
 // Length of the sleeve from `joint_px` along `deg`: where the axis stops having the bar's colour
 // (stops after `max_px`).

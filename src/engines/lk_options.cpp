@@ -70,6 +70,7 @@ Status LkOptions::Check() const {
       Range("forward_backward_px", forward_backward_px, 0, 100),
       Range("prior_weight", prior_weight, 0, 1000),
       Range("bend_for_elbow_deg", bend_for_elbow_deg, 0, 180),
+      Range("max_bend_deg", max_bend_deg, 90, 180),
   };
   for (const Status& st : checks) {
     if (!st) return st;

@@ -229,7 +229,10 @@ const std::vector<OptionField<LkOptions>>& LkOptionFields() {
       Real<L>("inlier_deg", &L::inlier_deg, 8, 0.5, 90, 1, "Inlier angle",
               "a feature whose implied direction is this far off is ignored, degrees"),
       Real<L>("bend_for_elbow_deg", &L::bend_for_elbow_deg, 20, 0, 180, 1, "Bend to learn elbow",
-              "the elbow split is learned only when bent this much, degrees"),
+              "the elbow is located only when bent this much, degrees"),
+      Real<L>("max_bend_deg", &L::max_bend_deg, 150, 90, 180, 1, "Largest bend",
+              "the forearm's sleeve is not searched folded further back onto the upper arm, "
+              "degrees"),
   };
   return fields;
 }

@@ -61,7 +61,8 @@ struct LkOptions {
   double joint_weight = 1.0;         // weight of the shoulder/elbow pseudo-feature in the fits
   double prior_weight = 2;  // the previous pose votes like this many features at a part's end
   double inlier_deg = 8;    // a feature whose implied direction is this far off is ignored
-  double bend_for_elbow_deg = 20;  // the elbow split is learned only when bent this much
+  double bend_for_elbow_deg = 20;  // the elbow is located only when bent this much
+  double max_bend_deg = 150;       // the forearm's sleeve is not searched folded further back
 
   Status Check() const;
 };
