@@ -95,6 +95,26 @@ AnalysisJob::~AnalysisJob() {
   thread_.wait();
 }
 
+QString AnalysisJob::exportResult(const QString& path) const {
+  if (result_path_.isEmpty()) return tr("Nothing to export yet: run the analysis first (F5)");
+  QFile in(result_path_);
+  if (!in.open(QIODevice::ReadOnly)) {
+    return tr("%1: cannot read the analysis result: %2").arg(result_path_, in.errorString());
+  }
+  const QByteArray bytes = in.readAll();
+  const Status st = WriteFileAtomically(path.toStdString(), bytes.toStdString());
+  return st ? QString() : QString::fromStdString(st.message());
+}
+
+QString AnalysisJob::describeResult(bool cancelled) const {
+  return tr("Analysis %1: %2 rows, %3 ok, %4 lost in %5 s")
+      .arg(cancelled ? tr("cancelled") : tr("done"))
+      .arg(summary_.frames)
+      .arg(summary_.ok)
+      .arg(summary_.lost)
+      .arg(summary_.seconds, 0, 'f', 2);
+}
+
 bool AnalysisJob::start(const AnalysisOptions& options, bool live) {
   if (running_) return false;
   const Status st = options.Check();

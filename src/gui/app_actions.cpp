@@ -5,6 +5,7 @@
 #include <QMainWindow>
 #include <QMenu>
 #include <QMenuBar>
+#include <QSettings>
 #include <QToolBar>
 
 #include "icons.h"
@@ -171,6 +172,22 @@ OverlayOptions AppActions::overlayOptions() const {
   o.features = ovFeatures->isChecked();
   o.contour = ovContour->isChecked();
   return o;
+}
+
+void AppActions::saveSettings(QSettings& s) const {
+  for (QAction* a : {ovFrame, ovYaw, ovOrientation, ovCentres, ovSegments, ovElbow, ovShoulder,
+                     ovMarkers, ovFeatures, ovContour}) {
+    s.setValue("overlay/" + a->objectName(), a->isChecked());
+  }
+}
+
+void AppActions::loadSettings(QSettings& s) {
+  for (QAction* a : {ovFrame, ovYaw, ovOrientation, ovCentres, ovSegments, ovElbow, ovShoulder,
+                     ovMarkers, ovFeatures, ovContour}) {
+    const QSignalBlocker block(a);
+    a->setChecked(s.value("overlay/" + a->objectName(), a->isChecked()).toBool());
+  }
+  emit overlayChanged();
 }
 
 void AppActions::setOverlayOptions(const OverlayOptions& o) {

@@ -11,6 +11,7 @@ class QAction;
 class QActionGroup;
 class QMainWindow;
 class QMenu;
+class QSettings;
 class QToolBar;
 
 namespace armmimic::gui {
@@ -24,6 +25,9 @@ class AppActions : public QObject {
   void populate(QMainWindow* window, const QList<QAction*>& dock_toggles);
   OverlayOptions overlayOptions() const;
   void setOverlayOptions(const OverlayOptions& o);
+  // The overlay toggles, remembered between sessions.
+  void saveSettings(QSettings& settings) const;
+  void loadSettings(QSettings& settings);
   QMenu* recentMenu() const { return recent_menu_; }
 
   // File.

@@ -6,7 +6,6 @@
 #include <QFileInfo>
 #include <QMenu>
 #include <QMimeData>
-#include <QSaveFile>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
@@ -15,7 +14,6 @@
 #include "analysis_job.h"
 #include "angle_plot.h"
 #include "app_actions.h"
-#include "armmimic/core/atomic_file.h"
 #include "engine_settings_panel.h"
 #include "icons.h"
 #include "log_view.h"
@@ -103,19 +101,22 @@ QDockWidget* MainWindow::dock(const QString& title, const QString& name, QWidget
 
 void MainWindow::wireActions() {
   AppActions* a = actions_;
-  connect(a->open, &QAction::triggered, this, [this] { openInputs(AskInputs(this, lastDir())); });
+  connect(a->open, &QAction::triggered, this,
+          [this] { openInputs(AskInputs(this, RecentFiles::lastDir())); });
   connect(a->camera, &QAction::triggered, this, [this] {
     if (auto source = AskCamera(this)) openInputs({*source});
   });
   connect(a->saveFrame, &QAction::triggered, this, [this] {
-    const QString path = AskSavePath(this, tr("Save frame with overlay"),
-                                     lastDir() + QString("/frame-%1.png").arg(view_->frameIndex()),
-                                     tr("Images (*.png *.jpg)"));
+    const QString path =
+        AskSavePath(this, tr("Save frame with overlay"),
+                    RecentFiles::lastDir() + QString("/frame-%1.png").arg(view_->frameIndex()),
+                    tr("Images (*.png *.jpg)"));
     if (!path.isEmpty()) saveFrame(path);
   });
   connect(a->exportAngles, &QAction::triggered, this, [this] {
-    const QString path = AskSavePath(this, tr("Export angle file"), lastDir() + "/angles.tsv",
-                                     tr("Angle files (*.tsv);;All files (*)"));
+    const QString path =
+        AskSavePath(this, tr("Export angle file"), RecentFiles::lastDir() + "/angles.tsv",
+                    tr("Angle files (*.tsv);;All files (*)"));
     if (!path.isEmpty()) exportAngles(path);
   });
   connect(a->exportVal, &QAction::triggered, robot_, &RobotPanel::exportValInteractive);
@@ -142,8 +143,9 @@ void MainWindow::wireActions() {
   connect(a->estimateBackground, &QAction::triggered, this, [this] {
     const std::optional<int> k = AskBackgroundFrames(this);
     if (!k) return;
-    const QString path = AskSavePath(this, tr("Save background image"),
-                                     lastDir() + "/background.png", tr("Images (*.png *.bmp)"));
+    const QString path =
+        AskSavePath(this, tr("Save background image"), RecentFiles::lastDir() + "/background.png",
+                    tr("Images (*.png *.bmp)"));
     if (!path.isEmpty()) estimateBackground(*k, path);
   });
   connect(actions_, &AppActions::overlayChanged, this,
@@ -208,14 +210,8 @@ void MainWindow::wireAnalysis() {
   connect(job_, &AnalysisJob::finished, this, [this](bool ok, bool cancelled) {
     setBusy(false);
     refreshViews();
-    const AnalysisSummary& s = job_->summary();
     if (ok && !job_->resultPath().isEmpty()) {
-      log_->info(tr("Analysis %1: %2 rows, %3 ok, %4 lost in %5 s")
-                     .arg(cancelled ? tr("cancelled") : tr("done"))
-                     .arg(s.frames)
-                     .arg(s.ok)
-                     .arg(s.lost)
-                     .arg(s.seconds, 0, 'f', 2));
+      log_->info(job_->describeResult(cancelled));
       robot_->setAngleFile(job_->resultPath());
     }
   });
@@ -240,10 +236,7 @@ void MainWindow::openInputs(const QStringList& inputs) {
   view_->setMeasurement(std::nullopt);
   robot_->setAngleFile(QString());
   player_->open(inputs);
-  if (!inputs.first().startsWith("camera:") && !inputs.first().contains("://")) {
-    recent_->add(inputs.first());
-    rememberDir(inputs.first());
-  }
+  recent_->addInput(inputs.first());
   setWindowTitle(QString("%1 — armmimic").arg(QFileInfo(inputs.first()).fileName()));
 }
 
@@ -262,39 +255,23 @@ bool MainWindow::startAnalysis() {
 }
 
 bool MainWindow::exportAngles(const QString& path) {
-  const QString src = job_->resultPath();
-  if (src.isEmpty()) {
-    log_->error(tr("Nothing to export yet: run the analysis first (F5)"));
+  const QString error = job_->exportResult(path);
+  if (!error.isEmpty()) {
+    log_->error(error);
     return false;
   }
-  QFile in(src);
-  if (!in.open(QIODevice::ReadOnly)) {
-    log_->error(tr("%1: cannot read the analysis result: %2").arg(src, in.errorString()));
-    return false;
-  }
-  const QByteArray bytes = in.readAll();
-  const Status st = WriteFileAtomically(path.toStdString(), bytes.toStdString());
-  if (!st) {
-    log_->error(QString::fromStdString(st.message()));
-    return false;
-  }
-  rememberDir(path);
+  RecentFiles::rememberDir(path);
   log_->info(tr("Exported the angle file to %1").arg(path));
   return true;
 }
 
 bool MainWindow::saveFrame(const QString& path) {
-  const QImage image = view_->renderWithOverlay();
-  if (image.isNull()) {
-    log_->error(tr("No frame to save: open a video first"));
+  const QString error = view_->saveWithOverlay(path);
+  if (!error.isEmpty()) {
+    log_->error(error);
     return false;
   }
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly) || !image.save(&file, nullptr) || !file.commit()) {
-    log_->error(tr("%1: cannot save the frame: %2").arg(path, file.errorString()));
-    return false;
-  }
-  rememberDir(path);
+  RecentFiles::rememberDir(path);
   log_->info(tr("Saved frame %1 with its overlay to %2").arg(view_->frameIndex()).arg(path));
   return true;
 }
@@ -324,13 +301,9 @@ void MainWindow::refreshViews() {
 }
 
 void MainWindow::updateStatus() {
-  if (!player_->isOpen() && !job_->isRunning()) {
-    status_->setFrameText(tr("No video"));
-    return;
-  }
+  if (!player_->isOpen() && !job_->isRunning()) return status_->showNoVideo();
   const OverlayTexts t = view_->overlayTexts();
-  status_->setFrameText(
-      QString("%1   %2 s   %3").arg(t.frame).arg(time_s_, 0, 'f', 2).arg(t.state));
+  status_->showFrame(t.frame, time_s_, t.state);
 }
 
 void MainWindow::restoreSettings() {
@@ -338,11 +311,8 @@ void MainWindow::restoreSettings() {
   restoreGeometry(s.value("window/geometry").toByteArray());
   restoreState(s.value("window/state").toByteArray());
   settings_->load(s);
-  OverlayOptions o = actions_->overlayOptions();
-  o.contour = s.value("overlay/contour", o.contour).toBool();
-  o.features = s.value("overlay/features", o.features).toBool();
-  actions_->setOverlayOptions(o);
-  bar_->setSpeed(s.value("playback/speed", 1.0).toDouble());
+  actions_->loadSettings(s);
+  bar_->loadSettings(s);
   robot_->load(s);
 }
 
@@ -351,17 +321,9 @@ void MainWindow::saveSettings() const {
   s.setValue("window/geometry", saveGeometry());
   s.setValue("window/state", saveState());
   settings_->save(s);
-  const OverlayOptions o = actions_->overlayOptions();
-  s.setValue("overlay/contour", o.contour);
-  s.setValue("overlay/features", o.features);
-  s.setValue("playback/speed", bar_->speed());
+  actions_->saveSettings(s);
+  bar_->saveSettings(s);
   robot_->save(s);
-}
-
-QString MainWindow::lastDir() const { return QSettings().value("lastDir").toString(); }
-
-void MainWindow::rememberDir(const QString& path) {
-  QSettings().setValue("lastDir", QFileInfo(path).absolutePath());
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

@@ -64,8 +64,6 @@ class MainWindow : public QMainWindow {
   void showFrame(int index, const QImage& image, double time_s);
   void restoreSettings();
   void saveSettings() const;
-  QString lastDir() const;
-  void rememberDir(const QString& path);
 
   AppActions* actions_;
   VideoPlayer* player_;

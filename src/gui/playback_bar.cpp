@@ -1,5 +1,7 @@
 #include "playback_bar.h"
 
+#include <QSettings>
+
 #include <QAction>
 #include <QComboBox>
 #include <QHBoxLayout>
@@ -75,6 +77,12 @@ double PlaybackBar::speed() const { return speed_->currentData().toDouble(); }
 void PlaybackBar::setSpeed(double speed) {
   const int i = speed_->findData(speed);
   if (i >= 0) speed_->setCurrentIndex(i);
+}
+
+void PlaybackBar::saveSettings(QSettings& s) const { s.setValue("playback/speed", speed()); }
+
+void PlaybackBar::loadSettings(QSettings& s) {
+  setSpeed(s.value("playback/speed", 1.0).toDouble());
 }
 
 }  // namespace armmimic::gui

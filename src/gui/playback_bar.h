@@ -7,6 +7,7 @@
 class QAction;
 class QComboBox;
 class QLabel;
+class QSettings;
 class QSlider;
 
 namespace armmimic::gui {
@@ -23,6 +24,8 @@ class PlaybackBar : public QWidget {
   int position() const;
   double speed() const;
   void setSpeed(double speed);
+  void saveSettings(QSettings& settings) const;
+  void loadSettings(QSettings& settings);
 
  signals:
   void seekRequested(int frame);

@@ -23,6 +23,18 @@ void RecentFiles::add(const QString& path) {
   rebuild();
 }
 
+void RecentFiles::addInput(const QString& input) {
+  if (input.startsWith("camera:") || input.contains("://")) return;
+  add(input);
+  rememberDir(input);
+}
+
+QString RecentFiles::lastDir() { return QSettings().value("lastDir").toString(); }
+
+void RecentFiles::rememberDir(const QString& path) {
+  QSettings().setValue("lastDir", QFileInfo(path).absolutePath());
+}
+
 void RecentFiles::rebuild() {
   menu_->clear();
   for (int i = 0; i < files_.size(); ++i) {

@@ -25,6 +25,7 @@
 #include "armmimic/core/atomic_file.h"
 #include "armmimic/robot/val_program.h"
 #include "armmimic/serial/serial_link.h"
+#include "recent_files.h"
 #include "robot_link.h"
 #include "robot_preview.h"
 #include "sim_controller.h"
@@ -459,7 +460,7 @@ void RobotPanel::exportValInteractive() {
     return;
   }
   const QString path = QFileDialog::getSaveFileName(
-      this, tr("Export VAL program"), QSettings().value("lastDir").toString() + "/program.val",
+      this, tr("Export VAL program"), RecentFiles::lastDir() + "/program.val",
       tr("VAL programs (*.val)"));
   if (!path.isEmpty()) exportVal(path);
 }

@@ -26,6 +26,12 @@ StatusLine::StatusLine(QStatusBar* bar)
 
 void StatusLine::setFrameText(const QString& text) { frame_->setText(text); }
 QString StatusLine::frameText() const { return frame_->text(); }
+
+void StatusLine::showFrame(const QString& frame, double time_s, const QString& state) {
+  frame_->setText(QString("%1   %2 s   %3").arg(frame).arg(time_s, 0, 'f', 2).arg(state));
+}
+
+void StatusLine::showNoVideo() { frame_->setText(tr("No video")); }
 QString StatusLine::linkText() const { return link_->text(); }
 
 void StatusLine::setBusy(bool busy) {

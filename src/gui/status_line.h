@@ -17,6 +17,9 @@ class StatusLine : public QObject {
   explicit StatusLine(QStatusBar* bar);
 
   void setFrameText(const QString& text);
+  // "frame 12 / 99   0.40 s   ok"; with no video, "No video".
+  void showFrame(const QString& frame, double time_s, const QString& state);
+  void showNoVideo();
   QString frameText() const;
   QString linkText() const;
 

@@ -1,5 +1,7 @@
 #include "video_view.h"
 
+#include <QSaveFile>
+
 #include <algorithm>
 #include <cmath>
 
@@ -185,6 +187,20 @@ void VideoView::mouseReleaseEvent(QMouseEvent* event) {
     }
     update();
   }
+}
+
+}  // namespace armmimic::gui
+
+namespace armmimic::gui {
+
+QString VideoView::saveWithOverlay(const QString& path) const {
+  const QImage image = renderWithOverlay();
+  if (image.isNull()) return tr("No frame to save: open a video first");
+  QSaveFile file(path);
+  if (!file.open(QIODevice::WriteOnly) || !image.save(&file, nullptr) || !file.commit()) {
+    return tr("%1: cannot save the frame: %2").arg(path, file.errorString());
+  }
+  return QString();
 }
 
 }  // namespace armmimic::gui

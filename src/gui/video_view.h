@@ -34,6 +34,9 @@ class VideoView : public QWidget {
   OverlayTexts overlayTexts() const;
   // The frame at its own resolution with the overlay painted on it (for "Save frame").
   QImage renderWithOverlay() const;
+  // Writes renderWithOverlay() to `path` (format from its suffix). Returns "" or the error,
+  // naming the file.
+  QString saveWithOverlay(const QString& path) const;
   double zoom() const { return zoom_; }
   // Widget position <-> image pixel.
   QPointF toImage(const QPointF& widget_pos) const;
