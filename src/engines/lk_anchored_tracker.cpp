@@ -299,9 +299,9 @@ class AnchoredTracker : public Tracker {
                        double deg, double length_px, bool avoid_fold, bool* used) const {
     *used = false;
     if (!o_.use_bar || !bar.valid) return deg;
-    const BarSearch r = SearchArmBar(bgr, bar, joint_px, deg, length_px, o_.bar_search_deg,
-                                     o_.bar_min_score, Wrap180(upper_deg_ + 180),
-                                     avoid_fold ? 180 - o_.max_bend_deg : 0);
+    const BarSearch r =
+        SearchArmBar(bgr, bar, joint_px, deg, length_px, o_.bar_search_deg, o_.bar_min_score,
+                     Wrap180(upper_deg_ + 180), avoid_fold ? 180 - o_.max_bend_deg : 0);
     if (!r.found) return deg;
     *used = true;
     return r.deg;
@@ -354,8 +354,8 @@ class AnchoredTracker : public Tracker {
     const double bend = AngleDiff(fore_deg_, upper_deg_);
     Motion2D tu;
     double up = upper_deg_;
-    const bool fitted_up = FitPart(kUpper, shoulder_, upper_deg_, upper_deg_,
-                                   o_.prior_weight * lu_, CountConfirmed(kUpper) < 3, &tu);
+    const bool fitted_up = FitPart(kUpper, shoulder_, upper_deg_, upper_deg_, o_.prior_weight * lu_,
+                                   CountConfirmed(kUpper) < 3, &tu);
     if (fitted_up) up = Wrap180(tu.RotationCcwDeg());
     up = RefineWithBar(bgr, upper_bar_[side_], shoulder_, up, lu_, false, &upper_bar_used_);
     if (!upper_bar_used_) {
@@ -451,7 +451,8 @@ class AnchoredTracker : public Tracker {
     for (int i = 0; i < n_l; ++i) {
       const cv::Point2d pivot = shoulder_ + (lu_ + i - kElbowShiftPx) * u;
       for (int a = -kElbowTurnDeg; a <= kElbowTurnDeg; ++a) {
-        best_per_l[i] = std::max(best_per_l[i], ArmBarScore(bgr, bar, pivot, fore_deg + a, kElbowStripFraction * lf_));
+        best_per_l[i] = std::max(
+            best_per_l[i], ArmBarScore(bgr, bar, pivot, fore_deg + a, kElbowStripFraction * lf_));
       }
       if (best_i < 0 || best_per_l[i] > best_per_l[best_i]) best_i = i;
     }
@@ -611,8 +612,8 @@ class AnchoredTracker : public Tracker {
   int frame_ = 0;
   int last_seed_ = 0;
   // Elbow from the sleeves (LocateElbowOnBar).
-  static constexpr int kElbowShiftPx = 8;   // pivot searched this far along the upper arm
-  static constexpr int kElbowTurnDeg = 4;   // and the forearm turned this far
+  static constexpr int kElbowShiftPx = 8;  // pivot searched this far along the upper arm
+  static constexpr int kElbowTurnDeg = 4;  // and the forearm turned this far
   // Only the forearm's sleeve near the elbow is scored there: the hand and the cuff beyond it
   // would favour a pivot that pulls the strip back.
   static constexpr double kElbowStripFraction = 0.75;
