@@ -56,6 +56,10 @@ class AnalysisJob : public QObject {
   QString exportResult(const QString& path) const;
   // "Analysis done: 40 rows, 38 ok, 2 lost in 0.25 s"
   QString describeResult(bool cancelled) const;
+  // Forgets the last result (another input was opened): nothing to export until the next run.
+  void forgetResult() {
+    if (!running_) result_path_.clear();
+  }
   const AnalysisSummary& summary() const { return summary_; }
   bool waitForFinished(int timeout_ms);  // for tests and shutdown; pumps events
 

@@ -133,9 +133,9 @@ QWidget* EngineSettingsPanel::makeInputs() {
   shoulder_y_ = DSpin(0, 100000, 0, 1, tr("y, pixels"), "shoulderY");
   auto* sl = new QHBoxLayout(shoulder_box_);
   sl->addWidget(new QLabel("x"));
-  sl->addWidget(shoulder_x_);
+  sl->addWidget(shoulder_x_, 1);
   sl->addWidget(new QLabel("y"));
-  sl->addWidget(shoulder_y_);
+  sl->addWidget(shoulder_y_, 1);
   roi_box_ = new QGroupBox(tr("Region of interest (--roi)"));
   roi_box_->setCheckable(true);
   roi_box_->setChecked(false);
@@ -146,7 +146,7 @@ QWidget* EngineSettingsPanel::makeInputs() {
     roi_[i] = Spin(i < 2 ? 0 : 1, 100000, i < 2 ? 0 : 1, tr("pixels"),
                    QString("roi") + QChar(roi_names[i][0]).toUpper());
     rl->addWidget(new QLabel(roi_names[i]));
-    rl->addWidget(roi_[i]);
+    rl->addWidget(roi_[i], 1);
   }
   form->addRow(tr("Background"), bg_mode_);
   form->addRow(tr("Background image"), background_row_);

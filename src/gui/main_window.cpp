@@ -87,6 +87,7 @@ QDockWidget* MainWindow::dock(const QString& title, const QString& name, QWidget
   d->setObjectName(name);
   if (w == settings_) {  // a tall panel scrolls instead of pushing the window taller
     auto* scroll = new QScrollArea;
+    scroll->setObjectName("analysisScroll");
     scroll->setWidget(w);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
@@ -163,6 +164,13 @@ void MainWindow::wireActions() {
     actions_->play->setIcon(MakeIcon(playing ? IconKind::kPause : IconKind::kPlay));
   });
   connect(player_, &VideoPlayer::opened, this, [this](const VideoInfo& info) {
+    results_.clear();
+    job_->forgetResult();
+    plot_->setResults(results_);
+    view_->setMeasurement(std::nullopt);
+    robot_->setAngleFile(QString());
+    recent_->addInput(player_->inputs().first());
+    setWindowTitle(QString("%1 — armmimic").arg(QFileInfo(player_->inputs().first()).fileName()));
     bar_->setFrameCount(info.frame_count, info.fps);
     plot_->setFrameRange(info.frame_count);
     log_->info(tr("Opened %1").arg(DescribeSource(info)));
@@ -231,13 +239,7 @@ void MainWindow::openInputs(const QStringList& inputs) {
     log_->error(tr("An analysis is running: cancel it (Esc) before opening another input"));
     return;
   }
-  results_.clear();
-  plot_->setResults(results_);
-  view_->setMeasurement(std::nullopt);
-  robot_->setAngleFile(QString());
-  player_->open(inputs);
-  recent_->addInput(inputs.first());
-  setWindowTitle(QString("%1 — armmimic").arg(QFileInfo(inputs.first()).fileName()));
+  player_->open(inputs);  // the previous input and its results stay until this one opens
 }
 
 bool MainWindow::startAnalysis() {

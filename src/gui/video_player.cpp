@@ -33,15 +33,15 @@ QString DescribeSource(const VideoInfo& info) {
 }
 
 void FrameDecoder::open(const QStringList& inputs, int generation) {
-  source_.reset();
   std::vector<std::string> list;
   for (const QString& s : inputs) list.push_back(s.toStdString());
   Status st;
-  source_ = VideoSource::Open(list, &st);
-  if (!source_) {
+  std::unique_ptr<VideoSource> fresh = VideoSource::Open(list, &st);
+  if (!fresh) {  // what was open stays open
     emit openFailed(QString::fromStdString(st.message()), generation);
     return;
   }
+  source_ = std::move(fresh);
   next_index_ = 0;
   emit opened(source_->info(), generation);
 }
@@ -90,7 +90,12 @@ VideoPlayer::VideoPlayer(QObject* parent) : QObject(parent), decoder_(new FrameD
     }
   });
   connect(decoder_, &FrameDecoder::openFailed, this, [this](const QString& msg, int gen) {
-    if (gen == generation_) emit error(msg);
+    if (gen != generation_) return;
+    // A failed open leaves the previous input open, as it was.
+    inputs_ = previous_inputs_;
+    info_ = previous_info_;
+    open_ = previous_open_;
+    emit error(msg);
   });
   connect(decoder_, &FrameDecoder::decoded, this, &VideoPlayer::onDecoded);
   connect(decoder_, &FrameDecoder::failed, this, [this](const QString& msg, int gen) {
@@ -111,6 +116,9 @@ VideoPlayer::~VideoPlayer() {
 
 void VideoPlayer::open(const QStringList& inputs) {
   pause();
+  previous_inputs_ = inputs_;
+  previous_info_ = info_;
+  previous_open_ = open_;
   ++generation_;
   open_ = false;
   inputs_ = inputs;

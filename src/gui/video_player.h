@@ -48,7 +48,7 @@ class VideoPlayer : public QObject {
   explicit VideoPlayer(QObject* parent = nullptr);
   ~VideoPlayer() override;
 
-  // Opens asynchronously; emits opened() or error().
+  // Opens asynchronously; emits opened() or error(). On error what was open stays open.
   void open(const QStringList& inputs);
   void close();
   bool isOpen() const { return open_; }
@@ -95,6 +95,9 @@ class VideoPlayer : public QObject {
   bool waiting_ = false;
   double speed_ = 1.0;
   QImage image_;
+  QStringList previous_inputs_;  // restored when an open fails
+  VideoInfo previous_info_;
+  bool previous_open_ = false;
 };
 
 }  // namespace armmimic::gui

@@ -204,5 +204,35 @@ TEST_F(CameraCaptureTest, AMissingCameraIsReportedOnceWithoutADialogStorm) {
   EXPECT_EQ(VisibleDialogs(), 0);
 }
 
+TEST_F(CameraCaptureTest, AFailedCaptureKeepsTheOpenVideoAndItsResults) {
+  const GuiScenes& s = scenes();
+  MainWindow w;
+  w.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+  w.openInputs({QString::fromStdString(s.video())});
+  ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen() && !w.view()->image().isNull(); }));
+  AnalysisOptions o;
+  o.background_path = s.background();
+  o.arm_length_path = s.arm_length();
+  o.start = s.background_frames;
+  o.engine.bgsub.standstill_frames = s.standstill_frames;
+  w.settingsPanel()->setOptions(o);
+  ASSERT_TRUE(w.startAnalysis());
+  ASSERT_TRUE(WaitUntil([&] { return !w.job()->isRunning(); }, 60000));
+  ASSERT_EQ(w.results().rows(), s.motion_frames);
+
+  w.openInputs({"camera:7"});
+  ASSERT_TRUE(WaitUntil([&] { return w.log()->errorCount() == 1; }, 20000));
+  EXPECT_TRUE(w.player()->isOpen());
+  EXPECT_EQ(w.player()->inputs(), QStringList{QString::fromStdString(s.video())});
+  EXPECT_EQ(w.results().rows(), s.motion_frames);
+  const int frame = s.background_frames + s.standstill_frames + 5;
+  w.player()->seek(frame);
+  ASSERT_TRUE(WaitUntil([&] { return w.view()->frameIndex() == frame; }));
+  EXPECT_TRUE(w.view()->measurement().has_value());
+  EXPECT_TRUE(w.exportAngles(QString::fromStdString(tmp_.file("kept.tsv"))))
+      << w.log()->text().toStdString();
+}
+
 }  // namespace
 }  // namespace armmimic::test
