@@ -11,5 +11,5 @@ if [ ! -f data/sample/scene.avi ]; then
   "$build/bin/armmimic-cli" synth arm data/sample
 fi
 unset QT_QPA_PLATFORM  # a real X window, not the offscreen platform
-xvfb-run -a -s "-screen 0 1440x960x24" \
+xvfb-run -a -s "-screen 0 1600x1000x24" \
   "$build/bin/armmimic-screenshot-tour" docs/images data/sample

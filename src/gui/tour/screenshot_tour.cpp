@@ -5,16 +5,21 @@
 #include <functional>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QInputDialog>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScreen>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QToolButton>
 
 #include "analysis_job.h"
 #include "app_actions.h"
@@ -77,6 +82,23 @@ int main(int argc, char** argv) {
   w.settingsPanel()->setOptions(o);
   Shot("03-settings");
 
+  // Every other parameter: the engine's folded "Advanced" section (here the LK engine's).
+  auto* engine_combo = w.settingsPanel()->findChild<QComboBox*>("engineCombo");
+  engine_combo->setCurrentIndex(int(armmimic::EngineKind::kLk));
+  QToolButton* advanced = w.settingsPanel()->advancedToggle(armmimic::EngineKind::kLk);
+  advanced->setChecked(true);
+  QTest::qWait(100);
+  if (auto* scroll = w.findChild<QScrollArea*>("analysisScroll")) {
+    // The engine's main parameters at the top, the advanced ones below.
+    scroll->verticalScrollBar()->setValue(advanced->mapTo(scroll->widget(), QPoint()).y() - 160);
+  }
+  Shot("03b-advanced");
+  advanced->setChecked(false);
+  engine_combo->setCurrentIndex(int(armmimic::EngineKind::kBgsub));
+  if (auto* scroll = w.findChild<QScrollArea*>("analysisScroll")) {
+    scroll->verticalScrollBar()->setValue(0);
+  }
+
   bool mid_shot = false;
   QObject::connect(w.job(), &armmimic::gui::AnalysisJob::progress, [&](int done, int total) {
     if (!mid_shot && total > 0 && done > total / 3) {
@@ -124,6 +146,23 @@ int main(int argc, char** argv) {
   Wait([&] { return sent; }, 300000);
   w.player()->seek(200);
   Shot("09-sent");
+
+  // File > Capture from camera: a camera number or a stream URL. With no camera 7 attached,
+  // the failure is one line in Messages, not a dialog.
+  QTimer camera_dialog;
+  QObject::connect(&camera_dialog, &QTimer::timeout, [&] {
+    auto* dialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget());
+    if (!dialog) return;
+    camera_dialog.stop();
+    dialog->setTextValue("7");
+    Shot("10-camera");
+    dialog->accept();
+  });
+  camera_dialog.start(50);
+  w.actions()->camera->trigger();
+  Wait([&] { return !w.player()->isOpen(); }, 20000);
+  QTest::qWait(500);
+  Shot("11-camera-missing");
   w.close();
   return 0;
 }
