@@ -95,12 +95,14 @@ class AnchoredTracker : public Tracker {
     side_lengths_.assign(shoulders_.size(), cv::Vec3d(arm_len_, lu_, lf_));
     upper_bar_.assign(shoulders_.size(), ArmBar());
     fore_bar_.assign(shoulders_.size(), ArmBar());
+    bar_bias_.assign(shoulders_.size(), cv::Vec2d(0, 0));
     for (int s = 0; s < static_cast<int>(shoulders_.size()); ++s) {
       shoulder_ = shoulders_[s];
       SetPoseMotions();
       LearnBars(start.bgr, s);
       UseSideLengths(s);
       SetPoseMotions();
+      CalibrateBars(start.bgr, s);
       Seed(start.gray, s, 1.25);
     }
     if (side_ == 0) {
@@ -295,16 +297,38 @@ class AnchoredTracker : public Tracker {
   // surroundings (over the wall, not in front of the body in the same cloth).
   // For the forearm (`avoid_fold`), directions folded back onto the upper arm beyond
   // `max_bend_deg` are not searched: there the forearm's strip lies on the upper arm's sleeve.
-  double RefineWithBar(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px,
-                       double deg, double length_px, bool avoid_fold, bool* used) const {
+  // Near its starting direction a part's sleeve reading is corrected by the bias found at the
+  // known starting posture (CalibrateBars), fading out over kBiasFadeDeg.
+  double RefineWithBar(const cv::Mat& bgr, int part, const cv::Point2d& joint_px, double deg,
+                       double length_px, bool* used) const {
     *used = false;
+    const ArmBar& bar = part == kUpper ? upper_bar_[side_] : fore_bar_[side_];
     if (!o_.use_bar || !bar.valid) return deg;
     const BarSearch r =
         SearchArmBar(bgr, bar, joint_px, deg, length_px, o_.bar_search_deg, o_.bar_min_score,
-                     Wrap180(upper_deg_ + 180), avoid_fold ? 180 - o_.max_bend_deg : 0);
+                     Wrap180(upper_deg_ + 180), part == kFore ? 180 - o_.max_bend_deg : 0);
     if (!r.found) return deg;
     *used = true;
-    return r.deg;
+    const double start_deg = part == kUpper ? o_.initial_upper_deg : o_.initial_fore_deg;
+    const double fade = 1 - std::abs(AngleDiff(r.deg, start_deg)) / kBiasFadeDeg;
+    return fade > 0 ? Wrap180(r.deg - fade * bar_bias_[side_][part]) : r.deg;
+  }
+
+  // The sleeve search in the known starting posture: where a sleeve lies against the body in
+  // the same cloth, one flank tells nothing and the best strip leans a few degrees. That lean,
+  // measured here where the truth is known, is taken off readings near the same direction.
+  void CalibrateBars(const cv::Mat& bgr, int side) {
+    if (!o_.use_bar || bgr.empty()) return;
+    const BarSearch u = upper_bar_[side].valid
+                            ? SearchArmBar(bgr, upper_bar_[side], shoulder_, upper_deg_, lu_,
+                                           kBiasSearchDeg, o_.bar_min_score)
+                            : BarSearch();
+    const BarSearch f = fore_bar_[side].valid
+                            ? SearchArmBar(bgr, fore_bar_[side], Elbow(), fore_deg_, lf_,
+                                           kBiasSearchDeg, o_.bar_min_score)
+                            : BarSearch();
+    bar_bias_[side] = cv::Vec2d(u.found ? AngleDiff(u.deg, upper_deg_) : 0,
+                                f.found ? AngleDiff(f.deg, fore_deg_) : 0);
   }
 
   // The shoulder from the body box is a rule of thumb; the upper arm's sleeve, wherever it stands
@@ -357,12 +381,11 @@ class AnchoredTracker : public Tracker {
     const bool fitted_up = FitPart(kUpper, shoulder_, upper_deg_, upper_deg_, o_.prior_weight * lu_,
                                    CountConfirmed(kUpper) < 3, &tu);
     if (fitted_up) up = Wrap180(tu.RotationCcwDeg());
-    up = RefineWithBar(bgr, upper_bar_[side_], shoulder_, up, lu_, false, &upper_bar_used_);
+    up = RefineWithBar(bgr, kUpper, shoulder_, up, lu_, &upper_bar_used_);
     if (!upper_bar_used_) {
       // The features may have been misled (too few, or on the background); the sleeve may still
       // be where the part was.
-      up = RefineWithBar(bgr, upper_bar_[side_], shoulder_, upper_deg_, lu_, false,
-                         &upper_bar_used_);
+      up = RefineWithBar(bgr, kUpper, shoulder_, upper_deg_, lu_, &upper_bar_used_);
       if (!upper_bar_used_ && fitted_up) up = Wrap180(tu.RotationCcwDeg());
     }
     if (upper_bar_used_ && refine_shoulder_) up = RefineShoulder(bgr, up);
@@ -377,15 +400,15 @@ class AnchoredTracker : public Tracker {
       fo = Wrap180(tf.RotationCcwDeg());
     }
     const double fo_feat = fo;
-    fo = RefineWithBar(bgr, fore_bar_[side_], elbow, fo_feat, lf_, true, &fore_bar_used_);
+    fo = RefineWithBar(bgr, kFore, elbow, fo_feat, lf_, &fore_bar_used_);
     if (!fore_bar_used_) {
-      fo = RefineWithBar(bgr, fore_bar_[side_], elbow, fo_prior, lf_, true, &fore_bar_used_);
+      fo = RefineWithBar(bgr, kFore, elbow, fo_prior, lf_, &fore_bar_used_);
       if (!fore_bar_used_) fo = fo_feat;
     }
     if (fore_bar_used_) {
       LocateElbowOnBar(bgr, fo);
       // The forearm's sleeve about the elbow found so far.
-      fo = RefineWithBar(bgr, fore_bar_[side_], Elbow(), fo, lf_, true, &fore_bar_used_);
+      fo = RefineWithBar(bgr, kFore, Elbow(), fo, lf_, &fore_bar_used_);
     }
     fore_deg_ = fo;
     tf_ = PartMotion(fore_deg_, Elbow());
@@ -601,8 +624,11 @@ class AnchoredTracker : public Tracker {
   double upper_deg_ = -90, fore_deg_ = -90;
   Motion2D tu_, tf_;
   std::vector<Feature> feats_;
-  std::vector<ArmBar> upper_bar_, fore_bar_;  // per shoulder candidate
-  std::vector<cv::Vec3d> side_lengths_;       // per shoulder candidate: arm, upper, forearm
+  std::vector<ArmBar> upper_bar_, fore_bar_;    // per shoulder candidate
+  std::vector<cv::Vec2d> bar_bias_;             // per shoulder candidate: upper, fore (degrees)
+  static constexpr double kBiasSearchDeg = 10;  // calibration search around the known pose
+  static constexpr double kBiasFadeDeg = 20;    // the correction fades out over this turn
+  std::vector<cv::Vec3d> side_lengths_;         // per shoulder candidate: arm, upper, forearm
   bool upper_bar_used_ = false, fore_bar_used_ = false;
   bool refine_shoulder_ = false;
   cv::Point2d shoulder_start_;
