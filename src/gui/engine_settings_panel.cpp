@@ -14,7 +14,8 @@
 #include <QStackedWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
-#include <cmath>
+
+#include "parameter_form.h"
 
 namespace armmimic::gui {
 namespace {
@@ -49,10 +50,16 @@ EngineSettingsPanel::EngineSettingsPanel(QWidget* parent)
   engine_->addItem(tr("Background subtraction (ch. 5)"), int(EngineKind::kBgsub));
   engine_->addItem(tr("Lucas–Kanade tracking (ch. 6)"), int(EngineKind::kLk));
   engine_->addItem(tr("Marker joint (ch. 4)"), int(EngineKind::kMarker));
-  pages_->addWidget(makeEnginePage(EngineKind::kBgsub, BgsubOptionFields(), &EngineOptions::bgsub));
-  pages_->addWidget(makeEnginePage(EngineKind::kLk, LkOptionFields(), &EngineOptions::lk));
-  pages_->addWidget(
-      makeEnginePage(EngineKind::kMarker, MarkerOptionFields(), &EngineOptions::marker));
+  forms_[0] = new ParameterForm(EngineKind::kBgsub,
+                                LiftOptionFields(BgsubOptionFields(), &EngineOptions::bgsub));
+  forms_[1] =
+      new ParameterForm(EngineKind::kLk, LiftOptionFields(LkOptionFields(), &EngineOptions::lk));
+  forms_[2] = new ParameterForm(EngineKind::kMarker,
+                                LiftOptionFields(MarkerOptionFields(), &EngineOptions::marker));
+  for (ParameterForm* form : forms_) {
+    pages_->addWidget(form);
+    connect(form, &ParameterForm::changed, this, &EngineSettingsPanel::changed);
+  }
   auto* params = new QGroupBox(tr("Engine parameters"));
   auto* pl = new QVBoxLayout(params);
   pl->addWidget(pages_);
@@ -60,7 +67,8 @@ EngineSettingsPanel::EngineSettingsPanel(QWidget* parent)
   auto* top = new QFormLayout;
   top->addRow(tr("Engine"), engine_);
   layout->addLayout(top);
-  layout->addWidget(makeInputs());
+  QWidget* inputs = makeInputs();
+  layout->addWidget(inputs);
   layout->addWidget(params);
   layout->addStretch();
   connect(engine_, &QComboBox::currentIndexChanged, this, [this](int i) {
@@ -68,17 +76,14 @@ EngineSettingsPanel::EngineSettingsPanel(QWidget* parent)
     updateEnabled();
     emit changed();
   });
-  for (auto* spin : findChildren<QAbstractSpinBox*>()) {
+  for (auto* spin : inputs->findChildren<QAbstractSpinBox*>()) {
     if (auto* s = qobject_cast<QSpinBox*>(spin)) {
       connect(s, &QSpinBox::valueChanged, this, &EngineSettingsPanel::changed);
     } else if (auto* d = qobject_cast<QDoubleSpinBox*>(spin)) {
       connect(d, &QDoubleSpinBox::valueChanged, this, &EngineSettingsPanel::changed);
     }
   }
-  for (auto* c : findChildren<QCheckBox*>()) {
-    connect(c, &QCheckBox::toggled, this, &EngineSettingsPanel::changed);
-  }
-  for (auto* e : findChildren<QLineEdit*>()) {
+  for (auto* e : inputs->findChildren<QLineEdit*>()) {
     connect(e, &QLineEdit::textChanged, this, &EngineSettingsPanel::changed);
   }
   auto roi_changed = [this] { emit roiChanged(options().roi); };
@@ -163,141 +168,12 @@ QWidget* EngineSettingsPanel::makeInputs() {
   return box;
 }
 
-template <typename O>
-QWidget* EngineSettingsPanel::makeEnginePage(EngineKind engine,
-                                             const std::vector<OptionField<O>>& fields,
-                                             O EngineOptions::*member) {
-  const QString name = EngineName(engine);
-  auto* page = new QWidget;
-  auto* v = new QVBoxLayout(page);
-  v->setContentsMargins(0, 0, 0, 0);
-  auto* main_form = new QFormLayout;
-  auto* advanced = new QWidget;
-  advanced->setObjectName(name + "Advanced");
-  auto* advanced_form = new QFormLayout(advanced);
-  advanced_form->setContentsMargins(12, 0, 0, 0);
-  advanced_form->setRowWrapPolicy(QFormLayout::WrapLongRows);
-  int advanced_count = 0;
-  for (const OptionField<O>& f : fields) {
-    if (f.group == OptionGroup::kInput) continue;  // an analysis input, edited with the inputs
-    const QString label = QString::fromStdString(f.label);
-    QString tip = QString::fromStdString(f.help);
-    QWidget* editor = nullptr;
-    switch (f.kind) {
-      case OptionKind::kInt: {
-        auto* spin = new QSpinBox;
-        spin->setRange(int(f.min), int(f.max));
-        spin->setSingleStep(int(f.step));
-        editor = spin;
-        tip += tr("\nDefault %1, range %2 to %3").arg(f.default_value).arg(f.min).arg(f.max);
-        break;
-      }
-      case OptionKind::kDouble: {
-        auto* spin = new QDoubleSpinBox;
-        spin->setDecimals(f.decimals);
-        spin->setRange(f.min, f.max);
-        spin->setSingleStep(f.step);
-        editor = spin;
-        tip += tr("\nDefault %1, range %2 to %3")
-                   .arg(f.default_value, 0, 'g', 6)
-                   .arg(f.min)
-                   .arg(f.max);
-        break;
-      }
-      case OptionKind::kBool:
-        editor = new QCheckBox(label);
-        tip += f.default_value != 0 ? tr("\nDefault: on") : tr("\nDefault: off");
-        break;
-      case OptionKind::kEnum: {
-        auto* combo = new QComboBox;
-        for (const std::string& c : f.choices) combo->addItem(QString::fromStdString(c));
-        connect(combo, &QComboBox::currentIndexChanged, this, &EngineSettingsPanel::changed);
-        editor = combo;
-        tip += tr("\nDefault: %1").arg(QString::fromStdString(f.choices[int(f.default_value)]));
-        break;
-      }
-    }
-    editor->setObjectName(name + "." + QString::fromStdString(f.key));
-    editor->setToolTip(tip);
-    editor->setFocusPolicy(Qt::StrongFocus);
-    QFormLayout* form = f.group == OptionGroup::kMain ? main_form : advanced_form;
-    if (f.group == OptionGroup::kAdvanced) ++advanced_count;
-    if (f.kind == OptionKind::kBool) {
-      form->addRow(editor);
-    } else {
-      auto* l = new QLabel(label);
-      l->setToolTip(tip);
-      form->addRow(l, editor);
-    }
-    ParamEditor p{engine, f.key,     f.kind, f.group, f.decimals, f.min,
-                  f.max,  f.choices, editor, nullptr, nullptr};
-    const auto get = f.get;
-    const auto set = f.set;
-    p.get = [get, member](const EngineOptions& o) { return get(o.*member); };
-    p.set = [set, member](EngineOptions& o, double value) { set(o.*member, value); };
-    params_.push_back(std::move(p));
-    setEditorValue(params_.back(), f.default_value);
-  }
-  auto* toggle = new QToolButton;
-  toggle->setObjectName(name + "AdvancedToggle");
-  toggle->setText(tr("Advanced (%1 more)").arg(advanced_count));
-  toggle->setToolTip(tr("Every other parameter of this engine"));
-  toggle->setCheckable(true);
-  toggle->setAutoRaise(true);
-  toggle->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-  toggle->setArrowType(Qt::RightArrow);
-  advanced->setVisible(false);
-  connect(toggle, &QToolButton::toggled, this, [toggle, advanced](bool on) {
-    toggle->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
-    advanced->setVisible(on);
-  });
-  advanced_[int(engine)] = toggle;
-  v->addLayout(main_form);
-  v->addWidget(toggle);
-  v->addWidget(advanced);
-  return page;
-}
-
-double EngineSettingsPanel::editorValue(const ParamEditor& p) const {
-  switch (p.kind) {
-    case OptionKind::kInt:
-      return static_cast<QSpinBox*>(p.widget)->value();
-    case OptionKind::kDouble:
-      return static_cast<QDoubleSpinBox*>(p.widget)->value();
-    case OptionKind::kBool:
-      return static_cast<QCheckBox*>(p.widget)->isChecked() ? 1 : 0;
-    case OptionKind::kEnum:
-      return static_cast<QComboBox*>(p.widget)->currentIndex();
-  }
-  return 0;
-}
-
-void EngineSettingsPanel::setEditorValue(const ParamEditor& p, double value) {
-  switch (p.kind) {
-    case OptionKind::kInt:
-      static_cast<QSpinBox*>(p.widget)->setValue(int(std::lround(value)));
-      break;
-    case OptionKind::kDouble:
-      static_cast<QDoubleSpinBox*>(p.widget)->setValue(value);
-      break;
-    case OptionKind::kBool:
-      static_cast<QCheckBox*>(p.widget)->setChecked(value != 0);
-      break;
-    case OptionKind::kEnum:
-      static_cast<QComboBox*>(p.widget)->setCurrentIndex(int(std::lround(value)));
-      break;
-  }
-}
-
 QWidget* EngineSettingsPanel::parameterEditor(EngineKind engine, const QString& key) const {
-  for (const ParamEditor& p : params_) {
-    if (p.engine == engine && QString::fromStdString(p.key) == key) return p.widget;
-  }
-  return nullptr;
+  return forms_[int(engine)]->editor(key);
 }
 
 QToolButton* EngineSettingsPanel::advancedToggle(EngineKind engine) const {
-  return advanced_[int(engine)];
+  return forms_[int(engine)]->advancedToggle();
 }
 
 void EngineSettingsPanel::updateEnabled() {
@@ -324,16 +200,7 @@ AnalysisOptions EngineSettingsPanel::options() const {
   o.shoulder_px.reset();
   o.roi.reset();
   o.engine.kind = static_cast<EngineKind>(engine_->currentData().toInt());
-  for (const ParamEditor& p : params_) {
-    const double shown = editorValue(p);
-    // A double the spin box rounded for display keeps its exact value (1/6 shows as 0.167)
-    // until the operator changes it, so the GUI and the CLI analyse with the same number.
-    if (p.kind == OptionKind::kDouble) {
-      const double scale = std::pow(10.0, p.decimals);
-      if (std::round(p.get(base_.engine) * scale) == std::round(shown * scale)) continue;
-    }
-    p.set(o.engine, shown);
-  }
+  for (ParameterForm* form : forms_) form->apply(&o.engine);
   const bool marker = o.engine.kind == EngineKind::kMarker;
   if (marker) {
     o.reference_path = reference_->text().toStdString();
@@ -359,7 +226,7 @@ AnalysisOptions EngineSettingsPanel::options() const {
 void EngineSettingsPanel::setOptions(const AnalysisOptions& o) {
   base_ = o;
   engine_->setCurrentIndex(engine_->findData(int(o.engine.kind)));
-  for (const ParamEditor& p : params_) setEditorValue(p, p.get(o.engine));
+  for (ParameterForm* form : forms_) form->setValues(o.engine);
   if (!o.background_path.empty()) {
     bg_mode_->setCurrentIndex(kBgImage);
   } else if (o.background_frames > 0) {
@@ -414,24 +281,7 @@ void EngineSettingsPanel::save(QSettings& s) const {
   s.setValue("armLength", arm_length_->text());
   s.setValue("reference", reference_->text());
   s.setValue("start", start_->value());
-  for (const ParamEditor& p : params_) {
-    const QString key = QString("%1/%2").arg(EngineName(p.engine), QString::fromStdString(p.key));
-    const double v = p.get(o.engine);
-    switch (p.kind) {
-      case OptionKind::kInt:
-        s.setValue(key, int(std::lround(v)));
-        break;
-      case OptionKind::kDouble:
-        s.setValue(key, v);
-        break;
-      case OptionKind::kBool:
-        s.setValue(key, v != 0);
-        break;
-      case OptionKind::kEnum:
-        s.setValue(key, QString::fromStdString(p.choices[int(v)]));
-        break;
-    }
-  }
+  for (const ParameterForm* form : forms_) form->save(s, o.engine);
   s.endGroup();
 }
 
@@ -440,24 +290,7 @@ void EngineSettingsPanel::load(QSettings& s) {
   AnalysisOptions o;
   o.engine.kind =
       static_cast<EngineKind>(std::clamp(s.value("engine", int(EngineKind::kBgsub)).toInt(), 0, 2));
-  for (const ParamEditor& p : params_) {
-    const QString key = QString("%1/%2").arg(EngineName(p.engine), QString::fromStdString(p.key));
-    if (!s.contains(key)) continue;
-    const QVariant value = s.value(key);
-    double v = 0;
-    bool ok = true;
-    if (p.kind == OptionKind::kBool) {
-      v = value.toBool() ? 1 : 0;
-    } else if (p.kind == OptionKind::kEnum) {
-      const auto it = std::find(p.choices.begin(), p.choices.end(), value.toString().toStdString());
-      ok = it != p.choices.end();
-      v = double(it - p.choices.begin());
-    } else {
-      v = value.toDouble(&ok);
-    }
-    // A hand-edited or outdated settings file cannot put a parameter out of its range.
-    if (ok) p.set(o.engine, std::clamp(v, p.min, p.max));
-  }
+  for (const ParameterForm* form : forms_) form->load(s, &o.engine);
   o.arm_length_path = s.value("armLength").toString().toStdString();
   o.reference_path = s.value("reference").toString().toStdString();
   o.start = s.value("start", 0).toInt();

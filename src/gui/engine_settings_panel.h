@@ -6,12 +6,8 @@
 #pragma once
 
 #include <QWidget>
-#include <functional>
-#include <string>
-#include <vector>
 
 #include "armmimic/engines/analysis.h"
-#include "armmimic/engines/option_fields.h"
 
 class QCheckBox;
 class QComboBox;
@@ -24,6 +20,8 @@ class QStackedWidget;
 class QToolButton;
 
 namespace armmimic::gui {
+
+class ParameterForm;
 
 class EngineSettingsPanel : public QWidget {
   Q_OBJECT
@@ -53,35 +51,16 @@ class EngineSettingsPanel : public QWidget {
   void shoulderChanged(const std::optional<cv::Point2d>& shoulder_px);
 
  private:
-  // One row of an engine's parameter table, bound to its editor widget.
-  struct ParamEditor {
-    EngineKind engine;
-    std::string key;  // the table's key
-    OptionKind kind;
-    OptionGroup group;
-    int decimals;
-    double min, max;
-    std::vector<std::string> choices;
-    QWidget* widget;
-    std::function<double(const EngineOptions&)> get;
-    std::function<void(EngineOptions&, double)> set;
-  };
-  template <typename O>
-  QWidget* makeEnginePage(EngineKind engine, const std::vector<OptionField<O>>& fields,
-                          O EngineOptions::*member);
   QWidget* makeInputs();
   QLineEdit* fileRow(QWidget* parent, const QString& name, QWidget** row);
   void updateEnabled();
-  double editorValue(const ParamEditor& p) const;
-  void setEditorValue(const ParamEditor& p, double value);
 
   // Fields the panel does not show keep the values last given to setOptions().
   AnalysisOptions base_;
 
   QComboBox* engine_;
   QStackedWidget* pages_;
-  std::vector<ParamEditor> params_;
-  QToolButton* advanced_[3] = {};
+  ParameterForm* forms_[3] = {};  // indexed by EngineKind
   // Inputs.
   QComboBox* bg_mode_;
   QLineEdit* background_;
