@@ -86,25 +86,25 @@ synth::ArmSceneOptions Scene(uint64_t seed, synth::ArmMotion motion, synth::ArmS
 TEST(LkAccuracy, SwingWithGivenShoulder) {
   const LkRun run = RunLk(Scene(1, synth::ArmMotion::kSwing, synth::ArmSide::kRight, 200), true);
   EXPECT_GE(run.OkFraction(), 0.98);
-  EXPECT_LE(run.Mae(), 5.0);
+  EXPECT_LE(run.Mae(), 4.0);
 }
 
 TEST(LkAccuracy, MixedLeftWithGivenShoulder) {
   const LkRun run = RunLk(Scene(3, synth::ArmMotion::kMixed, synth::ArmSide::kLeft, 200), true);
   EXPECT_GE(run.OkFraction(), 0.98);
-  EXPECT_LE(run.Mae(), 7.0);
+  EXPECT_LE(run.Mae(), 4.0);
 }
 
 TEST(LkAccuracy, MixedWithBackgroundAndStandstill) {
   const LkRun run = RunLk(Scene(1, synth::ArmMotion::kMixed, synth::ArmSide::kRight, 200), false);
   EXPECT_GE(run.OkFraction(), 0.98);
-  EXPECT_LE(run.Mae(), 6.0);
+  EXPECT_LE(run.Mae(), 4.0);
 }
 
 TEST(LkAccuracy, SwingLeftWithBackgroundAndStandstill) {
   const LkRun run = RunLk(Scene(4, synth::ArmMotion::kSwing, synth::ArmSide::kLeft, 200), false);
   EXPECT_GE(run.OkFraction(), 0.98);
-  EXPECT_LE(run.Mae(), 5.0);
+  EXPECT_LE(run.Mae(), 4.0);
 }
 
 // Error must not accumulate: the last 100 frames of a 1000-frame scene are no worse than the
@@ -114,7 +114,7 @@ TEST(LkAccuracy, LongSceneDoesNotDrift) {
   ASSERT_EQ(run.error.size(), 1000u);
   const double first = run.Mae(0, 100), last = run.Mae(900, 1000);
   EXPECT_LE(last, first + 0.5) << "first 100: " << first << ", last 100: " << last;
-  EXPECT_LE(run.Mae(), 6.0);
+  EXPECT_LE(run.Mae(), 4.0);
   EXPECT_GE(run.OkFraction(), 0.98);
 }
 
