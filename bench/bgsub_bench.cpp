@@ -4,17 +4,14 @@
 // change them much. Run: build/bench/bgsub_bench
 #include <benchmark/benchmark.h>
 
-#include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
-#include "armmimic/core/video_source.h"
 #include "armmimic/engines/analysis.h"
 #include "armmimic/engines/engine.h"
 #include "armmimic/synth/arm_scene.h"
+#include "bench_scene.h"
 
 namespace armmimic {
 namespace {
@@ -31,42 +28,10 @@ synth::ArmSceneOptions SceneOptions() {
   return so;
 }
 
-// An MJPG scene on disk, written once per run and removed at exit.
-char g_dir[] = "/tmp/armmimic-bgsub-bench-XXXXXX";
-
-void RemoveSceneDir() {
-  const std::string cmd = std::string("rm -rf ") + g_dir;
-  if (std::system(cmd.c_str()) != 0) return;
-}
-
-const std::string& SceneDir() {
-  static const std::string dir = [] {
-    if (!mkdtemp(g_dir)) std::abort();
-    std::atexit(RemoveSceneDir);
-    if (!synth::WriteArmScene(SceneOptions(), g_dir, {}).ok()) std::abort();
-    return std::string(g_dir);
-  }();
-  return dir;
-}
+const std::string& SceneDir() { return bench::SceneDir(SceneOptions()); }
 
 // Decoding alone: the ceiling for any engine.
-void BM_DecodeOnly(benchmark::State& state) {
-  const std::string video = SceneDir() + "/scene.avi";
-  int64_t frames = 0;
-  for (auto _ : state) {
-    Status st;
-    auto source = VideoSource::Open(video, &st);
-    if (!source) {
-      state.SkipWithError(st.message().c_str());
-      return;
-    }
-    Frame f;
-    while (source->Read(&f, &st)) ++frames;
-    benchmark::DoNotOptimize(f.image.data);
-  }
-  state.counters["frames/s"] =
-      benchmark::Counter(static_cast<double>(frames), benchmark::Counter::kIsRate);
-}
+void BM_DecodeOnly(benchmark::State& state) { bench::DecodeOnly(state, SceneDir() + "/scene.avi"); }
 BENCHMARK(BM_DecodeOnly)->Unit(benchmark::kMillisecond);
 
 // What `armmimic-cli analyze --engine bgsub --background-frames 45 --start 45` does, minus the
@@ -79,19 +44,8 @@ void BM_AnalyzeEndToEnd(benchmark::State& state) {
   o.background_frames = 45;
   o.arm_length_path = SceneDir() + "/armlength.png";
   o.start = 45;
-  int64_t frames = 0;
-  for (auto _ : state) {
-    AnalysisSummary summary;
-    const Status st = RunAnalysis(o, {}, &summary);
-    if (!st.ok()) {
-      state.SkipWithError(st.message().c_str());
-      return;
-    }
-    frames += summary.video.frame_count;
-  }
   state.SetLabel(state.range(0) ? "thesis" : "improved");
-  state.counters["frames/s"] =
-      benchmark::Counter(static_cast<double>(frames), benchmark::Counter::kIsRate);
+  bench::AnalyzeFile(state, o);
 }
 BENCHMARK(BM_AnalyzeEndToEnd)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 

@@ -6,18 +6,15 @@
 //                        background estimated from frames [0, 45) and the standstill (arg 0), or
 //                        from a given shoulder (arg 1); every frame of the file counts;
 //   BM_LkEngine          the engine alone on frames rendered beforehand.
-#include <cstdlib>
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include <benchmark/benchmark.h>
 
-#include "armmimic/core/video_source.h"
 #include "armmimic/engines/analysis.h"
 #include "armmimic/engines/engine.h"
 #include "armmimic/synth/arm_scene.h"
+#include "bench_scene.h"
 
 namespace {
 
@@ -32,40 +29,10 @@ synth::ArmSceneOptions FileSceneOptions() {
   return so;
 }
 
-// An MJPG scene on disk, written once per run and removed at exit.
-char g_dir[] = "/tmp/armmimic-lk-bench-XXXXXX";
-
-void RemoveSceneDir() {
-  const std::string cmd = std::string("rm -rf ") + g_dir;
-  if (std::system(cmd.c_str()) != 0) return;
-}
-
-const std::string& SceneDir() {
-  static const std::string dir = [] {
-    if (!mkdtemp(g_dir)) std::abort();
-    std::atexit(RemoveSceneDir);
-    if (!synth::WriteArmScene(FileSceneOptions(), g_dir, {}).ok()) std::abort();
-    return std::string(g_dir);
-  }();
-  return dir;
-}
+const std::string& SceneDir() { return bench::SceneDir(FileSceneOptions()); }
 
 void BM_LkDecodeOnly(benchmark::State& state) {
-  const std::string video = SceneDir() + "/scene.avi";
-  int64_t frames = 0;
-  for (auto _ : state) {
-    Status st;
-    auto source = VideoSource::Open(video, &st);
-    if (!source) {
-      state.SkipWithError(st.message().c_str());
-      return;
-    }
-    Frame f;
-    while (source->Read(&f, &st)) ++frames;
-    benchmark::DoNotOptimize(f.image.data);
-  }
-  state.counters["frames/s"] =
-      benchmark::Counter(static_cast<double>(frames), benchmark::Counter::kIsRate);
+  bench::DecodeOnly(state, SceneDir() + "/scene.avi");
 }
 BENCHMARK(BM_LkDecodeOnly)->Unit(benchmark::kMillisecond);
 
@@ -82,19 +49,8 @@ void BM_LkAnalyzeEndToEnd(benchmark::State& state) {
     o.shoulder_px = renderer.shoulder_px();
     o.start = so.first_motion_frame() - 1;
   }
-  int64_t frames = 0;
-  for (auto _ : state) {
-    AnalysisSummary summary;
-    const Status st = RunAnalysis(o, {}, &summary);
-    if (!st.ok()) {
-      state.SkipWithError(st.message().c_str());
-      return;
-    }
-    frames += summary.video.frame_count;
-  }
   state.SetLabel(state.range(0) ? "given shoulder" : "background + standstill");
-  state.counters["frames/s"] =
-      benchmark::Counter(static_cast<double>(frames), benchmark::Counter::kIsRate);
+  bench::AnalyzeFile(state, o);
 }
 BENCHMARK(BM_LkAnalyzeEndToEnd)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
