@@ -8,6 +8,7 @@
 // features follow which part once the elbow bends.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <opencv2/imgproc.hpp>
 
@@ -582,29 +583,16 @@ class AnchoredTracker : public Tracker {
   }
 
   TrackerPose MakePose() const {
-    TrackerPose pose;
-    pose.ok = true;
-    pose.upper_deg = upper_deg_;
-    pose.fore_deg = fore_deg_;
-    if (side_ < 0) {
-      pose.note = "waiting for the first motion to decide the arm's side";
-      return pose;
-    }
-    pose.have_shoulder = true;
-    pose.shoulder = shoulder_;
-    pose.elbow = Elbow();
-    pose.wrist = Wrist();
+    if (side_ < 0) return MakeTrackerPose(upper_deg_, fore_deg_, false, {}, {}, {}, {}, {}, {});
+    std::vector<cv::Point2f> upper, fore;
     for (const Feature& f : feats_) {
       if (!(f.confirmed || f.in_fit)) continue;
-      (f.label == kUpper ? pose.upper_features : pose.fore_features).push_back(f.p);
+      (f.label == kUpper ? upper : fore).push_back(f.p);
     }
-    pose.upper_com = pose.upper_features.empty() ? 0.5 * (pose.shoulder + pose.elbow)
-                                                 : MeanPoint(pose.upper_features);
-    pose.fore_com = pose.fore_features.empty() ? 0.5 * (pose.elbow + pose.wrist)
-                                               : MeanPoint(pose.fore_features);
-    pose.note = "anchored: " + std::to_string(pose.upper_features.size()) + " upper, " +
-                std::to_string(pose.fore_features.size()) + " forearm features";
-    return pose;
+    const std::string note = "anchored: " + std::to_string(upper.size()) + " upper, " +
+                             std::to_string(fore.size()) + " forearm features";
+    return MakeTrackerPose(upper_deg_, fore_deg_, true, shoulder_, Elbow(), Wrist(),
+                           std::move(upper), std::move(fore), note);
   }
 
   static constexpr double kMinLeverPx = 4;

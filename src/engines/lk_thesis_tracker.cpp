@@ -125,24 +125,11 @@ class ThesisTracker : public Tracker {
 
   TrackerPose MakePose(const std::vector<cv::Point2f>& upper,
                        const std::vector<cv::Point2f>& fore) const {
-    TrackerPose pose;
-    pose.ok = true;
-    pose.upper_deg = upper_deg_;
-    pose.fore_deg = fore_deg_;
-    if (side_ < 0) {
-      pose.note = "waiting for the first motion to decide the arm's side";
-      return pose;
-    }
-    pose.have_shoulder = true;
-    pose.shoulder = shoulder_;
-    pose.elbow = Elbow();
-    pose.wrist = pose.elbow + 0.5 * arm_len_ * DirectionVector(fore_deg_);
-    pose.upper_features = upper;
-    pose.fore_features = fore;
-    pose.upper_com = upper.empty() ? 0.5 * (pose.shoulder + pose.elbow) : MeanPoint(upper);
-    pose.fore_com = fore.empty() ? 0.5 * (pose.elbow + pose.wrist) : MeanPoint(fore);
-    pose.note = "thesis: summed increments";
-    return pose;
+    if (side_ < 0) return MakeTrackerPose(upper_deg_, fore_deg_, false, {}, {}, {}, {}, {}, {});
+    const cv::Point2d elbow = Elbow();
+    return MakeTrackerPose(upper_deg_, fore_deg_, true, shoulder_, elbow,
+                           elbow + 0.5 * arm_len_ * DirectionVector(fore_deg_), upper, fore,
+                           "thesis: summed increments");
   }
 
   LkOptions o_;

@@ -56,4 +56,12 @@ int DecideSide(const std::vector<cv::Point2d>& shoulders, const std::vector<cv::
 // Mean of `points`, or nan when empty.
 cv::Point2d MeanPoint(const std::vector<cv::Point2f>& points);
 
+// A tracker's pose. While the side is undecided only the angles are set (the starting posture)
+// with a note saying so; otherwise the joints, the features of each part and their centres of
+// mass (the segment's midpoint for a part with no features) are filled in.
+TrackerPose MakeTrackerPose(double upper_deg, double fore_deg, bool side_decided,
+                            const cv::Point2d& shoulder, const cv::Point2d& elbow,
+                            const cv::Point2d& wrist, std::vector<cv::Point2f> upper_features,
+                            std::vector<cv::Point2f> fore_features, std::string note);
+
 }  // namespace armmimic::lk

@@ -1,5 +1,6 @@
 // Helpers shared by the thesis and the anchored tracker.
 #include <cmath>
+#include <utility>
 
 #include "lk_tracker.h"
 
@@ -33,6 +34,32 @@ cv::Point2d MeanPoint(const std::vector<cv::Point2f>& points) {
     y += p.y;
   }
   return {x / points.size(), y / points.size()};
+}
+
+TrackerPose MakeTrackerPose(double upper_deg, double fore_deg, bool side_decided,
+                            const cv::Point2d& shoulder, const cv::Point2d& elbow,
+                            const cv::Point2d& wrist, std::vector<cv::Point2f> upper_features,
+                            std::vector<cv::Point2f> fore_features, std::string note) {
+  TrackerPose pose;
+  pose.ok = true;
+  pose.upper_deg = upper_deg;
+  pose.fore_deg = fore_deg;
+  if (!side_decided) {
+    pose.note = "waiting for the first motion to decide the arm's side";
+    return pose;
+  }
+  pose.have_shoulder = true;
+  pose.shoulder = shoulder;
+  pose.elbow = elbow;
+  pose.wrist = wrist;
+  pose.upper_features = std::move(upper_features);
+  pose.fore_features = std::move(fore_features);
+  pose.upper_com =
+      pose.upper_features.empty() ? 0.5 * (shoulder + elbow) : MeanPoint(pose.upper_features);
+  pose.fore_com =
+      pose.fore_features.empty() ? 0.5 * (elbow + wrist) : MeanPoint(pose.fore_features);
+  pose.note = std::move(note);
+  return pose;
 }
 
 }  // namespace armmimic::lk
