@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "armmimic/core/angle_file.h"
+#include "armmimic/synth/score.h"
+#include "armmimic/synth/truth_file.h"
 #include "test_util.h"
 
 namespace armmimic {
@@ -49,6 +51,29 @@ TEST_F(CliLk, ShoulderAloneStartsAtTheFirstFrame) {
   ASSERT_EQ(f.rows.size(), 35u);
   EXPECT_EQ(f.rows.front().frame, 100);
   EXPECT_NEAR(f.rows.front().upper_deg, -90, 1e-6);
+}
+
+// Footage with no empty-background stretch: a person already in view, one arm moving, analysed
+// from the given shoulder within a region of interest. Angles must hold the target and every
+// position must come back in full-image pixels.
+TEST_F(CliLk, ShoulderAndRoiWithoutBackgroundHoldTheTarget) {
+  const std::string out = dir_->file("roi.tsv");
+  const test::CliResult r =
+      test::RunCli({"analyze", dir_->file("scene.avi"), "-o", out, "--engine", "lk", "--shoulder",
+                    "190,100", "--roi", "130,40,170,190", "--start", "104", "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  synth::TruthFile truth;
+  AngleFile angles;
+  ASSERT_TRUE(synth::ReadTruthFile(dir_->file("truth.tsv"), &truth).ok());
+  ASSERT_TRUE(ReadAngleFile(out, &angles).ok());
+  const synth::ScoreSummary s = synth::ScoreAngles(truth, angles).summary;
+  EXPECT_EQ(s.ok_frames, s.matched_frames);
+  EXPECT_LE(s.overall.mae, 4.0) << "upper " << s.upper.mae << ", fore " << s.fore.mae;
+  for (const AngleRow& row : angles.rows) {
+    EXPECT_GE(row.fore_cx, 130) << row.frame;  // inside the ROI, in full-image pixels
+    EXPECT_LE(row.fore_cx, 300) << row.frame;
+    EXPECT_GE(row.upper_cy, 40) << row.frame;
+  }
 }
 
 TEST_F(CliLk, MissingShoulderAndBackgroundIsAUsageError) {
