@@ -10,6 +10,7 @@
 
 #include "args.h"
 #include "armmimic/engines/analysis.h"
+#include "armmimic/engines/option_fields.h"
 #include "command.h"
 #include "progress.h"
 
@@ -61,8 +62,25 @@ const std::map<std::string, std::set<EngineKind>>& EngineFlags() {
   return flags;
 }
 
+// The --param keys with their defaults, indented, for the help text.
+std::string ParamList() {
+  std::string out = "\nEvery engine parameter, for --param, with its default:\n";
+  std::string line;
+  for (char c : DescribeEngineOptions(76)) {
+    if (c == '\n') {
+      out += (line.empty() ? "" : "  " + line) + "\n";
+      line.clear();
+    } else {
+      line += c;
+    }
+  }
+  out.pop_back();  // the help text adds the paragraph's last newline
+  return out;
+}
+
 int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global) {
   AnalysisOptions o;
+  std::vector<std::string> params;
   std::string output;
   std::string engine_name;
   int standstill = 60;
@@ -84,7 +102,8 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
       "Turns a video (or images) into an angle file v1, one row per analysed frame.\n"
       "bgsub/lk: frames [F, F+standstill) are the standstill (no rows); every later frame is a\n"
       "row. marker: one row per input image, in input order. Ctrl-C keeps the rows so far in a\n"
-      "valid file marked complete=no (exit 1).");
+      "valid file marked complete=no (exit 1).\n" +
+          ParamList());
   p.Positionals(&o.inputs, "INPUT", 1, -1);
   p.String("-o,--output", &output, "ANGLES.tsv", "the angle file to write (required)");
   p.String("--engine", &engine_name, "NAME", "bgsub, lk or marker (required)");
@@ -120,6 +139,14 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
   p.Int("--high", &o.engine.marker.high, "H",
         "marker: upper grey level of the markers (default 80)", 0, 255);
   p.Flag("--thesis", &thesis, "run the thesis method only, without the improvements");
+  p.Custom("--param", "ENGINE.KEY=VALUE",
+           "any engine parameter listed above; repeatable, applied after the other flags",
+           [&](const std::string& v) {
+             EngineOptions probe;
+             const Status st = SetEngineOption(v, &probe);
+             if (st) params.push_back(v);
+             return st ? std::string() : st.message();
+           });
   if (auto code = p.Parse(args)) return *code;
 
   if (engine_name.empty()) return p.UsageError("missing --engine (bgsub, lk or marker)");
@@ -132,6 +159,11 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
       return p.UsageError(flag + " is not used by --engine " + engine_name);
     }
   }
+  for (const std::string& assignment : params) {
+    if (assignment.rfind(engine_name + ".", 0) != 0) {
+      return p.UsageError("--param " + assignment + " is not used by --engine " + engine_name);
+    }
+  }
   o.engine.bgsub.standstill_frames = standstill;
   o.engine.lk.standstill_frames = standstill;
   o.engine.bgsub.threshold = threshold;
@@ -142,6 +174,7 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
   // An explicit grey window is used as given; otherwise the marker engine may shift it when the
   // reference's markers do not show in 20..80 (other illumination).
   if (p.Given("--low") || p.Given("--high")) o.engine.marker.auto_window = false;
+  for (const std::string& assignment : params) SetEngineOption(assignment, &o.engine);
   if (Status st = o.Check(); !st) return p.UsageError(st.message());
 
   InterruptGuard guard;

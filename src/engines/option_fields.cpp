@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "armmimic/core/angle_file.h"
+#include "armmimic/core/text.h"
+
 namespace armmimic {
 namespace {
 
@@ -292,6 +295,122 @@ const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields() {
               "accepted range of the markers' width ratio, upper end"),
   };
   return fields;
+}
+
+namespace {
+
+template <typename O>
+std::string ValueText(const OptionField<O>& f, double v) {
+  switch (f.kind) {
+    case OptionKind::kBool:
+      return v != 0 ? "true" : "false";
+    case OptionKind::kEnum:
+      return f.choices[static_cast<std::size_t>(v)];
+    case OptionKind::kInt:
+      return std::to_string(static_cast<long long>(std::lround(v)));
+    case OptionKind::kDouble:
+      break;
+  }
+  std::string text = FormatNumber(v, 6);  // shortest form: 0.300000 -> 0.3
+  if (text.find('.') != std::string::npos) {
+    while (text.back() == '0') text.pop_back();
+    if (text.back() == '.') text.pop_back();
+  }
+  return text;
+}
+
+template <typename O>
+std::string Accepts(const OptionField<O>& f) {
+  switch (f.kind) {
+    case OptionKind::kBool:
+      return "true or false";
+    case OptionKind::kEnum: {
+      std::string names;
+      for (const std::string& c : f.choices) names += (names.empty() ? "" : ", ") + c;
+      return "one of " + names;
+    }
+    case OptionKind::kInt:
+      return "a whole number in [" + ValueText(f, f.min) + ", " + ValueText(f, f.max) + "]";
+    case OptionKind::kDouble:
+      break;
+  }
+  return "a number in [" + ValueText(f, f.min) + ", " + ValueText(f, f.max) + "]";
+}
+
+template <typename O>
+Status SetField(const std::vector<OptionField<O>>& fields, const std::string& engine,
+                const std::string& key, const std::string& text, O* o) {
+  const OptionField<O>* f = FindOptionField(fields, key);
+  if (!f) {
+    std::string keys;
+    for (const auto& g : fields) keys += (keys.empty() ? "" : ", ") + g.key;
+    return Status::Error("'" + engine + "." + key + "' is no " + engine + " parameter (" + keys +
+                         ")");
+  }
+  const std::string name = engine + "." + key;
+  double v = 0;
+  bool ok = false;
+  if (f->kind == OptionKind::kBool) {
+    std::string t;
+    for (char c : text) t += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    ok = t == "true" || t == "on" || t == "1" || t == "false" || t == "off" || t == "0";
+    v = (t == "true" || t == "on" || t == "1") ? 1 : 0;
+  } else if (f->kind == OptionKind::kEnum) {
+    const auto it = std::find(f->choices.begin(), f->choices.end(), text);
+    ok = it != f->choices.end();
+    v = static_cast<double>(it - f->choices.begin());
+  } else {
+    ok = ParseFiniteDouble(text, &v) && v >= f->min && v <= f->max &&
+         (f->kind != OptionKind::kInt || v == std::floor(v));
+  }
+  if (!ok) return Status::Error(name + " '" + text + "': expected " + Accepts(*f));
+  f->set(*o, v);
+  return Status::Ok();
+}
+
+template <typename O>
+void Describe(const std::vector<OptionField<O>>& fields, const std::string& engine, int width,
+              std::string* out) {
+  const O defaults;
+  std::string line;
+  for (const auto& f : fields) {
+    const std::string item = engine + "." + f.key + "=" + ValueText(f, f.get(defaults));
+    if (!line.empty() && static_cast<int>(line.size() + 1 + item.size()) > width) {
+      *out += line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + item;
+  }
+  if (!line.empty()) *out += line + "\n";
+}
+
+}  // namespace
+
+Status SetEngineOption(const std::string& assignment, EngineOptions* o) {
+  const auto eq = assignment.find('=');
+  const auto dot = assignment.find('.');
+  if (eq == std::string::npos || dot == std::string::npos || dot > eq) {
+    return Status::Error("'" + assignment +
+                         "': expected ENGINE.KEY=VALUE, e.g. lk.max_corners=200");
+  }
+  const std::string engine = assignment.substr(0, dot);
+  const std::string key = assignment.substr(dot + 1, eq - dot - 1);
+  const std::string value = Trim(assignment.substr(eq + 1));
+  if (engine == "bgsub") return SetField(BgsubOptionFields(), engine, key, value, &o->bgsub);
+  if (engine == "lk") return SetField(LkOptionFields(), engine, key, value, &o->lk);
+  if (engine == "marker") return SetField(MarkerOptionFields(), engine, key, value, &o->marker);
+  return Status::Error("'" + assignment + "': unknown engine '" + engine +
+                       "' (bgsub, lk or marker)");
+}
+
+std::string DescribeEngineOptions(int width) {
+  std::string out;
+  Describe(BgsubOptionFields(), "bgsub", width, &out);
+  out += "\n";
+  Describe(LkOptionFields(), "lk", width, &out);
+  out += "\n";
+  Describe(MarkerOptionFields(), "marker", width, &out);
+  return out;
 }
 
 }  // namespace armmimic

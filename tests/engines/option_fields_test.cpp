@@ -123,5 +123,54 @@ TEST(OptionFieldsTest, IntFieldsRoundAndEnumsTakeTheChoiceIndex) {
   EXPECT_EQ(side->choices[2], LkArmSideName(LkArmSide::kRight));
 }
 
+TEST(OptionFieldsTest, SetEngineOptionTakesTableKeysAndRefusesWithAReason) {
+  EngineOptions o;
+  ASSERT_TRUE(SetEngineOption("lk.max_corners=200", &o).ok());
+  EXPECT_EQ(o.lk.max_corners, 200);
+  ASSERT_TRUE(SetEngineOption("bgsub.reject_shadow=off", &o).ok());
+  EXPECT_FALSE(o.bgsub.reject_shadow);
+  ASSERT_TRUE(SetEngineOption("lk.side=left", &o).ok());
+  EXPECT_EQ(o.lk.side, LkArmSide::kLeft);
+  ASSERT_TRUE(SetEngineOption("marker.min_fill=0.55", &o).ok());
+  EXPECT_DOUBLE_EQ(o.marker.min_fill, 0.55);
+  const struct {
+    const char* assignment;
+    const char* says;
+  } bad[] = {
+      {"lk.max_corners=2.5", "whole number in [4, 10000]"},
+      {"lk.max_corners=3", "[4, 10000]"},
+      {"lk.side=up", "one of auto, left, right"},
+      {"bgsub.reject_shadow=maybe", "true or false"},
+      {"marker.min_fill=1,5", "a number in [0, 1]"},
+      {"lk.nope=1", "'lk.nope' is no lk parameter"},
+      {"arm.threshold=4", "unknown engine 'arm'"},
+      {"threshold=45", "ENGINE.KEY=VALUE"},
+  };
+  for (const auto& b : bad) {
+    const EngineOptions before = o;
+    const Status st = SetEngineOption(b.assignment, &o);
+    ASSERT_FALSE(st.ok()) << b.assignment;
+    EXPECT_NE(st.message().find(b.says), std::string::npos) << st.message();
+    EXPECT_EQ(o.lk.max_corners, before.lk.max_corners);
+  }
+}
+
+TEST(OptionFieldsTest, DescribeListsEveryKeyWithItsDefault) {
+  const std::string text = DescribeEngineOptions();
+  for (const auto& f : LkOptionFields()) {
+    EXPECT_NE(text.find("lk." + f.key + "="), std::string::npos) << f.key;
+  }
+  for (const auto& f : MarkerOptionFields()) {
+    EXPECT_NE(text.find("marker." + f.key + "="), std::string::npos) << f.key;
+  }
+  EXPECT_NE(text.find("bgsub.threshold=45 "), std::string::npos);
+  EXPECT_NE(text.find("bgsub.straight_ratio=0.3 "), std::string::npos);
+  EXPECT_NE(text.find("lk.side=auto "), std::string::npos);
+  for (std::size_t start = 0, end; (end = text.find('\n', start)) != std::string::npos;
+       start = end + 1) {
+    EXPECT_LE(end - start, 78u) << text.substr(start, end - start);
+  }
+}
+
 }  // namespace
 }  // namespace armmimic

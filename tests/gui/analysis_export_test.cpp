@@ -2,8 +2,11 @@
 // overlay, export, and compare the export with armmimic-cli's output for the same options.
 #include <cmath>
 
+#include <QCheckBox>
 #include <QFileInfo>
 #include <QImage>
+#include <QSpinBox>
+#include <QToolButton>
 
 #include "analysis_job.h"
 #include "angle_plot.h"
@@ -114,6 +117,45 @@ TEST_F(AnalysisExportTest, LkExportEqualsCli) {
   ExpectSameAsCli(w, {s.video(), "--engine", "lk", "--background", s.background(), "--start",
                       std::to_string(s.background_frames), "--standstill-frames",
                       std::to_string(s.standstill_frames)});
+}
+
+TEST_F(AnalysisExportTest, AdvancedParametersReachTheEngineAsCliParamDoes) {
+  const GuiScenes& s = scenes();
+  MainWindow w;
+  AnalysisOptions o;
+  o.engine.kind = EngineKind::kLk;
+  o.background_path = s.background();
+  o.start = s.background_frames;
+  o.engine.lk.standstill_frames = s.standstill_frames;
+  w.openInputs({QString::fromStdString(s.video())});
+  ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen(); }));
+  w.settingsPanel()->setOptions(o);
+  // Three advanced fields changed through their editors, as an operator does.
+  gui::EngineSettingsPanel* panel = w.settingsPanel();
+  panel->advancedToggle(EngineKind::kLk)->click();
+  auto* corners = qobject_cast<QSpinBox*>(panel->parameterEditor(EngineKind::kLk, "max_corners"));
+  auto* window = qobject_cast<QSpinBox*>(panel->parameterEditor(EngineKind::kLk, "window_px"));
+  auto* bar = qobject_cast<QCheckBox*>(panel->parameterEditor(EngineKind::kLk, "use_bar"));
+  ASSERT_TRUE(corners && window && bar);
+  corners->setValue(120);
+  window->setValue(21);
+  bar->click();
+  EXPECT_EQ(panel->options().engine.lk.max_corners, 120);
+  EXPECT_FALSE(panel->options().engine.lk.use_bar);
+  ASSERT_TRUE(w.startAnalysis()) << w.log()->text().toStdString();
+  ASSERT_TRUE(WaitUntil([&] { return !w.job()->isRunning(); }, 60000));
+  ASSERT_FALSE(w.job()->resultPath().isEmpty()) << w.log()->text().toStdString();
+  ExpectSameAsCli(w, {s.video(), "--engine", "lk", "--background", s.background(), "--start",
+                      std::to_string(s.background_frames), "--standstill-frames",
+                      std::to_string(s.standstill_frames), "--param", "lk.max_corners=120",
+                      "--param", "lk.window_px=21", "--param=lk.use_bar=false"});
+  // And the parameters matter: the defaults give another file.
+  const CliResult r =
+      RunCli({"-q", "analyze", s.video(), "--engine", "lk", "--background", s.background(),
+              "--start", std::to_string(s.background_frames), "--standstill-frames",
+              std::to_string(s.standstill_frames), "-o", tmp_.file("defaults.tsv")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(ReadFile(tmp_.file("defaults.tsv")), ReadFile(tmp_.file("gui.tsv")));
 }
 
 TEST_F(AnalysisExportTest, MarkerExportEqualsCliAndShowsCandidates) {

@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "armmimic/core/status.h"
 #include "armmimic/engines/bgsub_options.h"
+#include "armmimic/engines/engine_options.h"
 #include "armmimic/engines/lk_options.h"
 #include "armmimic/engines/marker_options.h"
 
@@ -54,5 +56,13 @@ const OptionField<Options>* FindOptionField(const std::vector<OptionField<Option
   }
   return nullptr;
 }
+
+// Sets one field of `o` from "ENGINE.KEY=VALUE" ("lk.max_corners=200", the name the GUI's
+// editors carry). Ints take whole numbers, bools true/false/on/off/1/0, enums a choice name;
+// the value must lie in the field's range. Messages name the key and say what it accepts.
+Status SetEngineOption(const std::string& assignment, EngineOptions* o);
+
+// Every ENGINE.KEY=DEFAULT, one engine per paragraph, wrapped to `width` columns.
+std::string DescribeEngineOptions(int width = 78);
 
 }  // namespace armmimic
