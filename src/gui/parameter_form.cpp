@@ -9,10 +9,31 @@
 #include <QSpinBox>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
 
 namespace armmimic::gui {
+namespace {
+
+// A long form scrolls: the wheel turns a value only in the editor that has the focus (a click or
+// Tab); over any other editor it scrolls the form, so scrolling never changes a parameter.
+template <typename Base>
+class FocusWheel : public Base {
+ public:
+  using Base::Base;
+
+ protected:
+  void wheelEvent(QWheelEvent* event) override {
+    if (this->hasFocus()) {
+      Base::wheelEvent(event);
+    } else {
+      event->ignore();
+    }
+  }
+};
+
+}  // namespace
 
 ParameterForm::ParameterForm(EngineKind engine, std::vector<OptionField<EngineOptions>> rows,
                              QWidget* parent)
@@ -33,7 +54,7 @@ ParameterForm::ParameterForm(EngineKind engine, std::vector<OptionField<EngineOp
     QWidget* editor = nullptr;
     switch (f.kind) {
       case OptionKind::kInt: {
-        auto* spin = new QSpinBox;
+        auto* spin = new FocusWheel<QSpinBox>;
         spin->setRange(int(f.min), int(f.max));
         spin->setSingleStep(int(f.step));
         connect(spin, &QSpinBox::valueChanged, this, &ParameterForm::changed);
@@ -42,7 +63,7 @@ ParameterForm::ParameterForm(EngineKind engine, std::vector<OptionField<EngineOp
         break;
       }
       case OptionKind::kDouble: {
-        auto* spin = new QDoubleSpinBox;
+        auto* spin = new FocusWheel<QDoubleSpinBox>;
         spin->setDecimals(f.decimals);
         spin->setRange(f.min, f.max);
         spin->setSingleStep(f.step);
@@ -62,7 +83,7 @@ ParameterForm::ParameterForm(EngineKind engine, std::vector<OptionField<EngineOp
         break;
       }
       case OptionKind::kEnum: {
-        auto* combo = new QComboBox;
+        auto* combo = new FocusWheel<QComboBox>;
         for (const std::string& c : f.choices) combo->addItem(QString::fromStdString(c));
         connect(combo, &QComboBox::currentIndexChanged, this, &ParameterForm::changed);
         editor = combo;

@@ -1,5 +1,6 @@
 // The engine parameter forms: every option of every engine's table has an editor, a change made
 // through it reaches options() (the struct the CLI fills) and survives a QSettings round trip.
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -7,6 +8,7 @@
 #include <QSpinBox>
 #include <QTest>
 #include <QToolButton>
+#include <QWheelEvent>
 #include <cmath>
 
 #include "armmimic/engines/option_fields.h"
@@ -154,6 +156,26 @@ TEST_F(EngineSettingsTest, ValuesTheSpinBoxRoundsPassThroughExactly) {
   // An edit replaces it.
   Edit(panel.parameterEditor(EngineKind::kLk, "shoulder_inset"), OptionKind::kDouble, 0.25);
   EXPECT_DOUBLE_EQ(panel.options().engine.lk.shoulder_inset, 0.25);
+}
+
+TEST_F(EngineSettingsTest, TheWheelScrollsPastUnfocusedEditors) {
+  EngineSettingsPanel panel;
+  panel.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&panel));
+  auto* spin = qobject_cast<QSpinBox*>(panel.parameterEditor(EngineKind::kBgsub, "threshold"));
+  ASSERT_NE(spin, nullptr);
+  auto wheel = [&] {
+    const QPointF at(spin->width() / 2.0, spin->height() / 2.0);
+    QWheelEvent event(at, spin->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(spin, &event);
+  };
+  wheel();
+  EXPECT_EQ(spin->value(), 45);  // passing over it while scrolling the form
+  spin->setFocus();
+  ASSERT_TRUE(WaitUntil([&] { return spin->hasFocus(); }, 2000));
+  wheel();
+  EXPECT_EQ(spin->value(), 46);  // the focused editor takes the wheel
 }
 
 TEST_F(EngineSettingsTest, OutOfRangeSettingsAreClampedToTheTable) {
