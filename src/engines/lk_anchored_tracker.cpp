@@ -301,13 +301,13 @@ class AnchoredTracker : public Tracker {
   // Near its starting direction a part's sleeve reading is corrected by the bias found at the
   // known starting posture (CalibrateBars), fading out over kBiasFadeDeg.
   double RefineWithBar(const cv::Mat& bgr, int part, const cv::Point2d& joint_px, double deg,
-                       double length_px, bool* used) const {
+                       double length_px, bool* used, double range_deg = 0) const {
     *used = false;
     const ArmBar& bar = part == kUpper ? upper_bar_[side_] : fore_bar_[side_];
     if (!o_.use_bar || !bar.valid) return deg;
-    const BarSearch r =
-        SearchArmBar(bgr, bar, joint_px, deg, length_px, o_.bar_search_deg, o_.bar_min_score,
-                     Wrap180(upper_deg_ + 180), part == kFore ? 180 - o_.max_bend_deg : 0);
+    const BarSearch r = SearchArmBar(
+        bgr, bar, joint_px, deg, length_px, range_deg > 0 ? range_deg : o_.bar_search_deg,
+        o_.bar_min_score, Wrap180(upper_deg_ + 180), part == kFore ? 180 - o_.max_bend_deg : 0);
     if (!r.found) return deg;
     *used = true;
     const double start_deg = part == kUpper ? o_.initial_upper_deg : o_.initial_fore_deg;
@@ -404,7 +404,17 @@ class AnchoredTracker : public Tracker {
     fo = RefineWithBar(bgr, kFore, elbow, fo_feat, lf_, &fore_bar_used_);
     if (!fore_bar_used_) {
       fo = RefineWithBar(bgr, kFore, elbow, fo_prior, lf_, &fore_bar_used_);
+    }
+    if (!fore_bar_used_) {
+      // Lost (the forearm foreshortened, turned out of the picture, or the features ran off):
+      // every bend the elbow allows is searched.
+      fo = RefineWithBar(bgr, kFore, elbow, upper_deg_, lf_, &fore_bar_used_, o_.max_bend_deg);
       if (!fore_bar_used_) fo = fo_feat;
+    }
+    // No estimate bends the elbow past its limit.
+    const double bent = AngleDiff(fo, upper_deg_);
+    if (std::abs(bent) > o_.max_bend_deg) {
+      fo = Wrap180(upper_deg_ + std::copysign(o_.max_bend_deg, bent));
     }
     if (fore_bar_used_) {
       LocateElbowOnBar(bgr, fo);
