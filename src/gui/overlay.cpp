@@ -31,6 +31,9 @@ void HaloText(QPainter& p, const QPointF& baseline, const QString& text, const Q
   p.fillPath(path, color);
 }
 
+// The marker engine names the image of every view it measures.
+bool IsMarkerView(const ArmMeasurement& m) { return !m.file.empty(); }
+
 }  // namespace
 
 OverlayTexts MakeOverlayTexts(const ArmMeasurement* m, int frame_index, int frame_count) {
@@ -44,8 +47,12 @@ OverlayTexts MakeOverlayTexts(const ArmMeasurement* m, int frame_index, int fram
     return t;
   }
   t.yaw = "yaw " + Deg(m->yaw_deg);
-  t.orientation = "upper " + Deg(m->upper_deg) + "  fore " + Deg(m->fore_deg);
-  if (!std::isnan(m->bend_deg)) t.orientation += "  bend " + Deg(m->bend_deg);
+  if (IsMarkerView(*m)) {
+    t.orientation = "bend " + Deg(m->bend_deg);  // the 2-DOF joint has no arm segments
+  } else {
+    t.orientation = "upper " + Deg(m->upper_deg) + "  fore " + Deg(m->fore_deg);
+    if (!std::isnan(m->bend_deg)) t.orientation += "  bend " + Deg(m->bend_deg);
+  }
   switch (m->phase) {
     case MeasurementPhase::kOk:
       t.state = "ok";
@@ -154,7 +161,11 @@ void PaintOverlay(QPainter& p, QSize image_size, const ArmMeasurement* m, int fr
   if (m && o.yaw) {
     HaloText(p, QPointF(w - margin - fm.horizontalAdvance(texts.yaw), h / 2), texts.yaw, Qt::white);
   }
-  if (m && o.orientation) {
+  if (m && o.orientation && IsMarkerView(*m)) {
+    const QString bend = "bend " + Deg(m->bend_deg);
+    HaloText(p, QPointF(w - margin - fm.horizontalAdvance(bend), h - margin - fm.descent()), bend,
+             kMarker);
+  } else if (m && o.orientation) {
     const QString upper = "upper " + Deg(m->upper_deg);
     const QString fore = "fore " + Deg(m->fore_deg);
     const double y2 = h - margin - fm.descent();

@@ -29,7 +29,7 @@ struct OverlayOptions {
 struct OverlayTexts {
   QString frame;        // "frame 12 / 300"
   QString yaw;          // "yaw 23.4°" or "yaw —"
-  QString orientation;  // "upper -90.0°  fore -45.0°"
+  QString orientation;  // "upper -90.0°  fore -45.0°"; for a marker view "bend 12.0°"
   QString state;        // "ok", "lost: <note>", "setup"
 };
 

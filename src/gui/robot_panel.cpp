@@ -23,6 +23,7 @@
 #include <QVBoxLayout>
 
 #include "armmimic/core/atomic_file.h"
+#include "armmimic/core/text.h"
 #include "armmimic/robot/val_program.h"
 #include "armmimic/serial/serial_link.h"
 #include "recent_files.h"
@@ -388,7 +389,14 @@ void RobotPanel::setAngleFile(const QString& path) {
 }
 
 bool RobotPanel::replan() {
-  const robot::PlannerOptions options = plannerOptions();
+  robot::PlannerOptions options = plannerOptions();
+  // Still images (the marker engine's views) have no frame rate: their rows are spaced by the
+  // fallback rate, and a low-pass filter over them would mean nothing (and cannot be below half
+  // of 1 fps). They are planned unfiltered; the setting stays for the next video.
+  double fps = 0;
+  const bool still_images =
+      plan_.loaded() && !(ParseFiniteDouble(plan_.angles().Meta("fps", "0"), &fps) && fps > 0);
+  if (still_images) options.cutoff_hz = 0;
   preview_->setLimits(options.limits);
   const std::vector<LimitViolation> bad = plan_.Violations(options);
   QString violations;
@@ -418,6 +426,7 @@ bool RobotPanel::replan() {
                        .arg(r.filled_rows)
                        .arg(r.clamped_rows)
                        .arg(r.stretch_s, 0, 'f', 1) +
+                   (still_images ? tr("<br>Still images: no low-pass filter.") : QString()) +
                    violations);
   updateButtons();
   showPose();
@@ -459,9 +468,9 @@ void RobotPanel::exportValInteractive() {
     emit errorOccurred(tr("No plan to export: run the analysis, then check the Robot panel"));
     return;
   }
-  const QString path = QFileDialog::getSaveFileName(
-      this, tr("Export VAL program"), RecentFiles::lastDir() + "/program.val",
-      tr("VAL programs (*.val)"));
+  const QString path = QFileDialog::getSaveFileName(this, tr("Export VAL program"),
+                                                    RecentFiles::lastDir() + "/program.val",
+                                                    tr("VAL programs (*.val)"));
   if (!path.isEmpty()) exportVal(path);
 }
 

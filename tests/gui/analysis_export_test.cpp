@@ -16,6 +16,7 @@
 #include "gui_fixture.h"
 #include "log_view.h"
 #include "main_window.h"
+#include "robot_panel.h"
 #include "video_player.h"
 #include "video_view.h"
 
@@ -169,6 +170,16 @@ TEST_F(AnalysisExportTest, MarkerExportEqualsCliAndShowsCandidates) {
   // The first view's overlay carries the markers and candidate boxes (Fig. 4-3).
   ASSERT_TRUE(WaitUntil([&] { return w.view()->measurement().has_value(); }));
   EXPECT_FALSE(w.view()->measurement()->candidate_boxes.empty());
+  // The joint's bend, not arm segments, in the lower right.
+  const gui::OverlayTexts texts = w.view()->overlayTexts();
+  EXPECT_TRUE(texts.orientation.startsWith("bend ")) << texts.orientation.toStdString();
+  EXPECT_EQ(texts.orientation.indexOf("upper"), -1) << texts.orientation.toStdString();
+  // Still images (no frame rate) are planned for the robot without a low-pass filter instead of
+  // failing on it; the filter setting stays for the next video.
+  EXPECT_TRUE(w.robotPanel()->plan().loaded());
+  EXPECT_EQ(w.log()->text().indexOf("cutoff"), -1) << w.log()->text().toStdString();
+  EXPECT_EQ(w.robotPanel()->plan().options().cutoff_hz, 0);
+  EXPECT_DOUBLE_EQ(w.robotPanel()->plannerOptions().cutoff_hz, robot::PlannerOptions().cutoff_hz);
   ExpectSameAsCli(w, {s.marker_dir + "/views", "--engine", "marker", "--reference",
                       s.marker_dir + "/reference.png"});
 }

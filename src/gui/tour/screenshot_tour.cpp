@@ -22,6 +22,7 @@
 #include <QToolButton>
 
 #include "analysis_job.h"
+#include "armmimic/synth/marker_scene.h"
 #include "app_actions.h"
 #include "engine_settings_panel.h"
 #include "main_window.h"
@@ -163,6 +164,29 @@ int main(int argc, char** argv) {
   Wait([&] { return !w.player()->isOpen(); }, 20000);
   QTest::qWait(500);
   Shot("11-camera-missing");
+
+  // The marker engine on a folder of views of the 2-DOF joint: markers and candidate boxes.
+  QTemporaryDir marker_dir;
+  armmimic::synth::MarkerSceneOptions marker;
+  marker.seed = 3;
+  marker.views = 12;
+  marker.background = "room";
+  marker.clutter = 2;
+  const std::string marker_path = marker_dir.path().toStdString();
+  if (!armmimic::synth::WriteMarkerScene(marker, marker_path, {}).ok()) return 1;
+  w.findChild<QDockWidget*>("analysisDock")->raise();
+  w.findChild<QDockWidget*>("plotDock")->raise();
+  w.openInputs({marker_dir.filePath("views")});
+  if (!Wait([&] { return w.player()->isOpen() && !w.view()->image().isNull(); })) return 1;
+  armmimic::AnalysisOptions m = w.settingsPanel()->options();
+  m.engine.kind = armmimic::EngineKind::kMarker;
+  m.reference_path = marker_path + "/reference.png";
+  w.settingsPanel()->setOptions(m);
+  w.startAnalysis();
+  if (!Wait([&] { return !w.job()->isRunning(); }, 300000)) return 1;
+  w.player()->seek(4);
+  Wait([&] { return w.view()->frameIndex() == 4 && w.view()->measurement().has_value(); });
+  Shot("12-marker");
   w.close();
   return 0;
 }
