@@ -413,11 +413,17 @@ bool RobotPanel::replan() {
     report_->setText(tr("<font color='#d03b2f'>Not planned: %1</font>")
                          .arg(QString::fromStdString(st.message()).toHtmlEscaped()) +
                      violations);
-    emit errorOccurred(QString::fromStdString(st.message()));
+    // Planning runs on its own after every analysis and settings change: the reason stays in
+    // the plan report (red) and is noted once in Messages, without raising an error the
+    // operator did not ask for. Sending or exporting a refused plan is the error.
+    const QString why = QString::fromStdString(st.message());
+    if (why != last_plan_failure_) emit message(tr("Robot plan not made: %1").arg(why));
+    last_plan_failure_ = why;
     updateButtons();
     showPose();
     return false;
   }
+  last_plan_failure_.clear();
   const robot::PlanReport& r = plan_.report();
   report_->setText(tr("%1 moves over %2 s (%3 rows used, %4 filled, %5 clamped, +%6 s for speed)")
                        .arg(plan_.trajectory().keyframes.size())
@@ -497,7 +503,10 @@ bool RobotPanel::connectTo(const QString& device) {
 
 bool RobotPanel::sendPlan(bool confirmed) {
   if (!plan_.planned()) {
-    emit errorOccurred(tr("Nothing to send: no plan"));
+    emit errorOccurred(
+        last_plan_failure_.isEmpty()
+            ? tr("Nothing to send: no plan (run the analysis first)")
+            : tr("Nothing to send: the plan was refused: %1").arg(last_plan_failure_));
     return false;
   }
   std::string text;

@@ -80,6 +80,7 @@ class RobotPanel : public QWidget {
   QTimer sim_poll_;
   double anim_t_ = 0;
   int video_frame_ = 0;
+  QString last_plan_failure_;  // noted once in Messages
   // Plan settings.
   QLabel* source_;
   QCheckBox* mirror_;

@@ -131,7 +131,13 @@ TEST_F(RobotPanelTest, ViolationsAreShownBeforeAnythingMoves) {
   ASSERT_FALSE(bad.empty());
   panel->setVideoFrame(bad.front().frame);
   EXPECT_TRUE(panel->preview()->violatingJoints().contains(1));
+  // The refusal is noted (not raised as an error) while planning, and is the error on sending.
+  EXPECT_EQ(w.log()->errorCount(), 0) << w.log()->text().toStdString();
+  EXPECT_NE(w.log()->text().indexOf("Robot plan not made"), -1) << w.log()->text().toStdString();
   EXPECT_FALSE(panel->sendPlan(true));
+  EXPECT_EQ(w.log()->errorCount(), 1);
+  EXPECT_NE(w.log()->text().indexOf("Nothing to send: the plan was refused: "), -1)
+      << w.log()->text().toStdString();
   // Nothing was sent, nothing connected.
   EXPECT_FALSE(panel->link()->isSending());
 }
