@@ -18,6 +18,7 @@ AnglePlot::AnglePlot(QWidget* parent)
       upper_(new QLineSeries),
       fore_(new QLineSeries),
       yaw_(new QLineSeries),
+      bend_(new QLineSeries),
       lost_(new QScatterSeries),
       cursor_(new QLineSeries),
       x_(new QValueAxis),
@@ -27,6 +28,8 @@ AnglePlot::AnglePlot(QWidget* parent)
   upper_->setName(tr("upper arm"));
   fore_->setName(tr("forearm"));
   yaw_->setName(tr("yaw"));
+  bend_->setName(tr("bend"));
+  bend_->setVisible(false);  // shown for marker views
   lost_->setName(tr("lost"));
   lost_->setMarkerSize(6);
   lost_->setColor(QColor(0xd0, 0x3b, 0x2f));
@@ -37,13 +40,16 @@ AnglePlot::AnglePlot(QWidget* parent)
   cursor_->setPen(QPen(QColor(0x80, 0x80, 0x80), 1.0, Qt::DashLine));
   for (QAbstractSeries* s :
        {static_cast<QAbstractSeries*>(upper_), static_cast<QAbstractSeries*>(fore_),
-        static_cast<QAbstractSeries*>(yaw_), static_cast<QAbstractSeries*>(lost_),
-        static_cast<QAbstractSeries*>(cursor_)}) {
+        static_cast<QAbstractSeries*>(yaw_), static_cast<QAbstractSeries*>(bend_),
+        static_cast<QAbstractSeries*>(lost_), static_cast<QAbstractSeries*>(cursor_)}) {
     chart->addSeries(s);
   }
   x_->setTitleText(tr("frame"));
   x_->setLabelFormat("%d");
+  x_->setTickType(QValueAxis::TicksDynamic);
+  x_->setTickAnchor(0);
   x_->setRange(0, 1);
+  x_->setTickInterval(1);
   y_->setTitleText(tr("degrees"));
   y_->setRange(-180, 180);
   y_->setTickCount(9);
@@ -74,6 +80,7 @@ void AnglePlot::applyTheme() {
   upper_->setPen(QPen(QColor(0xe0, 0xa0, 0x00), 1.5));
   fore_->setPen(QPen(QColor(0x00, 0x9c, 0xd8), 1.5));
   yaw_->setPen(QPen(QColor(0x8e, 0x5c, 0xc4), 1.5));
+  bend_->setPen(QPen(QColor(0x2f, 0xa8, 0x3c), 1.5));
   lost_->setColor(QColor(0xd0, 0x3b, 0x2f));
   lost_->setBorderColor(QColor(0xd0, 0x3b, 0x2f));
   lost_->setMarkerSize(6);
@@ -85,10 +92,24 @@ void AnglePlot::applyTheme() {
   chart()->legend()->setLabelColor(pal.color(QPalette::WindowText));
 }
 
-void AnglePlot::setFrameRange(int frame_count) { x_->setRange(0, std::max(1, frame_count - 1)); }
+void AnglePlot::setFrameRange(int frame_count) {
+  const int last = std::max(1, frame_count - 1);
+  x_->setRange(0, last);
+  // About six labels, each on a whole frame: 1, 2, 5, 10, 20, 50, ...
+  double step = 1;
+  for (double decade = 1; step * 6 < last; decade *= 10) {
+    for (double m : {1.0, 2.0, 5.0}) {
+      step = m * decade;
+      if (step * 6 >= last) break;
+    }
+  }
+  x_->setTickInterval(step);
+}
+
+double AnglePlot::frameTickStep() const { return x_->tickInterval(); }
 
 void AnglePlot::setResults(const ResultStore& results) {
-  QList<QPointF> upper, fore, yaw, lost;
+  QList<QPointF> upper, fore, yaw, bend, lost;
   for (const auto& [frame, m] : results.all()) {
     if (m.phase == MeasurementPhase::kLost) {
       lost.append(QPointF(frame, -175));
@@ -98,10 +119,17 @@ void AnglePlot::setResults(const ResultStore& results) {
     if (std::isfinite(m.upper_deg)) upper.append(QPointF(frame, m.upper_deg));
     if (std::isfinite(m.fore_deg)) fore.append(QPointF(frame, m.fore_deg));
     if (std::isfinite(m.yaw_deg)) yaw.append(QPointF(frame, m.yaw_deg));
+    // The marker engine (it names each view's image) measures the joint's bend, not segments.
+    if (!m.file.empty() && std::isfinite(m.bend_deg)) bend.append(QPointF(frame, m.bend_deg));
   }
   upper_->replace(upper);
   fore_->replace(fore);
   yaw_->replace(yaw);
+  bend_->replace(bend);
+  const bool marker = !bend.isEmpty();
+  upper_->setVisible(!marker);
+  fore_->setVisible(!marker);
+  bend_->setVisible(marker);
   lost_->replace(lost);
 }
 
@@ -112,6 +140,7 @@ void AnglePlot::setCursorFrame(int frame) {
 
 int AnglePlot::pointCount() const { return static_cast<int>(upper_->count()); }
 int AnglePlot::lostCount() const { return static_cast<int>(lost_->count()); }
+int AnglePlot::bendCount() const { return static_cast<int>(bend_->count()); }
 
 int AnglePlot::frameAt(const QPointF& widget_pos) const {
   const QPointF scene = mapToScene(widget_pos.toPoint());

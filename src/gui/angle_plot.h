@@ -1,5 +1,6 @@
-// AnglePlot: upper arm, forearm and yaw against the frame (Qt Charts). Lost frames show as red
-// marks along the bottom, the video cursor as a vertical line; a click seeks to that frame.
+// AnglePlot: upper arm, forearm and yaw against the frame (Qt Charts); for the marker engine's
+// views, yaw and bend. Lost frames show as red marks along the bottom, the video cursor as a
+// vertical line; a click seeks to that frame.
 #pragma once
 
 #include <QChartView>
@@ -24,6 +25,9 @@ class AnglePlot : public QChartView {
   int cursorFrame() const { return cursor_frame_; }
   int pointCount() const;  // points on the angle series, for tests
   int lostCount() const;
+  int bendCount() const;  // points on the bend series (marker views)
+  // The frame axis' label step: 1, 2, 5, 10, 20, ... so that every label is a whole frame.
+  double frameTickStep() const;
   // Frame under a widget position (rounded), for clicks.
   int frameAt(const QPointF& widget_pos) const;
 
@@ -39,6 +43,7 @@ class AnglePlot : public QChartView {
   QLineSeries* upper_;
   QLineSeries* fore_;
   QLineSeries* yaw_;
+  QLineSeries* bend_;
   QScatterSeries* lost_;
   QLineSeries* cursor_;
   QValueAxis* x_;

@@ -69,6 +69,7 @@ TEST_F(AnalysisExportTest, BgsubOverlayFollowsTruthAndExportEqualsCli) {
   EXPECT_EQ(w.results().rows(), s.motion_frames);
   EXPECT_EQ(w.job()->summary().frames, s.motion_frames);
   EXPECT_GT(w.plot()->pointCount(), s.motion_frames / 2);
+  EXPECT_EQ(w.plot()->frameTickStep(), 20);  // frames 0..69: labels every 20 frames
 
   // Scrub to a motion frame: the overlay shows that frame's measurement, and it follows truth.
   synth::TruthFile truth;
@@ -173,6 +174,10 @@ TEST_F(AnalysisExportTest, MarkerExportEqualsCliAndShowsCandidates) {
   // The joint's bend, not arm segments, in the lower right.
   const gui::OverlayTexts texts = w.view()->overlayTexts();
   EXPECT_TRUE(texts.orientation.startsWith("bend ")) << texts.orientation.toStdString();
+  // The plot shows the bend of every measured view; 6 views give whole-frame labels.
+  EXPECT_EQ(w.plot()->bendCount(), w.job()->summary().ok);
+  EXPECT_EQ(w.plot()->pointCount(), 0);
+  EXPECT_EQ(w.plot()->frameTickStep(), 1);
   EXPECT_EQ(texts.orientation.indexOf("upper"), -1) << texts.orientation.toStdString();
   // Still images (no frame rate) are planned for the robot without a low-pass filter instead of
   // failing on it; the filter setting stays for the next video.
