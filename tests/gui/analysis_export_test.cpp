@@ -247,7 +247,9 @@ TEST_F(AnalysisExportTest, BadInputIsReportedOnceAndNamed) {
   o.background_path = s.background();
   o.arm_length_path = tmp_.file("no-arm.png");
   w.settingsPanel()->setOptions(o);
-  if (w.startAnalysis()) ASSERT_TRUE(WaitUntil([&] { return !w.job()->isRunning(); }, 30000));
+  if (w.startAnalysis()) {
+    ASSERT_TRUE(WaitUntil([&] { return !w.job()->isRunning(); }, 30000));
+  }
   EXPECT_NE(w.log()->text().indexOf("no-arm.png"), -1) << w.log()->text().toStdString();
   EXPECT_TRUE(w.job()->resultPath().isEmpty());
 }
