@@ -112,7 +112,8 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
         "bgsub/lk: estimate the background from frames [0, K) of the video", 1, 1000000);
   p.String("--arm-length", &o.arm_length_path, "ARM.png",
            "bgsub: straight horizontal arm at zero yaw (gives b)");
-  p.Int("--start", &o.start, "F", "bgsub/lk: first standstill frame (default 0)", 0);
+  p.Int("--start", &o.start, "F",
+        "bgsub/lk: first standstill frame (default 0; a camera or stream drops F frames)", 0);
   p.Int("--standstill-frames", &standstill, "N", "bgsub/lk: standstill length (default 60)", 1,
         100000);
   p.Int("--threshold", &threshold, "T", "bgsub: grey-level difference threshold (default 45)", 1,
