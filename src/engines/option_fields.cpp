@@ -78,11 +78,11 @@ Row<O> Bool(const char* key, bool O::*m, bool def, const char* label, const char
 }
 
 template <typename O, typename E>
-Row<O> Enum(const char* key, E O::*m, E def, std::vector<std::string> choices, const char* label,
-            const char* help) {
+Row<O> Enum(const char* key, E O::*m, E def, const std::vector<std::string>& choices,
+            const char* label, const char* help) {
   Row<O> r = Base<O>(key, OptionKind::kEnum, static_cast<int>(def), 0,
                      static_cast<double>(choices.size()) - 1, label, help);
-  r.f.choices = std::move(choices);
+  r.f.choices = choices;
   r.f.get = [m](const O& o) { return static_cast<double>(static_cast<int>(o.*m)); };
   r.f.set = [m](O& o, double v) { o.*m = static_cast<E>(static_cast<int>(std::lround(v))); };
   return r;
