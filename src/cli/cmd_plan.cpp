@@ -17,21 +17,6 @@ using robot::kJoints;
 
 std::string Num(double v, int decimals) { return FormatNumber(v, decimals); }
 
-// Header values hold no spaces: they are "key=value" tokens.
-std::string HeaderValue(const std::string& v) {
-  std::string s;
-  for (char c : v) {
-    if (c == ' ') {
-      s += "%20";
-    } else if (c == '%') {
-      s += "%25";
-    } else {
-      s += c;
-    }
-  }
-  return s;
-}
-
 struct MapFlag {
   bool given = false;
   robot::JointMap map;
@@ -233,21 +218,8 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
                 << "\n";
   }
 
-  const std::vector<std::string> header = {
-      "source=" + HeaderValue(input[0]) + " engine=" + HeaderValue(angles.Meta("engine", "?")) +
-          " rows=" + std::to_string(report.rows) + " fps=" + Num(report.sample_rate_hz, 3),
-      "mapping=" + report.mapping,
-      "filter cutoff_hz=" + Num(o.cutoff_hz, 3) +
-          " gap=" + (o.gap == robot::GapMode::kHold ? "hold" : "interpolate") +
-          " max_gap_s=" + Num(o.max_gap_s, 3) + " max_jump_deg_s=" + Num(o.max_jump_deg_s, 1),
-      "keyframes deadband_deg=" + Num(o.deadband_deg, 3) + " min_interval_s=" +
-          Num(o.min_interval_s, 3) + " max_interval_s=" + Num(o.max_interval_s, 3) +
-          " clamp=" + (o.clamp ? "yes" : "no") + " on_speed=" + on_speed,
-      "plan duration_s=" + Num(trajectory.duration_s(), 3) + " stretch_s=" +
-          Num(report.stretch_s, 3) + " filled_rows=" + std::to_string(report.filled_rows) +
-          " flagged_jumps=" + std::to_string(report.flagged_jumps) +
-          " clamped_rows=" + std::to_string(report.clamped_rows),
-  };
+  const std::vector<std::string> header =
+      robot::DescribePlan(input[0], angles, o, report, trajectory);
   std::string text;
   if (Status s = robot::FormatValProgram(trajectory, profile, o.limits, header, &text); !s.ok()) {
     std::cerr << "armmimic-cli plan: " << output << ": " << s.message() << "\n";

@@ -23,7 +23,6 @@
 #include <QVBoxLayout>
 
 #include "armmimic/core/atomic_file.h"
-#include "armmimic/core/text.h"
 #include "armmimic/robot/val_program.h"
 #include "armmimic/serial/serial_link.h"
 #include "recent_files.h"
@@ -157,7 +156,8 @@ QWidget* RobotPanel::makePlanBox() {
     rl->addWidget(sign_[i]);
     rl->addWidget(new QLabel(tr("× source +")));
     rl->addWidget(offset_[i], 1);
-    form->addRow(tr(sources[i]), row);
+    map_labels_[i] = new QLabel(tr(sources[i]));
+    form->addRow(map_labels_[i], row);
   }
   cutoff_ = DSpin(0, 50, d.cutoff_hz, 2, tr("low-pass cutoff, Hz (0: off)"), "cutoff");
   deadband_ =
@@ -385,18 +385,48 @@ void RobotPanel::setAngleFile(const QString& path) {
   source_->setText(tr("%1 rows (%2)")
                        .arg(plan_.angles().rows.size())
                        .arg(QString::fromStdString(plan_.angles().Meta("engine", "?"))));
+  followFileKind(robot::DetectSourceKind(plan_.angles()));
   replan();
 }
 
+void RobotPanel::setMappingKind(robot::SourceKind kind) {
+  mapping_kind_ = kind;
+  const bool marker = kind == robot::SourceKind::kMarker;
+  map_labels_[1]->setText(marker ? tr("J2 = bend") : tr("J2 = elevation"));
+  map_labels_[2]->setText(marker ? tr("J3 (held)") : tr("J3 = flexion"));
+}
+
+// As `plan` does on the command line: mapping rows left at one kind's defaults switch to the
+// defaults of the new file's kind (marker views drive J2 by the bend, arm files by the
+// elevation). Rows the operator changed are kept, and Messages says so.
+void RobotPanel::followFileKind(robot::SourceKind kind) {
+  if (kind == mapping_kind_) return;
+  const robot::MappingOptions old_defaults = robot::MappingOptions::Default(mapping_kind_);
+  const robot::JointMap old_maps[3] = {old_defaults.j1, old_defaults.j2, old_defaults.j3};
+  bool untouched = true;
+  for (int i = 0; i < 3; ++i) {
+    untouched = untouched && sign_[i]->currentData().toDouble() == old_maps[i].sign &&
+                offset_[i]->value() == old_maps[i].offset_deg;
+  }
+  setMappingKind(kind);
+  const bool marker = kind == robot::SourceKind::kMarker;
+  if (!untouched) {
+    emit message(tr("Robot mapping: your J1-J3 settings are kept for this %1 file; the defaults "
+                    "for it differ")
+                     .arg(marker ? tr("marker") : tr("arm")));
+    return;
+  }
+  const robot::MappingOptions d = robot::MappingOptions::Default(kind);
+  const robot::JointMap maps[3] = {d.j1, d.j2, d.j3};
+  for (int i = 0; i < 3; ++i) {
+    const QSignalBlocker block_sign(sign_[i]), block_offset(offset_[i]);
+    sign_[i]->setCurrentIndex(maps[i].sign > 0 ? 0 : 1);
+    offset_[i]->setValue(maps[i].offset_deg);
+  }
+}
+
 bool RobotPanel::replan() {
-  robot::PlannerOptions options = plannerOptions();
-  // Still images (the marker engine's views) have no frame rate: their rows are spaced by the
-  // fallback rate, and a low-pass filter over them would mean nothing (and cannot be below half
-  // of 1 fps). They are planned unfiltered; the setting stays for the next video.
-  double fps = 0;
-  const bool still_images =
-      plan_.loaded() && !(ParseFiniteDouble(plan_.angles().Meta("fps", "0"), &fps) && fps > 0);
-  if (still_images) options.cutoff_hz = 0;
+  const robot::PlannerOptions options = plannerOptions();
   preview_->setLimits(options.limits);
   const std::vector<LimitViolation> bad = plan_.Violations(options);
   QString violations;
@@ -432,7 +462,11 @@ bool RobotPanel::replan() {
                        .arg(r.filled_rows)
                        .arg(r.clamped_rows)
                        .arg(r.stretch_s, 0, 'f', 1) +
-                   (still_images ? tr("<br>Still images: no low-pass filter.") : QString()) +
+                   // Still images (marker views) have no frame rate: the planner leaves
+                   // them unfiltered, whatever the cutoff setting.
+                   (r.filter_cutoff_hz == 0 && options.cutoff_hz > 0
+                        ? tr("<br>Still images: no low-pass filter.")
+                        : QString()) +
                    violations);
   updateButtons();
   showPose();
@@ -549,6 +583,7 @@ QString RobotPanel::replyLog() const { return replies_->toPlainText(); }
 void RobotPanel::save(QSettings& s) const {
   const robot::PlannerOptions o = plannerOptions();
   s.beginGroup("robot");
+  s.setValue("mappingKind", robot::SourceKindName(mapping_kind_));
   s.setValue("mirror", o.mapping.mirror);
   const robot::JointMap maps[3] = {o.mapping.j1, o.mapping.j2, o.mapping.j3};
   for (int i = 0; i < 3; ++i) {
@@ -577,6 +612,12 @@ void RobotPanel::save(QSettings& s) const {
 void RobotPanel::load(QSettings& s) {
   robot::PlannerOptions o = plannerOptions();
   s.beginGroup("robot");
+  // The J1-J3 rows were saved showing this kind's mapping (its defaults, or changes to them).
+  const robot::SourceKind saved_kind =
+      s.value("mappingKind").toString() ==
+              QLatin1String(robot::SourceKindName(robot::SourceKind::kMarker))
+          ? robot::SourceKind::kMarker
+          : robot::SourceKind::kArm;
   o.mapping.mirror = s.value("mirror", false).toBool();
   robot::JointMap* maps[3] = {&o.mapping.j1, &o.mapping.j2, &o.mapping.j3};
   for (int i = 0; i < 3; ++i) {
@@ -602,7 +643,12 @@ void RobotPanel::load(QSettings& s) {
   const QString port = s.value("port").toString();
   const int baud = baud_->findData(s.value("baud", 9600));
   s.endGroup();
+  setMappingKind(saved_kind);
   setPlannerOptions(o);
+  if (plan_.loaded()) {
+    followFileKind(robot::DetectSourceKind(plan_.angles()));
+    replan();
+  }
   if (!port.isEmpty() && !port.contains("(simulated)")) port_->setEditText(port);
   if (baud >= 0) baud_->setCurrentIndex(baud);
 }

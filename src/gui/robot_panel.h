@@ -70,6 +70,8 @@ class RobotPanel : public QWidget {
   void refreshPorts();
   void updateButtons();
   void showPose();
+  void followFileKind(robot::SourceKind kind);
+  void setMappingKind(robot::SourceKind kind);
 
   RobotPlan plan_;
   robot::ControllerProfile profile_;
@@ -84,6 +86,8 @@ class RobotPanel : public QWidget {
   // Plan settings.
   QLabel* source_;
   QCheckBox* mirror_;
+  QLabel* map_labels_[3];
+  robot::SourceKind mapping_kind_ = robot::SourceKind::kArm;  // whose defaults the rows show
   QComboBox* sign_[3];
   QDoubleSpinBox* offset_[3];
   QDoubleSpinBox* cutoff_;

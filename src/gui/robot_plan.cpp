@@ -32,7 +32,6 @@ Status RobotPlan::Plan(const robot::PlannerOptions& options) {
   planned_ = false;
   if (!loaded_) return Status::Error("no angle file: run the analysis first");
   options_ = options;
-  options_.mapping.kind = robot::DetectSourceKind(angles_);
   trajectory_ = robot::Trajectory();
   report_ = robot::PlanReport();
   const Status st = robot::PlanTrajectory(angles_, options_, &trajectory_, &report_);
@@ -47,7 +46,7 @@ bool RobotPlan::MappedPose(int frame, const robot::PlannerOptions& options,
   mapping.kind = robot::DetectSourceKind(angles_);
   for (const AngleRow& row : angles_.rows) {
     if (row.frame != frame) continue;
-    if (!row.ok() || std::isnan(row.upper_deg) && mapping.kind == robot::SourceKind::kArm) {
+    if (!row.ok() || (std::isnan(row.upper_deg) && mapping.kind == robot::SourceKind::kArm)) {
       return false;
     }
     const double yaw = std::isnan(row.yaw_deg) ? 0.0 : row.yaw_deg;
@@ -98,15 +97,9 @@ int RobotPlan::KeyframeForFrame(int frame) const {
 
 Status RobotPlan::ValText(const robot::ControllerProfile& profile, std::string* text) const {
   if (!planned_) return Status::Error("no plan: plan the trajectory first");
-  std::vector<std::string> header = {
-      "source=" + path_,
-      "mapping=" + options_.mapping.Describe(),
-  };
-  char filter[160];
-  std::snprintf(filter, sizeof(filter), "cutoff_hz=%.3g deadband_deg=%.3g min_interval_s=%.3g",
-                options_.cutoff_hz, options_.deadband_deg, options_.min_interval_s);
-  header.push_back(filter);
-  return robot::FormatValProgram(trajectory_, profile, options_.limits, header, text);
+  return robot::FormatValProgram(
+      trajectory_, profile, options_.limits,
+      robot::DescribePlan(path_, angles_, options_, report_, trajectory_), text);
 }
 
 std::string DescribeJointRanges(const robot::PlanReport& report, const robot::JointLimits& limits) {

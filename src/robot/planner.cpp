@@ -6,6 +6,7 @@
 #include <map>
 
 #include "armmimic/core/angles.h"
+#include "armmimic/core/text.h"
 #include "armmimic/robot/filter.h"
 
 namespace armmimic::robot {
@@ -185,6 +186,16 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
     if (!std::isfinite(t[i]) || (i > 0 && !(t[i] > t[i - 1]))) increasing = false;
   }
   double fs = ParseFps(angles.Meta("fps"));
+  // Still images (no frame rate) are spaced by a made-up rate; a low-pass filter over them would
+  // mean nothing, and the default cutoff is not even below half of 1 fps.
+  const bool still_images = !(fs > 0) && n > 1;
+  double cutoff_hz = options.cutoff_hz;
+  if (cutoff_hz > 0 && still_images) {
+    cutoff_hz = 0;
+    Warn(&report, rows[0].frame,
+         "no frame rate (still images): planned without the low-pass filter");
+  }
+  report.filter_cutoff_hz = cutoff_hz;
   if (!increasing) {
     fs = options.fallback_fps;
     for (int i = 0; i < n; ++i) t[i] = i / fs;
@@ -203,9 +214,9 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
     }
   }
   report.sample_rate_hz = fs;
-  if (options.cutoff_hz > 0 && !(options.cutoff_hz < 0.5 * fs)) {
-    return Status::Error("cutoff " + Num(options.cutoff_hz) +
-                         " Hz must be below half the frame rate (" + Num(fs, 3) + " fps)");
+  if (cutoff_hz > 0 && !(cutoff_hz < 0.5 * fs)) {
+    return Status::Error("cutoff " + Num(cutoff_hz) + " Hz must be below half the frame rate (" +
+                         Num(fs, 3) + " fps)");
   }
 
   // 1. Unwrap from the first measured posture and flag impossible jumps.
@@ -278,20 +289,22 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
     const std::string range = "frames " + std::to_string(rows[i].frame) + "-" +
                               std::to_string(rows[j - 1].frame) + " (" + Num(gap_s, 3) + " s" +
                               (has_flag ? ", impossible jump" : "") + ")";
-    if (gap_s > options.max_gap_s + 1e-9 || j > last) {
+    // Still images are separate poses, not samples of one motion: an unreadable view holds the
+    // last readable pose however long the made-up time between views.
+    if ((gap_s > options.max_gap_s + 1e-9 && !still_images) || j > last) {
       long_gaps.push_back(range);
     } else {
       const int a = i - 1, b = j;  // good neighbours
+      const bool interpolate = options.gap == GapMode::kInterpolate && !still_images;
       for (int k = i; k < j; ++k) {
-        const double w = options.gap == GapMode::kInterpolate ? (t[k] - t[a]) / (t[b] - t[a]) : 0.0;
+        const double w = interpolate ? (t[k] - t[a]) / (t[b] - t[a]) : 0.0;
         upper[k] = upper[a] + w * (upper[b] - upper[a]);
         bend[k] = bend[a] + w * (bend[b] - bend[a]);
         yaw[k] =
             (std::isnan(yaw[a]) || std::isnan(yaw[b])) ? yaw[a] : yaw[a] + w * (yaw[b] - yaw[a]);
         ++report.filled_rows;
       }
-      Warn(&report, rows[i].frame,
-           std::string(options.gap == GapMode::kInterpolate ? "interpolated " : "held ") + range);
+      Warn(&report, rows[i].frame, std::string(interpolate ? "interpolated " : "held ") + range);
     }
     i = j;
   }
@@ -317,8 +330,8 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
   }
 
   // 4. Zero-phase low-pass.
-  if (options.cutoff_hz > 0) {
-    for (int j = 0; j < 3; ++j) series[j] = ZeroPhaseLowPass(series[j], fs, options.cutoff_hz);
+  if (cutoff_hz > 0) {
+    for (int j = 0; j < 3; ++j) series[j] = ZeroPhaseLowPass(series[j], fs, cutoff_hz);
   }
 
   // 5. Limits.
@@ -383,6 +396,27 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
   *out = std::move(traj);
   if (report_out) *report_out = std::move(report);
   return Status::Ok();
+}
+
+std::vector<std::string> DescribePlan(const std::string& source, const AngleFile& angles,
+                                      const PlannerOptions& o, const PlanReport& report,
+                                      const Trajectory& trajectory) {
+  return {
+      "source=" + PercentEncode(source) + " engine=" + PercentEncode(angles.Meta("engine", "?")) +
+          " rows=" + std::to_string(report.rows) + " fps=" + Num(report.sample_rate_hz, 3),
+      "mapping=" + report.mapping,
+      "filter cutoff_hz=" + Num(report.filter_cutoff_hz, 3) +
+          " gap=" + (o.gap == GapMode::kHold ? "hold" : "interpolate") +
+          " max_gap_s=" + Num(o.max_gap_s, 3) + " max_jump_deg_s=" + Num(o.max_jump_deg_s, 1),
+      "keyframes deadband_deg=" + Num(o.deadband_deg, 3) +
+          " min_interval_s=" + Num(o.min_interval_s, 3) +
+          " max_interval_s=" + Num(o.max_interval_s, 3) + " clamp=" + (o.clamp ? "yes" : "no") +
+          " on_speed=" + (o.speed == SpeedPolicy::kRefuse ? "refuse" : "stretch"),
+      "plan duration_s=" + Num(trajectory.duration_s(), 3) + " stretch_s=" +
+          Num(report.stretch_s, 3) + " filled_rows=" + std::to_string(report.filled_rows) +
+          " flagged_jumps=" + std::to_string(report.flagged_jumps) +
+          " clamped_rows=" + std::to_string(report.clamped_rows),
+  };
 }
 
 }  // namespace armmimic::robot

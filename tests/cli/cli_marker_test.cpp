@@ -32,6 +32,14 @@ TEST(CliMarker, SynthAnalyzeScore) {
   EXPECT_NE(r.out.find("yaw"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("bend"), std::string::npos) << r.out;
 
+  // The views plan for the robot with no flags: still images get no low-pass filter and an
+  // unreadable view holds the last readable pose.
+  r = test::RunCli({"plan", angles, "-o", dir.file("views.val")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string val = test::ReadFile(dir.file("views.val"));
+  EXPECT_NE(val.find("; filter cutoff_hz=0.000"), std::string::npos) << val.substr(0, 400);
+  EXPECT_NE(r.err.find("without the low-pass filter"), std::string::npos) << r.err;
+
   // A list of files, in the order given.
   const std::string two = dir.file("two.tsv");
   r = test::RunCli({"-q", "analyze", scene + "/views/view_003.png", scene + "/views/view_001.png",

@@ -183,8 +183,18 @@ TEST_F(AnalysisExportTest, MarkerExportEqualsCliAndShowsCandidates) {
   // failing on it; the filter setting stays for the next video.
   EXPECT_TRUE(w.robotPanel()->plan().loaded());
   EXPECT_EQ(w.log()->text().indexOf("cutoff"), -1) << w.log()->text().toStdString();
-  EXPECT_EQ(w.robotPanel()->plan().options().cutoff_hz, 0);
+  EXPECT_TRUE(w.robotPanel()->plan().planned()) << w.log()->text().toStdString();
+  EXPECT_EQ(w.robotPanel()->plan().report().filter_cutoff_hz, 0);
   EXPECT_DOUBLE_EQ(w.robotPanel()->plannerOptions().cutoff_hz, robot::PlannerOptions().cutoff_hz);
+  // The mapping rows switched to the marker defaults (J2 = -bend - 90), and the planned program
+  // is the one `armmimic-cli plan` makes from the same file with no flags.
+  EXPECT_EQ(w.robotPanel()->plannerOptions().mapping.j2.offset_deg, -90);
+  const std::string gui_val = tmp_.file("gui.val");
+  ASSERT_TRUE(w.robotPanel()->exportVal(QString::fromStdString(gui_val)));
+  const CliResult plan = RunCli({"-q", "plan", w.robotPanel()->plan().angle_path(), "-o",
+                                 tmp_.file("cli.val")});
+  ASSERT_EQ(plan.exit_code, 0) << plan.err;
+  EXPECT_EQ(ReadFile(gui_val), ReadFile(tmp_.file("cli.val")));
   ExpectSameAsCli(w, {s.marker_dir + "/views", "--engine", "marker", "--reference",
                       s.marker_dir + "/reference.png"});
 }

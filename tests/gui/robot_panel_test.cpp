@@ -50,6 +50,11 @@ TEST_F(RobotPanelTest, PlansExportsAndSendsToTheSimulatedController) {
 
   const QString val = QString::fromStdString(tmp_.file("plan.val"));
   ASSERT_TRUE(panel->exportVal(val));
+  // The same program `armmimic-cli plan` makes from the analysis' angle file with no flags.
+  const test::CliResult cli = test::RunCli(
+      {"-q", "plan", panel->plan().angle_path(), "-o", tmp_.file("cli.val")});
+  ASSERT_EQ(cli.exit_code, 0) << cli.err;
+  EXPECT_EQ(test::ReadFile(val.toStdString()), test::ReadFile(tmp_.file("cli.val")));
   robot::ValProgram program;
   ASSERT_TRUE(robot::ReadValProgram(val.toStdString(), &program).ok());
   EXPECT_GE(program.lines.size(), keys.size());

@@ -105,7 +105,9 @@ TEST(Planner, DecimationHonoursDeadbandAndMaxInterval) {
     EXPECT_TRUE(moved > o.deadband_deg || dt >= o.max_interval_s - 1e-9 || last)
         << "keyframe " << k << " moved " << moved << " in " << dt;
     EXPECT_LE(dt, o.max_interval_s + 1e-9);
-    if (!last) EXPECT_GE(dt, o.min_interval_s - 1e-9);
+    if (!last) {
+      EXPECT_GE(dt, o.min_interval_s - 1e-9);
+    }
   }
   // Still for 3 s: about one keyframe a second, not 90.
   int still = 0;
@@ -360,6 +362,53 @@ TEST(Planner, HoldsYawWhileTheArmIsBentAndMapsMarkerFiles) {
   EXPECT_NEAR(tr.keyframes.back().joint_deg[1], -90 - 39, 1e-9);
   EXPECT_NEAR(tr.keyframes.back().joint_deg[2], 0, 1e-9);
   EXPECT_NEAR(tr.keyframes.back().joint_deg[0], 10, 1e-9);
+}
+
+// Marker views are still images: no frame rate, every time_s 0. With the default options they
+// are planned unfiltered (the default cutoff cannot be below half of the 1 fps they are spaced
+// at), and an unreadable view holds the last readable pose instead of refusing a "1 s gap".
+TEST(Planner, StillImagesArePlannedUnfilteredAndHoldOverUnreadableViews) {
+  AngleFile views;
+  views.meta = {{"engine", "marker"}};
+  views.has_file_column = true;
+  const double bends[] = {0, 20, kNaN, kNaN, 40, 10, kNaN, 30};
+  for (int i = 0; i < 8; ++i) {
+    AngleRow r;
+    r.frame = i;
+    r.time_s = 0;
+    r.file = "view" + std::to_string(i) + ".png";
+    if (std::isnan(bends[i])) {
+      r.status = RowStatus::kLost;
+    } else {
+      r.status = RowStatus::kOk;
+      r.bend_deg = bends[i];
+      r.yaw_deg = 5;
+    }
+    views.rows.push_back(r);
+  }
+  PlannerOptions o;  // all defaults, as `armmimic-cli plan VIEWS.tsv -o P.val`
+  ASSERT_GT(o.cutoff_hz, 0.5 * o.fallback_fps);
+  Trajectory tr;
+  PlanReport report;
+  const Status st = PlanTrajectory(views, o, &tr, &report);
+  ASSERT_TRUE(st.ok()) << st.message();
+  EXPECT_EQ(report.filter_cutoff_hz, 0);
+  EXPECT_EQ(report.filled_rows, 3);
+  bool said_unfiltered = false;
+  for (const PlanIssue& w : report.warnings) {
+    said_unfiltered = said_unfiltered || w.text.find("without the low-pass") != std::string::npos;
+  }
+  EXPECT_TRUE(said_unfiltered);
+  // Each readable view's pose is reached exactly (no filter); the held views add no new pose.
+  const MappingOptions m = MappingOptions::Default(SourceKind::kMarker);
+  for (const Keyframe& kf : tr.keyframes) {
+    const double b = std::isnan(bends[kf.frame]) ? kNaN : bends[kf.frame];
+    if (std::isnan(b)) continue;
+    EXPECT_NEAR(kf.joint_deg[1], m.Map(kNaN, b, 5)[1], 1e-9) << "view " << kf.frame;
+  }
+  const std::vector<std::string> header = DescribePlan("views.tsv", views, o, report, tr);
+  ASSERT_GE(header.size(), 3u);
+  EXPECT_NE(header[2].find("cutoff_hz=0.000"), std::string::npos) << header[2];
 }
 
 TEST(Planner, DefaultOptionsFollowTheFilesKindButACustomMappingMustMatch) {

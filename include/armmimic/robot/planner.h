@@ -62,6 +62,9 @@ struct PlanReport {
   double source_duration_s = 0;  // first to last used row in the video
   double stretch_s = 0;          // time added by the speed limits
   double sample_rate_hz = 0;
+  // The low-pass cutoff applied: options.cutoff_hz, or 0 for rows with no frame rate (still
+  // images, such as the marker engine's views), which are planned unfiltered.
+  double filter_cutoff_hz = 0;
   JointArray min_deg{};  // range of the keyframes, per joint
   JointArray max_deg{};
   std::string mapping;              // the mapping used (MappingOptions::Describe())
@@ -72,6 +75,12 @@ struct PlanReport {
 // mirror and holds; a changed mapping for the other kind is refused.
 Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Trajectory* out,
                       PlanReport* report);
+
+// The "; key=value" lines that head a planned .val (FormatValProgram's header): the source, the
+// mapping, the filter and keyframe settings and what the plan did. `source` is named as given.
+std::vector<std::string> DescribePlan(const std::string& source, const AngleFile& angles,
+                                      const PlannerOptions& options, const PlanReport& report,
+                                      const Trajectory& trajectory);
 
 // Step 6 and 7 on their own (used by the planner, exposed for tests). `times_s` ascending.
 std::vector<int> SelectKeyframes(const std::vector<double>& times_s,
