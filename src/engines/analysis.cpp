@@ -10,6 +10,7 @@
 
 #include "armmimic/core/image_io.h"
 #include "armmimic/engines/engine.h"
+#include "armmimic/engines/option_fields.h"
 
 namespace armmimic {
 namespace {
@@ -138,6 +139,9 @@ Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
                     {"height", std::to_string(info.size.height)}};
   if (arm_engine) meta.emplace_back("start", std::to_string(options.start));
   for (auto& kv : engine->Describe()) meta.push_back(std::move(kv));
+  // Every parameter changed from its default, under the name `analyze --param` takes, so the
+  // file says how to make it again.
+  for (auto& kv : ChangedEngineOptions(options.engine)) meta.push_back(std::move(kv));
   summary->meta = meta;
   if (on_ready) {
     st = on_ready(meta);
@@ -154,8 +158,8 @@ Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
         return finish(Status::Ok());
       }
       if (!source->Read(&skipped, &st)) {
-        return finish(Status::Error("--start " + std::to_string(options.start) + ": " +
-                                    info.path + " ended after " + std::to_string(i) + " frames" +
+        return finish(Status::Error("--start " + std::to_string(options.start) + ": " + info.path +
+                                    " ended after " + std::to_string(i) + " frames" +
                                     (st ? std::string() : " (" + st.message() + ")")));
       }
     }

@@ -4,6 +4,7 @@
 #include "armmimic/engines/option_fields.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 
 #include "armmimic/core/angle_file.h"
@@ -401,6 +402,47 @@ Status SetEngineOption(const std::string& assignment, EngineOptions* o) {
   if (engine == "marker") return SetField(MarkerOptionFields(), engine, key, value, &o->marker);
   return Status::Error("'" + assignment + "': unknown engine '" + engine +
                        "' (bgsub, lk or marker)");
+}
+
+namespace {
+
+// The exact text of a changed value (doubles in their shortest round-trip form), as
+// SetEngineOption reads it back.
+template <typename O>
+void AppendChanged(const std::vector<OptionField<O>>& fields, const std::string& engine, const O& o,
+                   std::vector<std::pair<std::string, std::string>>* out) {
+  const O defaults;
+  for (const auto& f : fields) {
+    const double v = f.get(o);
+    if (v == f.get(defaults)) continue;
+    std::string text;
+    if (f.kind == OptionKind::kDouble) {
+      char buf[64];
+      const auto r = std::to_chars(buf, buf + sizeof(buf), v);
+      text.assign(buf, r.ptr);
+    } else {
+      text = ValueText(f, v);
+    }
+    out->emplace_back(engine + "." + f.key, text);
+  }
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> ChangedEngineOptions(const EngineOptions& o) {
+  std::vector<std::pair<std::string, std::string>> out;
+  switch (o.kind) {
+    case EngineKind::kBgsub:
+      AppendChanged(BgsubOptionFields(), "bgsub", o.bgsub, &out);
+      break;
+    case EngineKind::kLk:
+      AppendChanged(LkOptionFields(), "lk", o.lk, &out);
+      break;
+    case EngineKind::kMarker:
+      AppendChanged(MarkerOptionFields(), "marker", o.marker, &out);
+      break;
+  }
+  return out;
 }
 
 std::string DescribeEngineOptions(int width) {

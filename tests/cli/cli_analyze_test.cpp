@@ -58,6 +58,38 @@ TEST(CliAnalyze, MjpgSceneMeetsTheAccuracyTarget) {
   EXPECT_LE(report.summary.overall.mae, 3.0) << synth::FormatScoreSummary(report);
 }
 
+// Parameters changed with --param are recorded in the header under the same names, and a run
+// with exactly those recorded settings makes the same file: the header says how to redo it.
+TEST(CliAnalyze, ChangedParametersAreRecordedAndReproduceTheFile) {
+  const std::string dir = SceneDir();
+  const std::vector<std::string> base = {"analyze", dir + "/scene.avi", "--engine", "lk",
+                                         "--background-frames", "45", "--start", "45", "-q"};
+  std::vector<std::string> first = base;
+  for (const char* a : {"--param", "lk.max_corners=150", "--param", "lk.bar_min_score=0.35",
+                        "--param", "lk.use_bar=false", "-o"}) {
+    first.push_back(a);
+  }
+  first.push_back(dir + "/p1.tsv");
+  test::CliResult r = test::RunCli(first);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  AngleFile f;
+  ASSERT_TRUE(ReadAngleFile(dir + "/p1.tsv", &f).ok());
+  EXPECT_EQ(f.Meta("lk.max_corners"), "150");
+  EXPECT_EQ(f.Meta("lk.bar_min_score"), "0.35");
+  EXPECT_EQ(f.Meta("lk.use_bar"), "false");
+  EXPECT_EQ(f.Meta("lk.window_px", "unset"), "unset");  // defaults are not repeated
+  // Redo from the header: every "lk.*" entry becomes a --param.
+  std::vector<std::string> again = base;
+  for (const auto& kv : f.meta) {
+    if (kv.first.rfind("lk.", 0) == 0) again.push_back("--param=" + kv.first + "=" + kv.second);
+  }
+  again.push_back("-o");
+  again.push_back(dir + "/p2.tsv");
+  r = test::RunCli(again);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(test::ReadFile(dir + "/p1.tsv"), test::ReadFile(dir + "/p2.tsv"));
+}
+
 TEST(CliAnalyze, BackgroundCommandWritesTheMeanImage) {
   const std::string dir = SceneDir();
   const std::string bg = dir + "/bg_cli.png";

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "armmimic/core/status.h"
@@ -61,6 +62,10 @@ const OptionField<Options>* FindOptionField(const std::vector<OptionField<Option
 // editors carry). Ints take whole numbers, bools true/false/on/off/1/0, enums a choice name;
 // the value must lie in the field's range. Messages name the key and say what it accepts.
 Status SetEngineOption(const std::string& assignment, EngineOptions* o);
+
+// The parameters of `o`'s engine that differ from their defaults, as ("ENGINE.KEY", "VALUE")
+// pairs that SetEngineOption reads back exactly (the angle file's header records them).
+std::vector<std::pair<std::string, std::string>> ChangedEngineOptions(const EngineOptions& o);
 
 // Every ENGINE.KEY=DEFAULT, one engine per paragraph, wrapped to `width` columns.
 std::string DescribeEngineOptions(int width = 78);
