@@ -1,8 +1,15 @@
 #!/usr/bin/env bash
 # Regenerates docs/cli.md from armmimic-cli's own --help texts, so the page never drifts from
-# the program. Usage: scripts/gen-cli-doc.sh [path/to/armmimic-cli]
+# the program. Usage: scripts/gen-cli-doc.sh [--check] [path/to/armmimic-cli]
+# --check writes nothing and fails (exit 1, with the diff) when docs/cli.md is out of date; the
+# test suite runs it so the page cannot drift.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+check=no
+if [[ "${1:-}" == "--check" ]]; then
+  check=yes
+  shift
+fi
 CLI="${1:-build/bin/armmimic-cli}"
 out=docs/cli.md
 tmp=$(mktemp)
@@ -58,5 +65,15 @@ HEAD
     echo '```'
   done
 } > "$tmp"
+if [[ $check == yes ]]; then
+  if ! diff -u "$out" "$tmp"; then
+    rm -f "$tmp"
+    echo "$out is out of date: run scripts/gen-cli-doc.sh and commit the result" >&2
+    exit 1
+  fi
+  rm -f "$tmp"
+  echo "$out is up to date"
+  exit 0
+fi
 mv "$tmp" "$out"
 echo "wrote $out"
