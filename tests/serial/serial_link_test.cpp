@@ -48,22 +48,38 @@ std::vector<robot::LinkLine> Moves(int count) {
   return lines;
 }
 
+// The emulator on a pseudo-terminal at `time_scale` (1: real controller timing) and a link
+// opened on it with 8N1 at 9600 unless `port` says otherwise.
+struct EmulatorLink {
+  explicit EmulatorLink(double time_scale, PortSettings port = {})
+      : server([time_scale] {
+          sim::EmulatorOptions o;
+          o.time_scale = time_scale;
+          return o;
+        }()),
+        link(robot::LinkSettings{}) {
+    App();
+    const Status started = server.Start();
+    EXPECT_TRUE(started.ok()) << started.message();
+    port.port = server.device_path();
+    const Status s = link.Open(port);
+    EXPECT_TRUE(s.ok()) << s.message();
+    opened = started.ok() && s.ok();
+  }
+  sim::PtyServer server;
+  SerialLink link;
+  bool opened = false;
+};
+
 TEST(SerialLink, StreamsToTheEmulatorAndReportsProgress) {
-  App();
-  sim::EmulatorOptions o;
-  o.time_scale = 0.02;
-  sim::PtyServer server(o);
-  ASSERT_TRUE(server.Start().ok());
-  SerialLink link(robot::LinkSettings{});
   PortSettings port;
-  port.port = server.device_path();
   port.baud = 19200;
   port.stop_bits = 2;
   port.flow = FlowControl::kXonXoff;
-  {
-    const Status s = link.Open(port);
-    ASSERT_TRUE(s.ok()) << s.message();
-  }
+  EmulatorLink e(0.02, port);
+  ASSERT_TRUE(e.opened);
+  SerialLink& link = e.link;
+  sim::PtyServer& server = e.server;
   std::vector<int> acked_lines;
   link.protocol().SetAckCallback([&](const robot::LinkLine& l, const std::vector<std::string>&) {
     acked_lines.push_back(l.line_no);
@@ -93,18 +109,10 @@ TEST(SerialLink, ASettingThePortRefusesIsNamed) {
 }
 
 TEST(SerialLink, CancelStopsTheStreamAndNothingMoreIsWritten) {
-  App();
-  sim::EmulatorOptions o;
-  o.time_scale = 1;
-  sim::PtyServer server(o);
-  ASSERT_TRUE(server.Start().ok());
-  SerialLink link(robot::LinkSettings{});
-  PortSettings port;
-  port.port = server.device_path();
-  {
-    const Status s = link.Open(port);
-    ASSERT_TRUE(s.ok()) << s.message();
-  }
+  EmulatorLink e(1);
+  ASSERT_TRUE(e.opened);
+  SerialLink& link = e.link;
+  sim::PtyServer& server = e.server;
   link.protocol().SetAckCallback([&](const robot::LinkLine& l, const std::vector<std::string>&) {
     if (l.line_no == 2) link.Cancel("stopped by the operator");
   });
@@ -118,18 +126,10 @@ TEST(SerialLink, CancelStopsTheStreamAndNothingMoreIsWritten) {
 }
 
 TEST(SerialLink, PauseHoldsTheNextLineAndEveryReplyLineIsReported) {
-  App();
-  sim::EmulatorOptions o;
-  o.time_scale = 0.02;
-  sim::PtyServer server(o);
-  ASSERT_TRUE(server.Start().ok());
-  SerialLink link(robot::LinkSettings{});
-  PortSettings port;
-  port.port = server.device_path();
-  {
-    const Status s = link.Open(port);
-    ASSERT_TRUE(s.ok()) << s.message();
-  }
+  EmulatorLink e(0.02);
+  ASSERT_TRUE(e.opened);
+  SerialLink& link = e.link;
+  sim::PtyServer& server = e.server;
   QStringList replies;
   QObject::connect(&link, &SerialLink::lineReceived, [&](const QString& line) { replies << line; });
   bool finished = false, ok = false;
