@@ -16,6 +16,7 @@
 #include <QVBoxLayout>
 
 #include "parameter_form.h"
+#include "wheel_guard.h"
 
 namespace armmimic::gui {
 namespace {
@@ -93,6 +94,7 @@ EngineSettingsPanel::EngineSettingsPanel(QWidget* parent)
   connect(shoulder_box_, &QGroupBox::toggled, this, shoulder_changed);
   connect(shoulder_x_, &QDoubleSpinBox::valueChanged, this, shoulder_changed);
   connect(shoulder_y_, &QDoubleSpinBox::valueChanged, this, shoulder_changed);
+  GuardWheel(this);
   updateEnabled();
 }
 

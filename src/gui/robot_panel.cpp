@@ -29,6 +29,7 @@
 #include "robot_link.h"
 #include "robot_preview.h"
 #include "sim_controller.h"
+#include "wheel_guard.h"
 
 namespace armmimic::gui {
 namespace {
@@ -121,6 +122,7 @@ RobotPanel::RobotPanel(QWidget* parent)
     emit sendFinished(ok);
   });
   preview_->setLimits(plannerOptions().limits);
+  GuardWheel(this);
   updateButtons();
 }
 

@@ -6,6 +6,8 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTest>
+#include <QWheelEvent>
+#include <QWidget>
 
 #include "armmimic/synth/arm_scene.h"
 #include "armmimic/synth/marker_scene.h"
@@ -67,6 +69,19 @@ const GuiScenes& GuiTest::scenes() { return *g_scenes; }
 
 bool GuiTest::WaitUntil(const std::function<bool()>& done, int timeout_ms) {
   return QTest::qWaitFor(done, timeout_ms);
+}
+
+void GuiTest::Wheel(QWidget* w, int delta) {
+  // Qt propagates only the window system's wheel events, so the walk up the parents is done
+  // here: each widget gets the event until one accepts it.
+  const QPoint spot = w->mapToGlobal(w->rect().center());
+  for (QWidget* target = w; target;
+       target = target->isWindow() ? nullptr : target->parentWidget()) {
+    QWheelEvent event(QPointF(target->mapFromGlobal(spot)), QPointF(spot), QPoint(),
+                      QPoint(0, delta), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(target, &event);
+    if (event.isAccepted()) return;
+  }
 }
 
 }  // namespace armmimic::test

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 #include <QString>
 
+class QWidget;
+
 #include "test_util.h"
 
 namespace armmimic::test {
@@ -30,6 +32,9 @@ class GuiTest : public ::testing::Test {
   static const GuiScenes& scenes();
   // Pumps the event loop until `done` or the timeout; returns `done()`.
   static bool WaitUntil(const std::function<bool()>& done, int timeout_ms = 20000);
+  // One notch of the mouse wheel (down for negative `delta`) over the middle of `w`, delivered
+  // as the window system does: to `w`, and on to its parents when `w` ignores it.
+  static void Wheel(QWidget* w, int delta = 120);
 
   TempDir tmp_;
 };

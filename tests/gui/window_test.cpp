@@ -1,10 +1,16 @@
 // The window without analysis: playback keys, scrubbing, zoom, the ROI and shoulder tools,
 // saving a frame with its overlay, actions and shortcuts, and remembered settings.
 #include <QAction>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QImage>
 #include <QMenuBar>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
+#include <QSpinBox>
 #include <QTest>
 
 #include "app_actions.h"
@@ -13,6 +19,7 @@
 #include "log_view.h"
 #include "main_window.h"
 #include "playback_bar.h"
+#include "robot_panel.h"
 #include "video_player.h"
 #include "video_view.h"
 
@@ -155,6 +162,53 @@ TEST_F(WindowTest, SettingsAndRecentFilesAreRemembered) {
   const QStringList recent = QSettings().value("recentFiles").toStringList();
   ASSERT_FALSE(recent.isEmpty());
   EXPECT_EQ(recent.first().toStdString(), scenes().video());
+}
+
+TEST_F(WindowTest, ScrollingThePanelsNeverChangesASetting) {
+  MainWindow w;
+  w.resize(1000, 600);  // the Analysis panel is taller than its dock: it scrolls
+  w.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+  auto* scroll = w.findChild<QScrollArea*>("analysisScroll");
+  ASSERT_NE(scroll, nullptr);
+  ASSERT_GT(scroll->verticalScrollBar()->maximum(), 0);
+  auto* engine = w.settingsPanel()->findChild<QComboBox*>("engineCombo");
+  auto* start = w.settingsPanel()->findChild<QSpinBox*>("startFrame");
+  ASSERT_TRUE(engine && start);
+  start->setValue(45);
+  const int engine_before = engine->currentIndex();
+  // The wheel over an editor without the focus scrolls the panel and leaves the value alone.
+  Wheel(start, -120);
+  EXPECT_EQ(start->value(), 45);
+  EXPECT_GT(scroll->verticalScrollBar()->value(), 0);
+  scroll->verticalScrollBar()->setValue(0);
+  Wheel(engine, -120);
+  EXPECT_EQ(engine->currentIndex(), engine_before);
+  // The focused editor takes the wheel, as the operator asked for it.
+  start->setFocus();
+  ASSERT_TRUE(WaitUntil([&] { return start->hasFocus(); }, 2000));
+  Wheel(start, 120);
+  EXPECT_EQ(start->value(), 46);
+
+  // The robot's plan settings: scrolling past the filter cutoff or a mapping sign never
+  // changes the plan.
+  w.findChild<QDockWidget*>("robotDock")->raise();
+  gui::RobotPanel* robot = w.robotPanel();
+  auto* cutoff = robot->findChild<QDoubleSpinBox*>("cutoff");
+  auto* sign = robot->findChild<QComboBox*>("sign2");
+  auto* baud = robot->findChild<QComboBox*>("baudCombo");
+  ASSERT_TRUE(cutoff && sign && baud);
+  const robot::PlannerOptions before = robot->plannerOptions();
+  for (QWidget* editor : {static_cast<QWidget*>(cutoff), static_cast<QWidget*>(sign),
+                          static_cast<QWidget*>(baud)}) {
+    Wheel(editor, -120);
+    Wheel(editor, 120);
+    Wheel(editor, 120);
+  }
+  const robot::PlannerOptions after = robot->plannerOptions();
+  EXPECT_EQ(after.cutoff_hz, before.cutoff_hz);
+  EXPECT_EQ(after.mapping.j2.sign, before.mapping.j2.sign);
+  EXPECT_EQ(baud->currentText(), "9600");
 }
 
 }  // namespace
