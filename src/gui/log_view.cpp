@@ -5,6 +5,9 @@
 #include <QDateTime>
 #include <QHBoxLayout>
 #include <QPlainTextEdit>
+#include <QTextBlock>
+#include <QTextCursor>
+#include <QTextDocument>
 #include <QPushButton>
 #include <QVBoxLayout>
 
@@ -37,14 +40,25 @@ void LogView::append(const QString& prefix, const QString& text) {
 void LogView::info(const QString& text) { append(QString(), text); }
 
 void LogView::error(const QString& text) {
-  auto it = errors_.find(text);
-  if (it != errors_.end()) {
-    ++it.value();
-    return;
+  const int n = ++errors_[text];
+  const QString counted = n > 1 ? QString("%1  (×%2)").arg(text).arg(n) : text;
+  const QString previous = n > 2 ? QString("%1  (×%2)").arg(text).arg(n - 1) : text;
+  if (n > 1 && lastLineIs(tr("error: ") + previous)) {
+    // The same error again: count up on its line instead of adding one.
+    QTextCursor c(edit_->document()->lastBlock());
+    c.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
+    c.insertText(QDateTime::currentDateTime().toString("HH:mm:ss") + "  " + tr("error: ") +
+                 counted);
+  } else {
+    append(tr("error: "), counted);
   }
-  errors_.insert(text, 1);
-  append(tr("error: "), text);
-  emit errorShown(text);
+  emit errorShown(counted);
+}
+
+bool LogView::lastLineIs(const QString& line_end) const {
+  const QString last = edit_->document()->lastBlock().text();
+  // Every line is "HH:mm:ss  " and the message.
+  return last.mid(10) == line_end;
 }
 
 QString LogView::text() const { return edit_->toPlainText(); }

@@ -1,6 +1,6 @@
-// LogView: the application's message area. Every message is selectable and copyable; an error
-// text is shown once (repeats are counted, not repeated), so a failing step never floods the
-// window or opens a storm of modal boxes.
+// LogView: the application's message area. Every message is selectable and copyable. An error
+// is one line, never a modal box: the same error again right after it only counts up on that
+// line ("(×3)"), so a failing step never floods the window, yet every attempt shows.
 #pragma once
 
 #include <QHash>
@@ -17,13 +17,17 @@ class LogView : public QWidget {
   explicit LogView(QWidget* parent = nullptr);
 
   void info(const QString& text);
-  // Shows `text` the first time; later identical errors only bump a counter.
+  // Shows `text`. A repeat of the last line counts up on it; a repeat after other messages is
+  // a new line with its count.
   void error(const QString& text);
+  // Distinct error texts shown since the last clear.
   int errorCount() const { return static_cast<int>(errors_.size()); }
+  // How often `text` was reported since the last clear.
+  int repeats(const QString& text) const { return errors_.value(text); }
   QString text() const;
 
  signals:
-  // A distinct error was shown (not emitted for repeats).
+  // An error was reported: `text`, with "(×N)" from its second time on.
   void errorShown(const QString& text);
 
  public slots:
@@ -32,6 +36,7 @@ class LogView : public QWidget {
 
  private:
   void append(const QString& prefix, const QString& text);
+  bool lastLineIs(const QString& line_end) const;
   QPlainTextEdit* edit_;
   QHash<QString, int> errors_;
 };

@@ -11,6 +11,7 @@
 #include <QScrollBar>
 #include <QSettings>
 #include <QSpinBox>
+#include <QStatusBar>
 #include <QTest>
 
 #include "app_actions.h"
@@ -209,6 +210,29 @@ TEST_F(WindowTest, ScrollingThePanelsNeverChangesASetting) {
   EXPECT_EQ(after.cutoff_hz, before.cutoff_hz);
   EXPECT_EQ(after.mapping.j2.sign, before.mapping.j2.sign);
   EXPECT_EQ(baud->currentText(), "9600");
+}
+
+TEST_F(WindowTest, ARepeatedErrorShowsAgainAndCountsUp) {
+  MainWindow w;
+  w.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+  // F5 with nothing open, twice: one line that counts, and the status bar says it again.
+  EXPECT_FALSE(w.startAnalysis());
+  const QString first = w.statusBar()->currentMessage();
+  EXPECT_NE(first.indexOf("Open a video"), -1) << first.toStdString();
+  w.statusBar()->clearMessage();
+  EXPECT_FALSE(w.startAnalysis());
+  EXPECT_EQ(w.log()->text().count("error: "), 1) << w.log()->text().toStdString();
+  EXPECT_NE(w.log()->text().indexOf("(×2)"), -1) << w.log()->text().toStdString();
+  EXPECT_NE(w.statusBar()->currentMessage().indexOf("(×2)"), -1)
+      << w.statusBar()->currentMessage().toStdString();
+  EXPECT_EQ(w.log()->errorCount(), 1);
+  EXPECT_EQ(w.log()->repeats(first), 2);
+  // After other messages the same error is a new line with its count.
+  w.log()->info("Opened something else");
+  EXPECT_FALSE(w.startAnalysis());
+  EXPECT_EQ(w.log()->text().count("error: "), 2) << w.log()->text().toStdString();
+  EXPECT_TRUE(w.log()->text().endsWith(first + "  (×3)")) << w.log()->text().toStdString();
 }
 
 }  // namespace
