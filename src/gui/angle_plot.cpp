@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <QChart>
+#include <QFontMetricsF>
 #include <QGraphicsLayout>
 #include <QLegend>
 #include <QLegendMarker>
@@ -52,6 +53,7 @@ AnglePlot::AnglePlot(QWidget* parent)
   x_->setTickInterval(1);
   y_->setTitleText(tr("degrees"));
   y_->setRange(-180, 180);
+  y_->setLabelFormat("%.0f");
   y_->setTickCount(9);
   chart->addAxis(x_, Qt::AlignBottom);
   chart->addAxis(y_, Qt::AlignLeft);
@@ -65,6 +67,7 @@ AnglePlot::AnglePlot(QWidget* parent)
   chart->layout()->setContentsMargins(0, 0, 0, 0);
   chart->setBackgroundRoundness(0);
   setChart(chart);
+  connect(chart, &QChart::plotAreaChanged, this, &AnglePlot::fitDegreeTicks);
   setRenderHint(QPainter::Antialiasing);
   setMinimumHeight(200);
   applyTheme();
@@ -107,6 +110,22 @@ void AnglePlot::setFrameRange(int frame_count) {
 }
 
 double AnglePlot::frameTickStep() const { return x_->tickInterval(); }
+
+int AnglePlot::degreeTickCount() const { return y_->tickCount(); }
+
+void AnglePlot::fitDegreeTicks(const QRectF& plot_area) {
+  // Qt Charts cuts a label to "..." when it is taller than the gap between two ticks (the
+  // Angles dock's default height gave 9 labels 11 px apart).
+  const double label_px = QFontMetricsF(y_->labelsFont()).height() * 1.3;
+  int ticks = 3;  // -180, 0, 180
+  for (int n : {9, 7, 5}) {  // every 45, 60 or 90 degrees
+    if (plot_area.height() / (n - 1) >= label_px) {
+      ticks = n;
+      break;
+    }
+  }
+  if (ticks != y_->tickCount()) y_->setTickCount(ticks);
+}
 
 void AnglePlot::setResults(const ResultStore& results) {
   QList<QPointF> upper, fore, yaw, bend, lost;

@@ -28,6 +28,9 @@ class AnglePlot : public QChartView {
   int bendCount() const;  // points on the bend series (marker views)
   // The frame axis' label step: 1, 2, 5, 10, 20, ... so that every label is a whole frame.
   double frameTickStep() const;
+  // Labels on the degree axis: every 45° when the plot is tall enough, else every 60°, 90° or
+  // 180°, so that no label is cut to "...".
+  int degreeTickCount() const;
   // Frame under a widget position (rounded), for clicks.
   int frameAt(const QPointF& widget_pos) const;
 
@@ -40,6 +43,7 @@ class AnglePlot : public QChartView {
 
  private:
   void applyTheme();
+  void fitDegreeTicks(const QRectF& plot_area);
   QLineSeries* upper_;
   QLineSeries* fore_;
   QLineSeries* yaw_;

@@ -1,0 +1,59 @@
+// The angle plot as the operator reads it: the degree labels stay readable at any height of the
+// Angles dock.
+#include <QGraphicsScene>
+#include <QGraphicsTextItem>
+#include <QStringList>
+#include <QTest>
+
+#include "angle_plot.h"
+#include "gui_fixture.h"
+
+namespace armmimic::test {
+namespace {
+
+using gui::AnglePlot;
+
+class AnglePlotTest : public GuiTest {
+ protected:
+  // Every text the chart draws (axis labels and titles, legend).
+  static QStringList Texts(const AnglePlot& plot) {
+    QStringList out;
+    for (QGraphicsItem* item : plot.scene()->items()) {
+      if (auto* text = dynamic_cast<QGraphicsTextItem*>(item); text && text->isVisible()) {
+        out << text->toPlainText();
+      }
+    }
+    return out;
+  }
+  static bool AnyCut(const QStringList& texts) {
+    for (const QString& t : texts) {
+      if (t.contains("...") || t.contains(QChar(0x2026))) return true;
+    }
+    return false;
+  }
+};
+
+TEST_F(AnglePlotTest, DegreeLabelsAreNeverCutWhateverTheHeight) {
+  AnglePlot plot;
+  plot.setFrameRange(255);
+  plot.resize(900, 200);  // the Angles dock's height on a first start
+  plot.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&plot));
+  ASSERT_TRUE(WaitUntil([&] { return plot.degreeTickCount() < 9; }, 5000));
+  QTest::qWait(50);
+  QStringList texts = Texts(plot);
+  EXPECT_TRUE(texts.contains("180")) << texts.join('|').toStdString();
+  EXPECT_TRUE(texts.contains("-180")) << texts.join('|').toStdString();
+  EXPECT_FALSE(AnyCut(texts)) << texts.join('|').toStdString();
+
+  // Taller: a label every 45 degrees, still whole.
+  plot.resize(900, 600);
+  ASSERT_TRUE(WaitUntil([&] { return plot.degreeTickCount() == 9; }, 5000));
+  QTest::qWait(50);
+  texts = Texts(plot);
+  EXPECT_TRUE(texts.contains("135")) << texts.join('|').toStdString();
+  EXPECT_FALSE(AnyCut(texts)) << texts.join('|').toStdString();
+}
+
+}  // namespace
+}  // namespace armmimic::test
