@@ -174,6 +174,11 @@ void AnglePlot::mousePressEvent(QMouseEvent* event) {
   QChartView::mousePressEvent(event);
 }
 
+void AnglePlot::changeEvent(QEvent* event) {
+  QChartView::changeEvent(event);
+  if (event->type() == QEvent::PaletteChange) applyTheme();
+}
+
 void AnglePlot::mouseMoveEvent(QMouseEvent* event) {
   if ((event->buttons() & Qt::LeftButton) && chart()->plotArea().contains(event->position())) {
     emit frameClicked(frameAt(event->position()));

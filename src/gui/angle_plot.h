@@ -40,6 +40,8 @@ class AnglePlot : public QChartView {
  protected:
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
+  // A switch between the dark and the light scheme while running repaints the chart in it.
+  void changeEvent(QEvent* event) override;
 
  private:
   void applyTheme();

@@ -1,7 +1,10 @@
 // The angle plot as the operator reads it: the degree labels stay readable at any height of the
 // Angles dock.
 #include <QGraphicsScene>
+#include <QChart>
 #include <QGraphicsTextItem>
+#include <QImage>
+#include <QPalette>
 #include <QStringList>
 #include <QTest>
 
@@ -53,6 +56,22 @@ TEST_F(AnglePlotTest, DegreeLabelsAreNeverCutWhateverTheHeight) {
   texts = Texts(plot);
   EXPECT_TRUE(texts.contains("135")) << texts.join('|').toStdString();
   EXPECT_FALSE(AnyCut(texts)) << texts.join('|').toStdString();
+}
+
+TEST_F(AnglePlotTest, FollowsASchemeSwitchWhileRunning) {
+  AnglePlot plot;
+  plot.resize(600, 300);
+  plot.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&plot));
+  QPalette dark = plot.palette();
+  dark.setColor(QPalette::Window, QColor(0x30, 0x30, 0x30));
+  dark.setColor(QPalette::Base, QColor(0x20, 0x20, 0x20));
+  dark.setColor(QPalette::WindowText, QColor(0xee, 0xee, 0xee));
+  dark.setColor(QPalette::Text, QColor(0xee, 0xee, 0xee));
+  plot.setPalette(dark);  // what a switch of the desktop's scheme delivers
+  EXPECT_EQ(plot.chart()->backgroundBrush().color(), QColor(0x20, 0x20, 0x20));
+  const QImage shot = plot.grab().toImage();
+  EXPECT_LT(QColor(shot.pixel(shot.width() / 2, shot.height() / 2)).lightness(), 80);
 }
 
 }  // namespace
