@@ -68,13 +68,20 @@ OverlayTexts MakeOverlayTexts(const ArmMeasurement* m, int frame_index, int fram
   return t;
 }
 
+double OverlayUnit(QSize image_size) { return std::max(1.0, image_size.height() / 240.0); }
+
 void PaintOverlay(QPainter& p, QSize image_size, const ArmMeasurement* m, int frame_index,
                   int frame_count, const OverlayOptions& o) {
+  PaintOverlayShapes(p, image_size, m, o);
+  PaintOverlayTexts(p, QRectF(QPointF(0, 0), QSizeF(image_size)), OverlayUnit(image_size), m,
+                    frame_index, frame_count, o);
+}
+
+void PaintOverlayShapes(QPainter& p, QSize image_size, const ArmMeasurement* m,
+                        const OverlayOptions& o) {
   p.save();
   p.setRenderHint(QPainter::Antialiasing);
-  const double unit = std::max(1.0, image_size.height() / 240.0);  // 1 at 320x240
-  const OverlayTexts texts = MakeOverlayTexts(m, frame_index, frame_count);
-
+  const double unit = OverlayUnit(image_size);
   if (m) {
     if (o.contour && m->arm_contour.size() > 2) {
       QPolygonF poly;
@@ -148,32 +155,41 @@ void PaintOverlay(QPainter& p, QSize image_size, const ArmMeasurement* m, int fr
       p.drawRect(QRectF(s - QPointF(3.5 * unit, 3.5 * unit), QSizeF(7 * unit, 7 * unit)));
     }
   }
+  p.restore();
+}
 
+void PaintOverlayTexts(QPainter& p, const QRectF& area, double unit, const ArmMeasurement* m,
+                       int frame_index, int frame_count, const OverlayOptions& o) {
+  p.save();
+  p.setRenderHint(QPainter::Antialiasing);
+  const OverlayTexts texts = MakeOverlayTexts(m, frame_index, frame_count);
   QFont font = p.font();
   font.setPointSizeF(8.0 * unit);
   font.setBold(true);
   p.setFont(font);
   const QFontMetricsF fm(font);
   const double margin = 4 * unit;
-  const double w = image_size.width();
-  const double h = image_size.height();
-  if (o.frame_count) HaloText(p, QPointF(margin, margin + fm.ascent()), texts.frame, Qt::white);
+  const double x0 = area.left() + margin;
+  const double x1 = area.right() - margin;
+  const double y0 = area.top() + margin;
+  const double y1 = area.bottom() - margin;
+  const double ymid = area.center().y();
+  if (o.frame_count) HaloText(p, QPointF(x0, y0 + fm.ascent()), texts.frame, Qt::white);
   if (m && o.yaw) {
-    HaloText(p, QPointF(w - margin - fm.horizontalAdvance(texts.yaw), h / 2), texts.yaw, Qt::white);
+    HaloText(p, QPointF(x1 - fm.horizontalAdvance(texts.yaw), ymid), texts.yaw, Qt::white);
   }
   if (m && o.orientation && IsMarkerView(*m)) {
     const QString bend = "bend " + Deg(m->bend_deg);
-    HaloText(p, QPointF(w - margin - fm.horizontalAdvance(bend), h - margin - fm.descent()), bend,
-             kMarker);
+    HaloText(p, QPointF(x1 - fm.horizontalAdvance(bend), y1 - fm.descent()), bend, kMarker);
   } else if (m && o.orientation) {
     const QString upper = "upper " + Deg(m->upper_deg);
     const QString fore = "fore " + Deg(m->fore_deg);
-    const double y2 = h - margin - fm.descent();
-    HaloText(p, QPointF(w - margin - fm.horizontalAdvance(fore), y2), fore, kFore);
-    HaloText(p, QPointF(w - margin - fm.horizontalAdvance(upper), y2 - fm.height()), upper, kUpper);
+    const double y2 = y1 - fm.descent();
+    HaloText(p, QPointF(x1 - fm.horizontalAdvance(fore), y2), fore, kFore);
+    HaloText(p, QPointF(x1 - fm.horizontalAdvance(upper), y2 - fm.height()), upper, kUpper);
   }
   if (m && m->phase == MeasurementPhase::kLost) {
-    HaloText(p, QPointF(margin, h - margin - fm.descent()), "lost", QColor(255, 90, 90));
+    HaloText(p, QPointF(x0, y1 - fm.descent()), "lost", QColor(255, 90, 90));
   }
   p.restore();
 }

@@ -36,8 +36,19 @@ struct OverlayTexts {
 OverlayTexts MakeOverlayTexts(const ArmMeasurement* m, int frame_index, int frame_count);
 
 // Paints over an image of `image_size` pixels (the painter maps image pixels). `m` may be null
-// (no result for this frame): only the frame count is drawn.
+// (no result for this frame): only the frame count is drawn. Shapes, then the texts at the
+// image's corners: the saved frame.
 void PaintOverlay(QPainter& painter, QSize image_size, const ArmMeasurement* m, int frame_index,
                   int frame_count, const OverlayOptions& options);
+
+// The two halves of PaintOverlay, for a view that zooms and pans: the shapes in image pixels,
+// and the texts at the corners of `area` (in the painter's units) with `unit` as the size of one
+// image pixel at 320x240 (letters 8 units high), so they stay readable at any zoom.
+void PaintOverlayShapes(QPainter& painter, QSize image_size, const ArmMeasurement* m,
+                        const OverlayOptions& options);
+void PaintOverlayTexts(QPainter& painter, const QRectF& area, double unit, const ArmMeasurement* m,
+                       int frame_index, int frame_count, const OverlayOptions& options);
+// One unit of the overlay for an image of `image_size`: 1 at 240 rows, more for taller frames.
+double OverlayUnit(QSize image_size);
 
 }  // namespace armmimic::gui

@@ -114,8 +114,8 @@ void VideoView::paintEvent(QPaintEvent*) {
   p.setTransform(imageToWidget());
   p.setRenderHint(QPainter::SmoothPixmapTransform, zoom_ < 1.0);
   p.drawImage(QPointF(0, 0), image_);
-  PaintOverlay(p, image_.size(), measurement_ ? &*measurement_ : nullptr, frame_index_,
-               frame_count_, overlay_);
+  const ArmMeasurement* m = measurement_ ? &*measurement_ : nullptr;
+  PaintOverlayShapes(p, image_.size(), m, overlay_);
   const double px = 1.0 / zoom_;  // one screen pixel in image units
   if (roi_) {
     p.setPen(QPen(QColor(42, 130, 218), 2 * px, Qt::DashLine));
@@ -132,6 +132,16 @@ void VideoView::paintEvent(QPaintEvent*) {
     p.drawLine(*shoulder_ - QPointF(10 * px, 0), *shoulder_ + QPointF(10 * px, 0));
     p.drawLine(*shoulder_ - QPointF(0, 10 * px), *shoulder_ + QPointF(0, 10 * px));
   }
+  // The texts at the corners of the part of the frame in view, at their size when the frame
+  // fits: zoomed in or panned, the frame count, yaw and angles stay on screen and readable.
+  p.resetTransform();
+  PaintOverlayTexts(p, textArea(), OverlayUnit(image_.size()) * std::min(zoom_, fitZoom()), m,
+                    frame_index_, frame_count_, overlay_);
+}
+
+QRectF VideoView::textArea() const {
+  if (image_.isNull()) return QRectF();
+  return imageToWidget().mapRect(QRectF(image_.rect())).intersected(QRectF(rect()));
 }
 
 void VideoView::wheelEvent(QWheelEvent* event) {

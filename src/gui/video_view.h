@@ -38,6 +38,8 @@ class VideoView : public QWidget {
   // naming the file.
   QString saveWithOverlay(const QString& path) const;
   double zoom() const { return zoom_; }
+  // Where the overlay's texts go, in widget pixels: the part of the frame in view.
+  QRectF textArea() const;
   // Widget position <-> image pixel.
   QPointF toImage(const QPointF& widget_pos) const;
   QPointF toWidget(const QPointF& image_px) const;

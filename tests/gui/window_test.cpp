@@ -235,5 +235,35 @@ TEST_F(WindowTest, ARepeatedErrorShowsAgainAndCountsUp) {
   EXPECT_TRUE(w.log()->text().endsWith(first + "  (×3)")) << w.log()->text().toStdString();
 }
 
+TEST_F(WindowTest, ZoomedInTheOverlayTextsStayInViewAtTheirSize) {
+  gui::VideoView view;
+  view.resize(640, 480);
+  view.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
+  QImage grey(320, 240, QImage::Format_RGB888);
+  grey.fill(QColor(128, 128, 128));
+  view.setFrame(grey, 12, 100);  // no measurement: the frame count is the only text
+  // White letters (the frame count) in the view's upper left quarter.
+  auto white_upper_left = [&] {
+    const QImage shot = view.grab().toImage();
+    int n = 0;
+    for (int y = 0; y < shot.height() / 4; ++y) {
+      for (int x = 0; x < shot.width() / 2; ++x) {
+        const QColor c(shot.pixel(x, y));
+        n += c.red() > 230 && c.green() > 230 && c.blue() > 230 ? 1 : 0;
+      }
+    }
+    return n;
+  };
+  const int at_fit = white_upper_left();
+  ASSERT_GT(at_fit, 30);
+  for (int i = 0; i < 8; ++i) view.zoomIn();  // about 6x: the frame's corner is far off screen
+  EXPECT_GT(view.zoom(), 5.0);
+  EXPECT_TRUE(QRectF(view.rect()).contains(view.textArea()));
+  const int zoomed = white_upper_left();
+  EXPECT_GT(zoomed, at_fit / 2);
+  EXPECT_LT(zoomed, at_fit * 2);  // not blown up with the zoom
+}
+
 }  // namespace
 }  // namespace armmimic::test
