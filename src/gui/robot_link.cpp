@@ -16,9 +16,17 @@ RobotLink::RobotLink(QObject* parent)
     if (!sending_) return;
     sending_ = false;
     const robot::LinkProtocol& p = link_->protocol();
-    emit finished(
-        ok, ok ? QString("%1: sent %2 lines").arg(QString::fromStdString(source_)).arg(p.total())
-               : QString::fromStdString(p.error_message()));
+    const QString source = QString::fromStdString(source_);
+    if (ok) {
+      emit finished(true, QString("%1: sent %2 lines").arg(source).arg(p.total()));
+    } else if (aborted_) {
+      emit finished(false, QString("%1: aborted by the operator after %2 of %3 lines")
+                               .arg(source)
+                               .arg(p.acknowledged())
+                               .arg(p.total()));
+    } else {
+      emit finished(false, QString::fromStdString(p.error_message()));
+    }
   });
 }
 
@@ -80,6 +88,7 @@ bool RobotLink::send(const robot::ValProgram& program, const robot::ControllerPr
     return st ? std::string() : st.message();
   });
   sending_ = true;
+  aborted_ = false;
   emit progress(0, static_cast<int>(lines.size()));
   link_->Start(std::move(lines), program.source_name);
   return true;
@@ -90,7 +99,9 @@ void RobotLink::setPaused(bool paused) {
 }
 
 void RobotLink::abort() {
-  if (sending_) link_->Cancel("aborted by the operator");
+  if (!sending_) return;
+  aborted_ = true;
+  link_->Cancel("aborted by the operator");
 }
 
 }  // namespace armmimic::gui

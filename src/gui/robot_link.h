@@ -36,6 +36,8 @@ class RobotLink : public QObject {
   void setPaused(bool paused);
   void abort();
   int acknowledged() const;
+  // The last send ended because the operator aborted it (not a controller or port fault).
+  bool wasAborted() const { return aborted_; }
 
  signals:
   void connectedChanged(bool connected, const QString& device);
@@ -48,6 +50,7 @@ class RobotLink : public QObject {
   serial::SerialLink* link_;
   QString device_;
   bool sending_ = false;
+  bool aborted_ = false;
   std::string source_;
   robot::SafetyState safety_;
 };

@@ -112,7 +112,7 @@ RobotPanel::RobotPanel(QWidget* parent)
     send_progress_->setValue(done);
   });
   connect(link_, &RobotLink::finished, this, [this](bool ok, const QString& msg) {
-    if (ok) {
+    if (ok || link_->wasAborted()) {  // an abort is the operator's own choice, not a fault
       emit message(msg);
     } else {
       emit errorOccurred(msg);

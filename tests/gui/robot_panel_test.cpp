@@ -2,6 +2,7 @@
 // the .val, and send to the built-in simulated controller over a pseudo-terminal.
 #include <QFileInfo>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QTest>
 
 #include "analysis_job.h"
@@ -114,8 +115,15 @@ TEST_F(RobotPanelTest, PauseHoldsTheSendAndAbortStopsIt) {
   abort->click();
   ASSERT_TRUE(WaitUntil([&] { return finished; }, 5000));
   EXPECT_FALSE(ok);
-  EXPECT_NE(w.log()->text().indexOf("aborted by the operator"), -1)
+  // Said as what happened and how far it got, not raised as a fault.
+  const int acked_at_end = panel->link()->acknowledged();
+  EXPECT_NE(w.log()->text().indexOf(QRegularExpression("aborted by the operator after \\d+ of "
+                                                       "\\d+ lines")),
+            -1)
       << w.log()->text().toStdString();
+  EXPECT_NE(w.log()->text().indexOf(QString("after %1 of").arg(acked_at_end)), -1)
+      << w.log()->text().toStdString();
+  EXPECT_EQ(w.log()->errorCount(), 0) << w.log()->text().toStdString();
   EXPECT_LT(panel->simulator()->movesExecuted(),
             static_cast<int>(panel->plan().trajectory().keyframes.size()));
   EXPECT_FALSE(panel->link()->isSending());
