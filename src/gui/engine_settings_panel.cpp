@@ -75,6 +75,10 @@ EngineSettingsPanel::EngineSettingsPanel(QWidget* parent)
   connect(engine_, &QComboBox::currentIndexChanged, this, [this](int i) {
     pages_->setCurrentIndex(i);
     updateEnabled();
+    // The marker engine takes no region or shoulder: the video stops showing them, and shows
+    // them again for an arm engine.
+    emit roiChanged(options().roi);
+    emit shoulderChanged(options().shoulder_px);
     emit changed();
   });
   for (auto* spin : inputs->findChildren<QAbstractSpinBox*>()) {

@@ -25,6 +25,8 @@ class VideoView : public QWidget {
   const OverlayOptions& overlayOptions() const { return overlay_; }
   void setRoi(const std::optional<QRect>& roi);
   void setShoulder(const std::optional<QPointF>& shoulder_px);
+  const std::optional<QRect>& roi() const { return roi_; }
+  const std::optional<QPointF>& shoulder() const { return shoulder_; }
   void setTool(Tool tool);
   Tool tool() const { return tool_; }
 

@@ -95,8 +95,22 @@ TEST_F(WindowTest, RoiAndShoulderToolsFillTheAnalysisOptions) {
   EXPECT_NEAR(o2.shoulder_px->x, 180, 1.5);
   EXPECT_NEAR(o2.shoulder_px->y, 90, 1.5);
 
+  // The marker engine ignores both: the video stops drawing them, and draws them again for
+  // an arm engine.
+  EXPECT_TRUE(v->roi().has_value());
+  EXPECT_TRUE(v->shoulder().has_value());
+  auto* engine = w.settingsPanel()->findChild<QComboBox*>("engineCombo");
+  engine->setCurrentIndex(engine->findData(int(EngineKind::kMarker)));
+  EXPECT_FALSE(v->roi().has_value());
+  EXPECT_FALSE(v->shoulder().has_value());
+  engine->setCurrentIndex(engine->findData(int(EngineKind::kLk)));
+  ASSERT_TRUE(v->roi().has_value());
+  EXPECT_NEAR(v->roi()->x(), 100, 2);
+  EXPECT_TRUE(v->shoulder().has_value());
+
   w.actions()->clearRoi->trigger();
   EXPECT_FALSE(w.settingsPanel()->options().roi.has_value());
+  EXPECT_FALSE(v->roi().has_value());
   // Zoom keeps the image point under the view's centre mapping consistent.
   const double before = v->zoom();
   w.actions()->zoomIn->trigger();
