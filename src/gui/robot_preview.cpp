@@ -1,5 +1,6 @@
 #include "robot_preview.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <QPainter>
@@ -47,8 +48,8 @@ void RobotPreview::paintEvent(QPaintEvent*) {
   const QColor faint = pal.color(QPalette::Mid);
   const QList<int> bad = violatingJoints();
   const double w = width() / 2.0;
-  const double h = height() - 2 * fontMetrics().height();
-  const double top = fontMetrics().height();
+  const double h = drawingArea().height();
+  const double top = drawingArea().top();
   const double link = std::min(w, h) * 0.23;  // upper arm and forearm, same length
 
   // Side view: the arm in the plane J1 turns. Elevation from hanging = -J2, elbow adds -J3.
@@ -105,7 +106,7 @@ void RobotPreview::paintEvent(QPaintEvent*) {
     p.drawEllipse(base, 5, 5);
   }
   // Joint values; out-of-limit ones red.
-  const double y = height() - fontMetrics().descent() - 2;
+  const double y = valuesArea().bottom() - fontMetrics().descent();
   double x = 4;
   for (int j = 0; j < robot::kJoints; ++j) {
     const QString t = QString("J%1 %2").arg(j + 1).arg(pose_[j], 0, 'f', 1);
@@ -115,10 +116,23 @@ void RobotPreview::paintEvent(QPaintEvent*) {
   }
   if (!caption_.isEmpty()) {
     p.setPen(faint);
-    p.drawText(
-        QRectF(0, height() - 2 * fontMetrics().height() - 2, width() - 4, fontMetrics().height()),
-        Qt::AlignRight, caption_);
+    p.drawText(captionArea(), Qt::AlignRight | Qt::AlignVCenter, caption_);
   }
+}
+
+QRectF RobotPreview::drawingArea() const {
+  const double row = fontMetrics().height();
+  return QRectF(0, row, width(), std::max(0.0, height() - 3 * row - 2));
+}
+
+QRectF RobotPreview::captionArea() const {
+  const double row = fontMetrics().height();
+  return QRectF(0, height() - 2 * row - 2, width() - 4, row);
+}
+
+QRectF RobotPreview::valuesArea() const {
+  const double row = fontMetrics().height();
+  return QRectF(0, height() - row - 2, width(), row);
 }
 
 }  // namespace armmimic::gui

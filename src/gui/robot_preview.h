@@ -21,6 +21,11 @@ class RobotPreview : public QWidget {
   QList<int> violatingJoints() const;
   QSize sizeHint() const override { return {360, 200}; }
   QSize minimumSizeHint() const override { return {240, 140}; }
+  // The widget's rows, top to bottom: the view titles, the two views, the caption (what the
+  // pose is: a video frame, the plan, the controller) and the joint values. No two overlap.
+  QRectF drawingArea() const;
+  QRectF captionArea() const;
+  QRectF valuesArea() const;
 
  protected:
   void paintEvent(QPaintEvent*) override;

@@ -155,5 +155,20 @@ TEST_F(RobotPanelTest, ViolationsAreShownBeforeAnythingMoves) {
   EXPECT_FALSE(panel->link()->isSending());
 }
 
+TEST_F(RobotPanelTest, PreviewCaptionHasItsOwnRow) {
+  gui::RobotPreview preview;
+  preview.setPose({0, -45, -30, 0, 0, 0}, "frame 170 (mapped, unfiltered)");
+  preview.show();
+  for (const QSize size : {QSize(240, 140), QSize(396, 170), QSize(400, 320)}) {
+    SCOPED_TRACE(size.width());
+    preview.resize(size);
+    // The caption sat on the top view's circle; now the views end above it.
+    EXPECT_GT(preview.drawingArea().height(), 50);
+    EXPECT_LE(preview.drawingArea().bottom(), preview.captionArea().top());
+    EXPECT_LE(preview.captionArea().bottom(), preview.valuesArea().top());
+    EXPECT_LE(preview.valuesArea().bottom(), preview.height());
+  }
+}
+
 }  // namespace
 }  // namespace armmimic::test
