@@ -35,6 +35,8 @@ QAction* AppActions::toggle(const QString& text, const QKeySequence& key, const 
 AppActions::AppActions(QObject* parent) : QObject(parent) {
   open = make(tr("&Open video or images…"), QKeySequence::Open, "actionOpen");
   open->setIcon(MakeIcon(IconKind::kOpen));
+  openFolder = make(tr("Open &folder of images…"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_O),
+                    "actionOpenFolder");
   camera = make(tr("Capture from &camera…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O),
                 "actionCamera");
   camera->setIcon(MakeIcon(IconKind::kCamera));
@@ -118,7 +120,7 @@ AppActions::AppActions(QObject* parent) : QObject(parent) {
 void AppActions::populate(QMainWindow* w, const QList<QAction*>& dock_toggles) {
   QMenuBar* bar = w->menuBar();
   QMenu* file = bar->addMenu(tr("&File"));
-  file->addActions({open, camera});
+  file->addActions({open, openFolder, camera});
   recent_menu_ = file->addMenu(tr("Open &recent"));
   recent_menu_->setObjectName("recentMenu");
   file->addSeparator();

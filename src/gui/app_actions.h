@@ -32,6 +32,7 @@ class AppActions : public QObject {
 
   // File.
   QAction* open;
+  QAction* openFolder;
   QAction* camera;
   QAction* saveFrame;
   QAction* exportAngles;

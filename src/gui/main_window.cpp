@@ -104,6 +104,10 @@ void MainWindow::wireActions() {
   AppActions* a = actions_;
   connect(a->open, &QAction::triggered, this,
           [this] { openInputs(AskInputs(this, RecentFiles::lastDir())); });
+  connect(a->openFolder, &QAction::triggered, this, [this] {
+    const QString folder = AskImageFolder(this, RecentFiles::lastDir());
+    if (!folder.isEmpty()) openInputs({folder});
+  });
   connect(a->camera, &QAction::triggered, this, [this] {
     if (auto source = AskCamera(this)) openInputs({*source});
   });

@@ -16,6 +16,10 @@ QStringList AskInputs(QWidget* parent, const QString& dir) {
                   "*.tiff);;All files (*)"));
 }
 
+QString AskImageFolder(QWidget* parent, const QString& dir) {
+  return QFileDialog::getExistingDirectory(parent, QObject::tr("Open a folder of images"), dir);
+}
+
 std::optional<QString> AskCamera(QWidget* parent) {
   bool ok = false;
   const QString src =

@@ -12,6 +12,8 @@ class QWidget;
 namespace armmimic::gui {
 
 QStringList AskInputs(QWidget* parent, const QString& dir);
+// A folder whose images are the views, in name order; "" when cancelled.
+QString AskImageFolder(QWidget* parent, const QString& dir);
 // "camera:N" for an index, the URL as typed otherwise; nullopt when cancelled.
 std::optional<QString> AskCamera(QWidget* parent);
 // A file to write; "" when cancelled.

@@ -1,9 +1,11 @@
 // The window without analysis: playback keys, scrubbing, zoom, the ROI and shoulder tools,
 // saving a frame with its overlay, actions and shortcuts, and remembered settings.
 #include <QAction>
+#include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QFileDialog>
 #include <QFileInfo>
 #include <QImage>
 #include <QMenuBar>
@@ -13,6 +15,7 @@
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QTest>
+#include <QTimer>
 
 #include "app_actions.h"
 #include "engine_settings_panel.h"
@@ -277,6 +280,33 @@ TEST_F(WindowTest, ZoomedInTheOverlayTextsStayInViewAtTheirSize) {
   const int zoomed = white_upper_left();
   EXPECT_GT(zoomed, at_fit / 2);
   EXPECT_LT(zoomed, at_fit * 2);  // not blown up with the zoom
+}
+
+TEST_F(WindowTest, FileOpenFolderOpensTheImagesInIt) {
+  MainWindow w;
+  w.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+  const QString folder = QString::fromStdString(scenes().marker_dir + "/views");
+  bool answered = false;
+  QTimer poll;
+  QObject::connect(&poll, &QTimer::timeout, [&] {
+    auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+    if (!dialog) return;
+    poll.stop();
+    EXPECT_EQ(dialog->fileMode(), QFileDialog::Directory);
+    dialog->setDirectory(folder);
+    QMetaObject::invokeMethod(dialog, "accept");  // the Choose button
+    answered = true;
+  });
+  poll.start(10);
+  w.actions()->openFolder->trigger();  // File > Open folder of images…
+  ASSERT_TRUE(answered);
+  ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen() && !w.view()->image().isNull(); }))
+      << w.log()->text().toStdString();
+  EXPECT_EQ(QFileInfo(w.player()->inputs().value(0)).canonicalFilePath(),
+            QFileInfo(folder).canonicalFilePath());
+  EXPECT_EQ(w.player()->frameCount(), 6);  // every view in the folder
+  EXPECT_EQ(w.log()->errorCount(), 0) << w.log()->text().toStdString();
 }
 
 }  // namespace
