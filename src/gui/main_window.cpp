@@ -1,5 +1,7 @@
 #include "main_window.h"
 
+#include <cmath>
+
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -309,7 +311,8 @@ void MainWindow::refreshViews() {
 void MainWindow::updateStatus() {
   if (!player_->isOpen() && !job_->isRunning()) return status_->showNoVideo();
   const OverlayTexts t = view_->overlayTexts();
-  status_->showFrame(t.frame, time_s_, t.state);
+  const bool still = player_->isOpen() && !player_->isLive() && player_->info().fps <= 0;
+  status_->showFrame(t.frame, still ? std::nan("") : time_s_, t.state);
 }
 
 void MainWindow::restoreSettings() {

@@ -68,7 +68,10 @@ void PlaybackBar::setPosition(int frame, double time_s) {
     slider_->setValue(frame);
   }
   const QString total = count_ > 0 ? QString::number(count_ - 1) : QStringLiteral("–");
-  label_->setText(QString("%1 / %2  %3 s").arg(frame).arg(total).arg(time_s, 0, 'f', 2));
+  // Still images have no frame rate, so no time.
+  label_->setText(fps_ > 0 || count_ <= 0
+                      ? QString("%1 / %2  %3 s").arg(frame).arg(total).arg(time_s, 0, 'f', 2)
+                      : QString("%1 / %2").arg(frame).arg(total));
 }
 
 int PlaybackBar::position() const { return slider_->value(); }

@@ -1,5 +1,7 @@
 #include "status_line.h"
 
+#include <cmath>
+
 #include <QLabel>
 #include <QProgressBar>
 #include <QStatusBar>
@@ -28,7 +30,11 @@ void StatusLine::setFrameText(const QString& text) { frame_->setText(text); }
 QString StatusLine::frameText() const { return frame_->text(); }
 
 void StatusLine::showFrame(const QString& frame, double time_s, const QString& state) {
-  frame_->setText(QString("%1   %2 s   %3").arg(frame).arg(time_s, 0, 'f', 2).arg(state));
+  if (std::isnan(time_s)) {  // still images: no time
+    frame_->setText(QString("%1   %2").arg(frame, state));
+  } else {
+    frame_->setText(QString("%1   %2 s   %3").arg(frame).arg(time_s, 0, 'f', 2).arg(state));
+  }
 }
 
 void StatusLine::showNoVideo() { frame_->setText(tr("No video")); }

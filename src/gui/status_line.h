@@ -18,6 +18,7 @@ class StatusLine : public QObject {
 
   void setFrameText(const QString& text);
   // "frame 12 / 99   0.40 s   ok"; with no video, "No video".
+  // `time_s` NaN (still images) shows no time.
   void showFrame(const QString& frame, double time_s, const QString& state);
   void showNoVideo();
   QString frameText() const;

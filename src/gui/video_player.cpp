@@ -20,6 +20,13 @@ QImage ImageFromMat(const cv::Mat& mat) {
 }
 
 QString DescribeSource(const VideoInfo& info) {
+  if (info.kind != SourceKind::kCamera && info.codec.empty()) {  // still images: no frame rate
+    return QString("%1: %2 images, %3×%4")
+        .arg(QString::fromStdString(info.path))
+        .arg(info.frame_count)
+        .arg(info.size.width)
+        .arg(info.size.height);
+  }
   const QString what = info.kind == SourceKind::kCamera ? QStringLiteral("camera")
                        : info.codec.empty()             ? QStringLiteral("images")
                                                         : QString::fromStdString(info.codec);

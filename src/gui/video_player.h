@@ -17,7 +17,7 @@
 namespace armmimic::gui {
 
 QImage ImageFromMat(const cv::Mat& bgr);  // deep copy of a CV_8UC3 BGR or CV_8UC1 image
-// "scene.avi: 300 frames, 30 fps, 320×240 (MJPG)"
+// "scene.avi: 300 frames, 30 fps, 320×240 (MJPG)"; "views: 48 images, 320×240"
 QString DescribeSource(const VideoInfo& info);
 
 // Lives on the decoder thread.

@@ -8,6 +8,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QImage>
+#include <QLabel>
 #include <QMenuBar>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -24,6 +25,7 @@
 #include "main_window.h"
 #include "playback_bar.h"
 #include "robot_panel.h"
+#include "status_line.h"
 #include "video_player.h"
 #include "video_view.h"
 
@@ -307,6 +309,13 @@ TEST_F(WindowTest, FileOpenFolderOpensTheImagesInIt) {
             QFileInfo(folder).canonicalFilePath());
   EXPECT_EQ(w.player()->frameCount(), 6);  // every view in the folder
   EXPECT_EQ(w.log()->errorCount(), 0) << w.log()->text().toStdString();
+  // Still images have no frame rate: counted as images, with no time beside the frame.
+  EXPECT_NE(w.log()->text().indexOf("6 images, "), -1) << w.log()->text().toStdString();
+  EXPECT_EQ(w.log()->text().indexOf("0 fps"), -1) << w.log()->text().toStdString();
+  const QString bar = w.playbackBar()->findChild<QLabel*>("frameLabel")->text();
+  EXPECT_EQ(bar, "0 / 5") << bar.toStdString();
+  EXPECT_EQ(w.statusLine()->frameText().indexOf(" s "), -1)
+      << w.statusLine()->frameText().toStdString();
 }
 
 }  // namespace
