@@ -227,6 +227,7 @@ void MainWindow::wireAnalysis() {
     if (ok && !job_->resultPath().isEmpty()) {
       log_->info(job_->describeResult(cancelled));
       robot_->setAngleFile(job_->resultPath());
+      findChild<QDockWidget*>("plotDock")->raise();  // the angles just measured, not old errors
     }
   });
 }

@@ -6,6 +6,8 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QSpinBox>
+#include <QTabBar>
+#include <QTest>
 #include <QToolButton>
 
 #include "analysis_job.h"
@@ -242,6 +244,8 @@ TEST_F(AnalysisExportTest, CancelKeepsTheWindowResponsiveAndMarksTheFileIncomple
 
 TEST_F(AnalysisExportTest, BadInputIsReportedOnceAndNamed) {
   MainWindow w;
+  w.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
   EXPECT_FALSE(w.exportAngles(QString::fromStdString(tmp_.file("x.tsv"))));
   EXPECT_FALSE(w.exportAngles(QString::fromStdString(tmp_.file("x.tsv"))));
   EXPECT_EQ(w.log()->errorCount(), 1);
@@ -262,6 +266,24 @@ TEST_F(AnalysisExportTest, BadInputIsReportedOnceAndNamed) {
   }
   EXPECT_NE(w.log()->text().indexOf("no-arm.png"), -1) << w.log()->text().toStdString();
   EXPECT_TRUE(w.job()->resultPath().isEmpty());
+  // The error brought Messages to the front; the corrected run brings its angles back.
+  auto bottom_tab = [&] {  // the tab in front in the Angles | Messages dock area
+    for (QTabBar* bar : w.findChildren<QTabBar*>()) {
+      for (int i = 0; i < bar->count(); ++i) {
+        if (bar->tabText(i) == "Messages") return bar->tabText(bar->currentIndex());
+      }
+    }
+    return QString();
+  };
+  EXPECT_EQ(bottom_tab(), "Messages");
+  o.arm_length_path = s.arm_length();
+  o.start = s.background_frames;
+  o.engine.bgsub.standstill_frames = s.standstill_frames;
+  w.settingsPanel()->setOptions(o);
+  ASSERT_TRUE(w.startAnalysis()) << w.log()->text().toStdString();
+  ASSERT_TRUE(WaitUntil([&] { return !w.job()->isRunning(); }, 60000));
+  ASSERT_FALSE(w.job()->resultPath().isEmpty()) << w.log()->text().toStdString();
+  EXPECT_EQ(bottom_tab(), "Angles");
 }
 
 }  // namespace
