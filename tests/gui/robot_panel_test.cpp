@@ -13,6 +13,7 @@
 #include "main_window.h"
 #include "robot_link.h"
 #include "robot_panel.h"
+#include "robot_plan.h"
 #include "robot_preview.h"
 #include "sim_controller.h"
 #include "video_player.h"
@@ -168,6 +169,17 @@ TEST_F(RobotPanelTest, PreviewCaptionHasItsOwnRow) {
     EXPECT_LE(preview.captionArea().bottom(), preview.valuesArea().top());
     EXPECT_LE(preview.valuesArea().bottom(), preview.height());
   }
+}
+
+TEST_F(RobotPanelTest, ConfirmationRangesNeverSayMinusZero) {
+  robot::PlanReport report;
+  for (int j = 0; j < robot::kJoints; ++j) report.min_deg[j] = report.max_deg[j] = 0;
+  report.min_deg[1] = -151.7;
+  report.max_deg[1] = -0.0;   // the arm hanging, reached from below
+  report.max_deg[2] = -0.02;  // rounds to zero
+  const std::string text = gui::DescribeJointRanges(report, robot::JointLimits());
+  EXPECT_EQ(text.find("-0.0"), std::string::npos) << text;
+  EXPECT_NE(text.find("-151.7 ..      0.0"), std::string::npos) << text;
 }
 
 }  // namespace
