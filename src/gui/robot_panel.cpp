@@ -1,5 +1,6 @@
 #include "robot_panel.h"
 
+#include <cmath>
 #include <sstream>
 
 #include <QCheckBox>
@@ -205,7 +206,30 @@ QWidget* RobotPanel::makePlanBox() {
   }
   for (auto* c : box->findChildren<QCheckBox*>())
     connect(c, &QCheckBox::toggled, this, replan_later);
-  connect(limits_, &QTableWidget::itemChanged, this, replan_later);
+  shown_limits_ = d.limits;
+  connect(limits_, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
+    // A cell holds a number of degrees (or degrees per second); anything else is put back.
+    double* columns[3] = {shown_limits_.min_deg.data(), shown_limits_.max_deg.data(),
+                        shown_limits_.max_speed_deg_s.data()};
+    double& kept = columns[item->column()][item->row()];
+    bool ok = false;
+    const double v = item->text().trimmed().toDouble(&ok);
+    if (!ok || !std::isfinite(v)) {
+      const QString typed = item->text();
+      {
+        const QSignalBlocker block(limits_);
+        item->setText(QString::number(kept));
+      }
+      emit errorOccurred(tr("Limits: '%1' is not a number; J%2 %3 stays %4")
+                             .arg(typed)
+                             .arg(item->row() + 1)
+                             .arg(limits_->horizontalHeaderItem(item->column())->text())
+                             .arg(kept));
+      return;
+    }
+    kept = v;
+    if (plan_.loaded()) replan();
+  });
   return box;
 }
 
@@ -361,6 +385,7 @@ void RobotPanel::setPlannerOptions(const robot::PlannerOptions& o) {
   max_gap_->setValue(o.max_gap_s);
   clamp_->setChecked(o.clamp);
   const QSignalBlocker block(limits_);
+  shown_limits_ = o.limits;
   for (int j = 0; j < robot::kJoints; ++j) {
     limits_->item(j, 0)->setText(QString::number(o.limits.min_deg[j]));
     limits_->item(j, 1)->setText(QString::number(o.limits.max_deg[j]));

@@ -96,6 +96,7 @@ class RobotPanel : public QWidget {
   QDoubleSpinBox* max_gap_;
   QCheckBox* clamp_;
   QTableWidget* limits_;
+  robot::JointLimits shown_limits_;  // what the table's cells say, kept when a cell is not a number
   QLabel* report_;
   QPushButton* animate_button_;
   // Link.

@@ -1,8 +1,13 @@
 // The robot side: plan from the analysis, see limit violations before anything moves, export
 // the .val, and send to the built-in simulated controller over a pseudo-terminal.
 #include <QFileInfo>
+#include <QApplication>
+#include <QDockWidget>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QTabWidget>
+#include <QTableWidget>
 #include <QTest>
 
 #include "analysis_job.h"
@@ -154,6 +159,43 @@ TEST_F(RobotPanelTest, ViolationsAreShownBeforeAnythingMoves) {
       << w.log()->text().toStdString();
   // Nothing was sent, nothing connected.
   EXPECT_FALSE(panel->link()->isSending());
+}
+
+TEST_F(RobotPanelTest, ALimitThatIsNotANumberIsPutBack) {
+  MainWindow w;
+  w.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+  Analyze(w);
+  gui::RobotPanel* panel = w.robotPanel();
+  ASSERT_TRUE(panel->plan().planned()) << w.log()->text().toStdString();
+  auto* table = panel->findChild<QTableWidget*>("limitsTable");
+  ASSERT_NE(table, nullptr);
+  w.findChild<QDockWidget*>("robotDock")->raise();
+  panel->findChild<QTabWidget*>("robotTabs")->setCurrentIndex(0);  // Plan
+  ASSERT_TRUE(WaitUntil([&] { return table->isVisible(); }, 2000));
+  // Type into the J2 max cell as the operator does: double-click, type, Return.
+  auto type_into = [&](int row, int column, const QString& text) {
+    QTableWidgetItem* item = table->item(row, column);
+    table->scrollToItem(item);
+    table->setCurrentItem(item);
+    table->editItem(item);
+    auto* editor = qobject_cast<QLineEdit*>(QApplication::focusWidget());
+    ASSERT_NE(editor, nullptr);
+    ASSERT_TRUE(table->isAncestorOf(editor));
+    editor->selectAll();
+    QTest::keyClicks(editor, text);
+    QTest::keyClick(editor, Qt::Key_Return);
+    QTest::qWait(20);  // the delegate commits on the next turn of the event loop
+  };
+  type_into(1, 1, "abc");
+  // Read as 0 before: J2 max 0 refused the plan with a message about frames, not the typing.
+  EXPECT_EQ(table->item(1, 1)->text(), "20");
+  EXPECT_EQ(panel->plannerOptions().limits.max_deg[1], 20);
+  EXPECT_TRUE(panel->plan().planned());
+  EXPECT_NE(w.log()->text().indexOf("'abc' is not a number; J2 max ° stays 20"), -1)
+      << w.log()->text().toStdString();
+  type_into(1, 1, "15");
+  EXPECT_EQ(panel->plannerOptions().limits.max_deg[1], 15);
 }
 
 TEST_F(RobotPanelTest, PreviewCaptionHasItsOwnRow) {
