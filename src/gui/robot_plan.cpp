@@ -35,7 +35,10 @@ Status RobotPlan::Plan(const robot::PlannerOptions& options) {
   trajectory_ = robot::Trajectory();
   report_ = robot::PlanReport();
   const Status st = robot::PlanTrajectory(angles_, options_, &trajectory_, &report_);
-  if (!st) return Status::Error(path_ + ": " + st.message());
+  // Named by what the operator analysed: the angle file itself is a temporary one.
+  if (!st) {
+    return Status::Error("the analysis of " + angles_.Meta("source", "?") + ": " + st.message());
+  }
   planned_ = true;
   return Status::Ok();
 }

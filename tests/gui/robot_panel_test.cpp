@@ -157,6 +157,11 @@ TEST_F(RobotPanelTest, ViolationsAreShownBeforeAnythingMoves) {
   EXPECT_EQ(w.log()->errorCount(), 1);
   EXPECT_NE(w.log()->text().indexOf("Nothing to send: the plan was refused: "), -1)
       << w.log()->text().toStdString();
+  // Named by the video analysed, not by the temporary angle file behind the plan.
+  EXPECT_NE(w.log()->text().indexOf("the analysis of scene.avi: "), -1)
+      << w.log()->text().toStdString();
+  EXPECT_EQ(w.log()->text().indexOf(QString::fromStdString(panel->plan().angle_path())), -1)
+      << w.log()->text().toStdString();
   // Nothing was sent, nothing connected.
   EXPECT_FALSE(panel->link()->isSending());
 }
