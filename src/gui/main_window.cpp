@@ -180,6 +180,7 @@ void MainWindow::wireActions() {
     bar_->setFrameCount(info.frame_count, info.fps);
     plot_->setFrameRange(info.frame_count);
     log_->info(tr("Opened %1").arg(DescribeSource(info)));
+    statusBar()->clearMessage();  // an earlier error is not about this input
     updateStatus();
   });
   connect(player_, &VideoPlayer::error, log_, &LogView::error);

@@ -247,8 +247,14 @@ TEST_F(WindowTest, ARepeatedErrorShowsAgainAndCountsUp) {
       << w.statusBar()->currentMessage().toStdString();
   EXPECT_EQ(w.log()->errorCount(), 1);
   EXPECT_EQ(w.log()->repeats(first), 2);
+  // Opening an input clears the status bar's error: it is not about the new input.
+  w.openInputs({QString::fromStdString(scenes().video())});
+  ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen(); }));
+  EXPECT_TRUE(w.statusBar()->currentMessage().isEmpty())
+      << w.statusBar()->currentMessage().toStdString();
+  EXPECT_NE(w.statusLine()->frameText().indexOf("frame 0"), -1);
   // After other messages the same error is a new line with its count.
-  w.log()->info("Opened something else");
+  w.player()->close();
   EXPECT_FALSE(w.startAnalysis());
   EXPECT_EQ(w.log()->text().count("error: "), 2) << w.log()->text().toStdString();
   EXPECT_TRUE(w.log()->text().endsWith(first + "  (×3)")) << w.log()->text().toStdString();
