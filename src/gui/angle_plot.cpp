@@ -117,7 +117,7 @@ void AnglePlot::fitDegreeTicks(const QRectF& plot_area) {
   // Qt Charts cuts a label to "..." when it is taller than the gap between two ticks (the
   // Angles dock's default height gave 9 labels 11 px apart).
   const double label_px = QFontMetricsF(y_->labelsFont()).height() * 1.3;
-  int ticks = 3;  // -180, 0, 180
+  int ticks = 3;             // -180, 0, 180
   for (int n : {9, 7, 5}) {  // every 45, 60 or 90 degrees
     if (plot_area.height() / (n - 1) >= label_px) {
       ticks = n;

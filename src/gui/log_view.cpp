@@ -5,10 +5,10 @@
 #include <QDateTime>
 #include <QHBoxLayout>
 #include <QPlainTextEdit>
+#include <QPushButton>
 #include <QTextBlock>
 #include <QTextCursor>
 #include <QTextDocument>
-#include <QPushButton>
 #include <QVBoxLayout>
 
 namespace armmimic::gui {

@@ -210,7 +210,7 @@ QWidget* RobotPanel::makePlanBox() {
   connect(limits_, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
     // A cell holds a number of degrees (or degrees per second); anything else is put back.
     double* columns[3] = {shown_limits_.min_deg.data(), shown_limits_.max_deg.data(),
-                        shown_limits_.max_speed_deg_s.data()};
+                          shown_limits_.max_speed_deg_s.data()};
     double& kept = columns[item->column()][item->row()];
     bool ok = false;
     const double v = item->text().trimmed().toDouble(&ok);

@@ -193,8 +193,8 @@ TEST_F(AnalysisExportTest, MarkerExportEqualsCliAndShowsCandidates) {
   EXPECT_EQ(w.robotPanel()->plannerOptions().mapping.j2.offset_deg, -90);
   const std::string gui_val = tmp_.file("gui.val");
   ASSERT_TRUE(w.robotPanel()->exportVal(QString::fromStdString(gui_val)));
-  const CliResult plan = RunCli({"-q", "plan", w.robotPanel()->plan().angle_path(), "-o",
-                                 tmp_.file("cli.val")});
+  const CliResult plan =
+      RunCli({"-q", "plan", w.robotPanel()->plan().angle_path(), "-o", tmp_.file("cli.val")});
   ASSERT_EQ(plan.exit_code, 0) << plan.err;
   EXPECT_EQ(ReadFile(gui_val), ReadFile(tmp_.file("cli.val")));
   ExpectSameAsCli(w, {s.marker_dir + "/views", "--engine", "marker", "--reference",

@@ -1,7 +1,7 @@
 // The angle plot as the operator reads it: the degree labels stay readable at any height of the
 // Angles dock.
-#include <QGraphicsScene>
 #include <QChart>
+#include <QGraphicsScene>
 #include <QGraphicsTextItem>
 #include <QImage>
 #include <QPalette>

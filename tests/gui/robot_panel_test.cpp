@@ -1,8 +1,8 @@
 // The robot side: plan from the analysis, see limit violations before anything moves, export
 // the .val, and send to the built-in simulated controller over a pseudo-terminal.
-#include <QFileInfo>
 #include <QApplication>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -58,8 +58,8 @@ TEST_F(RobotPanelTest, PlansExportsAndSendsToTheSimulatedController) {
   const QString val = QString::fromStdString(tmp_.file("plan.val"));
   ASSERT_TRUE(panel->exportVal(val));
   // The same program `armmimic-cli plan` makes from the analysis' angle file with no flags.
-  const test::CliResult cli = test::RunCli(
-      {"-q", "plan", panel->plan().angle_path(), "-o", tmp_.file("cli.val")});
+  const test::CliResult cli =
+      test::RunCli({"-q", "plan", panel->plan().angle_path(), "-o", tmp_.file("cli.val")});
   ASSERT_EQ(cli.exit_code, 0) << cli.err;
   EXPECT_EQ(test::ReadFile(val.toStdString()), test::ReadFile(tmp_.file("cli.val")));
   robot::ValProgram program;

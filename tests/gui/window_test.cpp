@@ -219,8 +219,8 @@ TEST_F(WindowTest, ScrollingThePanelsNeverChangesASetting) {
   auto* baud = robot->findChild<QComboBox*>("baudCombo");
   ASSERT_TRUE(cutoff && sign && baud);
   const robot::PlannerOptions before = robot->plannerOptions();
-  for (QWidget* editor : {static_cast<QWidget*>(cutoff), static_cast<QWidget*>(sign),
-                          static_cast<QWidget*>(baud)}) {
+  for (QWidget* editor :
+       {static_cast<QWidget*>(cutoff), static_cast<QWidget*>(sign), static_cast<QWidget*>(baud)}) {
     Wheel(editor, -120);
     Wheel(editor, 120);
     Wheel(editor, 120);
