@@ -5,6 +5,10 @@
 #include <opencv2/imgproc.hpp>
 
 namespace armmimic::lk {
+namespace {
+// Pieces of the person at least this fraction of the largest one widen the body box.
+constexpr double kPieceOfLargest = 0.1;
+}  // namespace
 
 BodyBox FindBodyBox(const cv::Mat& background, const cv::Mat& standstill,
                     const LkOptions& options) {
@@ -35,9 +39,20 @@ BodyBox FindBodyBox(const cv::Mat& background, const cv::Mat& standstill,
   // A body smaller than 0.5 % of the picture is noise, not a person.
   if (best < 0 || best_area < 0.005 * mask.total()) return out;
   out.found = true;
-  out.box =
-      cv::Rect(stats.at<int>(best, cv::CC_STAT_LEFT), stats.at<int>(best, cv::CC_STAT_TOP),
-               stats.at<int>(best, cv::CC_STAT_WIDTH), stats.at<int>(best, cv::CC_STAT_HEIGHT));
+  const auto box_of = [&](int i) {
+    return cv::Rect(stats.at<int>(i, cv::CC_STAT_LEFT), stats.at<int>(i, cv::CC_STAT_TOP),
+                    stats.at<int>(i, cv::CC_STAT_WIDTH), stats.at<int>(i, cv::CC_STAT_HEIGHT));
+  };
+  out.box = box_of(best);
+  if (!options.thesis_mode) {
+    // A shirt close to the wall's colour splits the person into pieces (head, hands, trousers);
+    // every large piece belongs to the box.
+    for (int i = 1; i < n; ++i) {
+      if (i != best && stats.at<int>(i, cv::CC_STAT_AREA) >= kPieceOfLargest * best_area) {
+        out.box |= box_of(i);
+      }
+    }
+  }
   const double height =
       options.thesis_mode ? options.shoulder_height : options.anchored_shoulder_height;
   const double inset =
