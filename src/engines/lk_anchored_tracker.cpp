@@ -92,11 +92,16 @@ class AnchoredTracker : public Tracker {
     fore_deg_ = Wrap180(o_.initial_fore_deg);
     side_ = shoulders_.size() == 1 ? 0 : -1;
     feats_.clear();
+    bar_widths_[kUpper].clear();
+    bar_widths_[kFore].clear();
     frame_ = 0;
     side_lengths_.assign(shoulders_.size(), cv::Vec3d(arm_len_, lu_, lf_));
     upper_bar_.assign(shoulders_.size(), ArmBar());
     fore_bar_.assign(shoulders_.size(), ArmBar());
     bar_bias_.assign(shoulders_.size(), cv::Vec2d(0, 0));
+    start_half_width_.assign(shoulders_.size(), cv::Vec2d(0, 0));
+    sleeve_measured_.assign(shoulders_.size(), false);
+    reach_ = 1;
     for (int s = 0; s < static_cast<int>(shoulders_.size()); ++s) {
       shoulder_ = shoulders_[s];
       SetPoseMotions();
@@ -111,7 +116,10 @@ class AnchoredTracker : public Tracker {
       UseSideLengths(0);
     }
     shoulder_start_ = shoulder_;
-    refine_shoulder_ = o_.refine_shoulder && !start.shoulder_fixed;
+    refine_shoulder_ = o_.refine_shoulder;
+    // A shoulder given by the user (a click) is only nudged onto the sleeves' lines.
+    shoulder_reach_ =
+        (start.shoulder_fixed ? kGivenShoulderReach : kBodyBoxShoulderReach) * arm_len_;
     line_a_ = cv::Matx22d::zeros();
     line_b_ = cv::Vec2d(0, 0);
     line_count_ = 0;
@@ -146,7 +154,8 @@ class AnchoredTracker : public Tracker {
     LearnElbow();
     const bool sparse =
         CountPart(kUpper) < o_.min_part_features || CountPart(kFore) < o_.min_part_features;
-    if (frame_ - last_seed_ >= o_.reseed_interval || (sparse && frame_ - last_seed_ >= 1)) {
+    if (reach_ == 1 &&
+        (frame_ - last_seed_ >= o_.reseed_interval || (sparse && frame_ - last_seed_ >= 1))) {
       Seed(gray, side_, 1.1);
       last_seed_ = frame_;
     }
@@ -158,13 +167,14 @@ class AnchoredTracker : public Tracker {
   // when the arm starts straight, its length (shoulder to cuff) for the elbow prior.
   void LearnBars(const cv::Mat& bgr, int side) {
     if (!o_.use_bar || bgr.empty()) return;
-    const double max_hw = std::max(3.0, 0.15 * arm_len_);
+    const double max_hw = MaxHalfWidth();
     upper_bar_[side] = LearnArmBar(bgr, shoulder_, upper_deg_, lu_, max_hw);
     const double prior_len = arm_len_, prior_lu = lu_, prior_lf = lf_;
     if (upper_bar_[side].valid && std::abs(AngleDiff(fore_deg_, upper_deg_)) < 5) {
       const double sleeve =
           MeasureBarLength(bgr, upper_bar_[side], shoulder_, upper_deg_, 1.6 * arm_len_);
       if (sleeve > 0.5 * arm_len_ && sleeve < 1.5 * arm_len_) {
+        sleeve_measured_[side] = true;
         arm_len_ = sleeve;
         lu_ = o_.upper_fraction * arm_len_;
         lf_ = arm_len_ - lu_;
@@ -173,6 +183,8 @@ class AnchoredTracker : public Tracker {
       }
     }
     fore_bar_[side] = LearnArmBar(bgr, Elbow(), fore_deg_, lf_, max_hw);
+    start_half_width_[side] =
+        cv::Vec2d(upper_bar_[side].half_width_px, fore_bar_[side].half_width_px);
     side_lengths_[side] = cv::Vec3d(arm_len_, lu_, lf_);
     arm_len_ = prior_len;
     lu_ = prior_lu;
@@ -191,9 +203,12 @@ class AnchoredTracker : public Tracker {
     tu_ = PartMotion(upper_deg_, shoulder_);
     tf_ = PartMotion(fore_deg_, Elbow());
   }
-  cv::Point2d Elbow() const { return tu_.Apply({lu_, 0}); }
-  cv::Point2d Wrist() const { return tf_.Apply({lf_, 0}); }
+  // The joints as seen: a straight arm turned out of the picture is shorter by reach_.
+  cv::Point2d Elbow() const { return tu_.Apply({reach_ * lu_, 0}); }
+  cv::Point2d Wrist() const { return tf_.Apply({reach_ * lf_, 0}); }
   double HalfWidth() const { return std::max(3.0, o_.arm_width_ratio * arm_len_); }
+  // Widest half-width a sleeve is looked for across.
+  double MaxHalfWidth() const { return std::max(3.0, 0.15 * arm_len_); }
 
   void TrackFeatures(const cv::Mat& gray) {
     std::vector<cv::Point2f> pts, next;
@@ -298,21 +313,70 @@ class AnchoredTracker : public Tracker {
   // surroundings (over the wall, not in front of the body in the same cloth).
   // For the forearm (`avoid_fold`), directions folded back onto the upper arm beyond
   // `max_bend_deg` are not searched: there the forearm's strip lies on the upper arm's sleeve.
-  // Near its starting direction a part's sleeve reading is corrected by the bias found at the
-  // known starting posture (CalibrateBars), fading out over kBiasFadeDeg.
+  // Sets axis_[part] when the sleeve's axis was found (CentreArmBar).
   double RefineWithBar(const cv::Mat& bgr, int part, const cv::Point2d& joint_px, double deg,
-                       double length_px, bool* used, double range_deg = 0) const {
+                       double length_px, bool* used, double range_deg = 0) {
     *used = false;
-    const ArmBar& bar = part == kUpper ? upper_bar_[side_] : fore_bar_[side_];
-    if (!o_.use_bar || !bar.valid) return deg;
+    axis_[part] = BarAxis();
+    const ArmBar& learned = part == kUpper ? upper_bar_[side_] : fore_bar_[side_];
+    if (!o_.use_bar || !learned.valid) return deg;
+    // Near the starting direction, where the sleeve lies against the body, the search runs as at
+    // the start (the width read then) so that the lean measured then (CalibrateBars) applies,
+    // fading out over kBiasFadeDeg; only a sleeve clear on both sides is centred there.
+    const double start_deg = part == kUpper ? o_.initial_upper_deg : o_.initial_fore_deg;
+    const bool near_start = std::abs(AngleDiff(deg, start_deg)) < kBiasFadeDeg;
+    ArmBar bar = learned;
+    if (near_start) bar.half_width_px = start_half_width_[side_][part];
     const BarSearch r = SearchArmBar(
         bgr, bar, joint_px, deg, length_px, range_deg > 0 ? range_deg : o_.bar_search_deg,
         o_.bar_min_score, Wrap180(upper_deg_ + 180), part == kFore ? 180 - o_.max_bend_deg : 0);
     if (!r.found) return deg;
     *used = true;
-    const double start_deg = part == kUpper ? o_.initial_upper_deg : o_.initial_fore_deg;
+    // The search's best strip may lean inside a sleeve wider than the strip; the sleeve's own
+    // centre line gives the direction.
     const double fade = 1 - std::abs(AngleDiff(r.deg, start_deg)) / kBiasFadeDeg;
+    axis_[part] = CentreArmBar(bgr, learned, joint_px, r.deg, length_px, MaxHalfWidth(), fade <= 0);
+    if (axis_[part].found) return axis_[part].deg;
     return fade > 0 ? Wrap180(r.deg - fade * bar_bias_[side_][part]) : r.deg;
+  }
+
+  // A straight arm turned towards or away from the camera looks shorter: its sleeve, measured
+  // from the shoulder along the upper arm, ends before the length it had at the start. The joints
+  // are then placed on the shorter arm (reach_ < 1), so the forearm is searched where it is seen.
+  // Only when the sleeve's length was read at a straight start and its end now is clear. Entered
+  // from a straight arm (a bent arm's sleeve also ends early, at the elbow); left when the sleeve
+  // is long again (here) or the forearm is found bent (FitPose).
+  void UpdateReach(const cv::Mat& bgr, double upper_deg, double bend_deg) {
+    if (!sleeve_measured_[side_]) return;
+    if (!upper_bar_used_) return;  // no sleeve to measure in this frame: keep the last reach
+    double beyond = 1;
+    const double run =
+        MeasureBarLength(bgr, upper_bar_[side_], shoulder_, upper_deg, 1.6 * arm_len_, &beyond);
+    // A sleeve that fades into its surroundings (a shirt close to the wall's colour) gives no
+    // length.
+    const double k = beyond < kClearEnd ? run / arm_len_ : 1;
+    const bool straight = std::abs(bend_deg) < kStraightStartDeg;
+    const bool shortened = k < kShortReach && (straight || reach_ < 1);
+    reach_ = shortened ? std::max(kMinReach, k) : 1;
+  }
+
+  // The sleeve's width read at the start is a guess: against the body only its outer half shows,
+  // from an axis that may be off centre. Wherever the part stands clear (its sleeve ends on both
+  // sides), the width is measured across it; the median of the latest such readings becomes the
+  // bar's width. A width read too narrow makes the flanks fall inside the sleeve, so the search
+  // prefers a strip along either edge and the direction flips by several degrees frame to frame.
+  void LearnBarWidth(const cv::Mat& bgr, int part, const cv::Point2d& joint_px, double deg,
+                     double length_px) {
+    ArmBar& bar = part == kUpper ? upper_bar_[side_] : fore_bar_[side_];
+    const double hw = MeasureBarHalfWidth(bgr, bar, joint_px, deg, length_px, MaxHalfWidth());
+    if (hw <= 0) return;
+    std::vector<double>& seen = bar_widths_[part];
+    seen.push_back(hw);
+    if (seen.size() > kWidthReadings) seen.erase(seen.begin());
+    if (seen.size() >= kMinWidthReadings) {
+      bar.half_width_px = std::max(1.5, Median(seen));
+      bar.width_measured = true;
+    }
   }
 
   // The sleeve search in the known starting posture: where a sleeve lies against the body in
@@ -333,28 +397,15 @@ class AnchoredTracker : public Tracker {
   }
 
   // The shoulder from the body box is a rule of thumb; the upper arm's sleeve, wherever it stands
-  // clear, lies on a line through the true shoulder. Each such line (the best direction and
-  // sideways shift of the bar) is accumulated, and the shoulder becomes their least-squares
-  // intersection once lines at different angles are in. Returns the direction refined about it.
-  double RefineShoulder(const cv::Mat& bgr, double deg) {
-    const ArmBar& bar = upper_bar_[side_];
-    const cv::Point2d n0(-DirectionVector(deg).y, DirectionVector(deg).x);
-    double best = -2, best_d = 0, best_a = deg;
-    for (int d = -kShiftPx; d <= kShiftPx; ++d) {
-      for (int a = -2; a <= 2; ++a) {
-        const double score = ArmBarScore(bgr, bar, shoulder_ + d * n0, deg + a, lu_);
-        if (score > best) {
-          best = score;
-          best_d = d;
-          best_a = deg + a;
-        }
-      }
-    }
-    if (best < o_.bar_min_score + 0.1 || std::abs(best_d) >= kShiftPx) return deg;
-    const cv::Point2d p = shoulder_ + best_d * n0;
-    const cv::Point2d u = DirectionVector(best_a);
+  // clear, lies on a line through the true shoulder. Each such line (the sleeve's axis found by
+  // RefineWithBar) is accumulated, and the shoulder becomes their least-squares intersection once
+  // lines at different angles are in.
+  void RefineShoulder() {
+    const BarAxis& axis = axis_[kUpper];
+    if (!axis.found) return;
+    const cv::Point2d u = DirectionVector(axis.deg);
     const cv::Vec2d n(-u.y, u.x);
-    const double c = n[0] * p.x + n[1] * p.y;
+    const double c = n[0] * axis.point_px.x + n[1] * axis.point_px.y;
     line_a_ += cv::Matx22d(n[0] * n[0], n[0] * n[1], n[0] * n[1], n[1] * n[1]);
     line_b_ += cv::Vec2d(n[0] * c, n[1] * c);
     ++line_count_;
@@ -363,14 +414,11 @@ class AnchoredTracker : public Tracker {
     const double tr = mean(0, 0) + mean(1, 1);
     const double det = mean(0, 0) * mean(1, 1) - mean(0, 1) * mean(1, 0);
     const double min_eig = 0.5 * tr - std::sqrt(std::max(0.0, 0.25 * tr * tr - det));
-    if (min_eig < 0.03) return deg;  // about 10 degrees of spread
+    if (min_eig < 0.03) return;  // about 10 degrees of spread
     const cv::Vec2d sol = line_a_.inv() * line_b_;
     const cv::Point2d refined(sol[0], sol[1]);
-    if (Dist(refined, shoulder_start_) > 0.35 * arm_len_) return deg;
+    if (Dist(refined, shoulder_start_) > shoulder_reach_) return;
     shoulder_ = refined;
-    tu_ = PartMotion(deg, shoulder_);
-    const BarSearch r = SearchArmBar(bgr, bar, shoulder_, deg, lu_, 5, o_.bar_min_score);
-    return r.found ? r.deg : deg;
   }
 
   void FitPose(const cv::Mat& bgr) {
@@ -382,16 +430,45 @@ class AnchoredTracker : public Tracker {
     const bool fitted_up = FitPart(kUpper, shoulder_, upper_deg_, upper_deg_, o_.prior_weight * lu_,
                                    CountConfirmed(kUpper) < 3, &tu);
     if (fitted_up) up = Wrap180(tu.RotationCcwDeg());
-    up = RefineWithBar(bgr, kUpper, shoulder_, up, lu_, &upper_bar_used_);
+    // A strip much shorter than the sleeve's width tells no direction: the upper arm is searched
+    // over at least half its length even when it is seen shorter.
+    const double lu = std::max(reach_, kEndOnReach) * lu_;
+    up = RefineWithBar(bgr, kUpper, shoulder_, up, lu, &upper_bar_used_);
     if (!upper_bar_used_) {
       // The features may have been misled (too few, or on the background); the sleeve may still
       // be where the part was.
-      up = RefineWithBar(bgr, kUpper, shoulder_, upper_deg_, lu_, &upper_bar_used_);
+      up = RefineWithBar(bgr, kUpper, shoulder_, upper_deg_, lu, &upper_bar_used_);
       if (!upper_bar_used_ && fitted_up) up = Wrap180(tu.RotationCcwDeg());
     }
-    if (upper_bar_used_ && refine_shoulder_) up = RefineShoulder(bgr, up);
+    if (upper_bar_used_ && refine_shoulder_) RefineShoulder();
+    if (upper_bar_used_ && reach_ == 1) LearnBarWidth(bgr, kUpper, shoulder_, up, lu_);
+    UpdateReach(bgr, up, bend);
     upper_deg_ = up;
     tu_ = PartMotion(upper_deg_, shoulder_);
+    fore_bar_used_ = false;
+    // Seen nearly end-on, a short forearm tells no direction: the arm was straight when it turned
+    // away and is taken so.
+    double fo = reach_ < kEndOnReach ? upper_deg_ : FitForearm(bgr, bend);
+    if (reach_ < 1) {
+      const double bent = std::abs(AngleDiff(fo, upper_deg_));
+      if (bent > kFoldedDeg) {
+        fo = upper_deg_;  // a short forearm's strip folded back onto the upper arm: an artefact
+      } else if (bent > kStraightDeg) {
+        reach_ = 1;  // the forearm is bent: the sleeve ended at the elbow, not early
+      }
+    }
+    fore_deg_ = fo;
+    tf_ = PartMotion(fore_deg_, Elbow());
+    for (Feature& f : feats_) {
+      f.ru = Dist(tu_.Apply(f.cu), cv::Point2d(f.p));
+      f.rf = Dist(tf_.Apply(f.cf), cv::Point2d(f.p));
+    }
+  }
+
+  // The forearm's direction about the elbow: features, then its sleeve around their estimate,
+  // around the previous bend, and over every bend the elbow allows; the elbow itself is located
+  // where the two sleeves meet.
+  double FitForearm(const cv::Mat& bgr, double bend) {
     const cv::Point2d elbow = Elbow();
     const double fo_prior = Wrap180(upper_deg_ + bend);
     double fo = fo_prior;
@@ -401,14 +478,15 @@ class AnchoredTracker : public Tracker {
       fo = Wrap180(tf.RotationCcwDeg());
     }
     const double fo_feat = fo;
-    fo = RefineWithBar(bgr, kFore, elbow, fo_feat, lf_, &fore_bar_used_);
+    const double lf = reach_ * lf_;
+    fo = RefineWithBar(bgr, kFore, elbow, fo_feat, lf, &fore_bar_used_);
     if (!fore_bar_used_) {
-      fo = RefineWithBar(bgr, kFore, elbow, fo_prior, lf_, &fore_bar_used_);
+      fo = RefineWithBar(bgr, kFore, elbow, fo_prior, lf, &fore_bar_used_);
     }
     if (!fore_bar_used_) {
       // Lost (the forearm foreshortened, turned out of the picture, or the features ran off):
       // every bend the elbow allows is searched.
-      fo = RefineWithBar(bgr, kFore, elbow, upper_deg_, lf_, &fore_bar_used_, o_.max_bend_deg);
+      fo = RefineWithBar(bgr, kFore, elbow, upper_deg_, lf, &fore_bar_used_, o_.max_bend_deg);
       if (!fore_bar_used_) fo = fo_feat;
     }
     // No estimate bends the elbow past its limit.
@@ -416,17 +494,13 @@ class AnchoredTracker : public Tracker {
     if (std::abs(bent) > o_.max_bend_deg) {
       fo = Wrap180(upper_deg_ + std::copysign(o_.max_bend_deg, bent));
     }
-    if (fore_bar_used_) {
+    if (fore_bar_used_ && reach_ == 1) {
       LocateElbowOnBar(bgr, fo);
       // The forearm's sleeve about the elbow found so far.
       fo = RefineWithBar(bgr, kFore, Elbow(), fo, lf_, &fore_bar_used_);
     }
-    fore_deg_ = fo;
-    tf_ = PartMotion(fore_deg_, Elbow());
-    for (Feature& f : feats_) {
-      f.ru = Dist(tu_.Apply(f.cu), cv::Point2d(f.p));
-      f.rf = Dist(tf_.Apply(f.cf), cv::Point2d(f.p));
-    }
+    if (fore_bar_used_) LearnBarWidth(bgr, kFore, Elbow(), fo, lf);
+    return fo;
   }
 
   void UpdateFeatures() {
@@ -496,6 +570,13 @@ class AnchoredTracker : public Tracker {
     const double a = best_per_l[best_i - 1], b = best_per_l[best_i], c = best_per_l[best_i + 1];
     const double den = a - 2 * b + c;
     if (den < 0) offset += std::clamp(0.5 * (a - c) / den, -0.5, 0.5);
+    if (elbow_den_ == 0) {
+      // The prior (upper_fraction of the arm) counts like a few fully bent frames, so a burst of
+      // misleading frames early on (a sleeve close to the wall's colour) cannot pull the elbow
+      // away.
+      elbow_num_ = kElbowPriorWeight * lu_;
+      elbow_den_ = kElbowPriorWeight;
+    }
     const double s = std::sin(bend * kPi / 180);
     elbow_num_ += s * s * (lu_ + offset);
     elbow_den_ += s * s;
@@ -506,6 +587,7 @@ class AnchoredTracker : public Tracker {
   // Once the elbow bends, the features seeded on a straight arm tell where it is: those that
   // follow the upper arm lie before it, those that follow the forearm beyond it.
   void LearnElbow() {
+    if (reach_ < 1) return;
     if (std::abs(AngleDiff(fore_deg_, upper_deg_)) < o_.bend_for_elbow_deg) return;
     std::vector<std::pair<double, int>> samples;
     for (const Feature& f : feats_) {
@@ -606,8 +688,6 @@ class AnchoredTracker : public Tracker {
   }
 
   static constexpr double kMinLeverPx = 4;
-  static constexpr int kShiftPx = 8;  // sideways search for the sleeve's axis (shoulder refinement)
-                                      // // features this near their joint tell no direction
   static constexpr int kConfirmFrames = 3;            // agreeing frames before a feature is used
   static constexpr int kCandidateOutlierFrames = 15;  // disagreeing frames before it is dropped
 
@@ -622,13 +702,30 @@ class AnchoredTracker : public Tracker {
   double upper_deg_ = -90, fore_deg_ = -90;
   Motion2D tu_, tf_;
   std::vector<Feature> feats_;
-  std::vector<ArmBar> upper_bar_, fore_bar_;    // per shoulder candidate
-  std::vector<cv::Vec2d> bar_bias_;             // per shoulder candidate: upper, fore (degrees)
+  std::vector<ArmBar> upper_bar_, fore_bar_;      // per shoulder candidate
+  std::vector<cv::Vec2d> bar_bias_;               // per shoulder candidate: upper, fore (degrees)
+  std::vector<double> bar_widths_[2];             // recent half-width readings, per part
+  std::vector<bool> sleeve_measured_;             // per shoulder candidate: arm_len_ read at start
+  double reach_ = 1;                              // projected / true arm length (UpdateReach)
+  static constexpr double kStraightStartDeg = 5;  // bent less: straight enough to measure reach
+  static constexpr double kShortReach = 0.85;     // shorter than this: turned out of the picture
+  static constexpr double kStraightDeg = 15;  // a shortened arm found bent more is not shortened
+  static constexpr double kEndOnReach = 0.5;  // shorter: the forearm is taken in line
+  static constexpr double kFoldedDeg = 90;    // unless folded back this far (an end-on artefact)
+  static constexpr double kMinReach = 0.2;
+  static constexpr double kClearEnd = 0.15;  // past a real end, at most this share is sleeve
+  std::vector<cv::Vec2d> start_half_width_;  // per shoulder candidate: as read at the start
+  BarAxis axis_[2];                          // the sleeves' axes found in this frame
+  static constexpr std::size_t kWidthReadings = 15;
+  static constexpr std::size_t kMinWidthReadings = 3;
   static constexpr double kBiasSearchDeg = 10;  // calibration search around the known pose
   static constexpr double kBiasFadeDeg = 20;    // the correction fades out over this turn
   std::vector<cv::Vec3d> side_lengths_;         // per shoulder candidate: arm, upper, forearm
   bool upper_bar_used_ = false, fore_bar_used_ = false;
   bool refine_shoulder_ = false;
+  double shoulder_reach_ = 0;  // how far the refined shoulder may be from where it started
+  static constexpr double kBodyBoxShoulderReach = 0.35;  // times the arm's length
+  static constexpr double kGivenShoulderReach = 0.1;
   cv::Point2d shoulder_start_;
   cv::Matx22d line_a_ = cv::Matx22d::zeros();
   cv::Vec2d line_b_ = cv::Vec2d(0, 0);
@@ -641,6 +738,7 @@ class AnchoredTracker : public Tracker {
   // Only the forearm's sleeve near the elbow is scored there: the hand and the cuff beyond it
   // would favour a pivot that pulls the strip back.
   static constexpr double kElbowStripFraction = 0.75;
+  static constexpr double kElbowPriorWeight = 5;
   double elbow_num_ = 0, elbow_den_ = 0;
   bool elbow_from_bar_ = false;
 };

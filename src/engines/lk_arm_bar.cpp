@@ -14,6 +14,9 @@ namespace {
 constexpr double kColourSigma = 45;
 constexpr int kAlongSamples = 10;
 constexpr double kAlongFrom = 0.2, kAlongTo = 0.8;
+constexpr int kCentreIterations = 2;
+constexpr std::size_t kMinCentreSamples = 5;
+constexpr double kMaxCentreTurnDeg = 10;
 
 bool Sample(const cv::Mat& bgr, const cv::Point2d& p, cv::Vec3f* out) {
   const int x = cvRound(p.x), y = cvRound(p.y);
@@ -32,6 +35,21 @@ double Likeness(const cv::Vec3f& a, const cv::Vec3f& b) {
 double LikenessAt(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& p, double outside) {
   cv::Vec3f c;
   return Sample(bgr, p, &c) ? Likeness(c, bar.colour) : outside;
+}
+
+// Where the run of the bar's colour through `p` ends on each side along `n` (half-pixel steps);
+// `max_px` when it does not end within it.
+void RunEnds(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& p, const cv::Point2d& n,
+             double max_px, double ends[2]) {
+  for (int s = 0; s < 2; ++s) {
+    ends[s] = max_px;
+    for (double d = 0.5; d <= max_px; d += 0.5) {
+      if (LikenessAt(bgr, bar, p + (s == 0 ? d : -d) * n, 1) < 0.5) {
+        ends[s] = d - 0.25;
+        break;
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -131,7 +149,7 @@ BarSearch SearchArmBar(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d&
 }
 
 double MeasureBarLength(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px,
-                        double deg, double max_px) {
+                        double deg, double max_px, double* beyond) {
   const cv::Point2d u = DirectionVector(deg);
   int misses = 0;
   double last = 0;
@@ -143,7 +161,89 @@ double MeasureBarLength(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d
       break;
     }
   }
+  if (beyond) {
+    // Past the gap that ended the run, up to max_px: the share of pixels like the bar again.
+    int like = 0, count = 0;
+    for (double d = last + 4; d <= max_px; d += 1, ++count) {
+      like += LikenessAt(bgr, bar, joint_px + d * u, 0) >= 0.5;
+    }
+    *beyond = count ? static_cast<double>(like) / count : 0;
+  }
   return last;
+}
+
+BarAxis CentreArmBar(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px, double deg,
+                     double length_px, double max_half_width_px, bool one_sided) {
+  BarAxis out;
+  if (!bar.valid || !(length_px > 2)) return out;
+  double current = deg;
+  cv::Point2d point;
+  for (int iteration = 0; iteration < kCentreIterations; ++iteration) {
+    const cv::Point2d u = DirectionVector(current), n(-u.y, u.x);
+    std::vector<double> ds, cs;
+    for (int k = 0; k < kAlongSamples; ++k) {
+      const double t = kAlongFrom + (kAlongTo - kAlongFrom) * k / (kAlongSamples - 1);
+      const double d = t * length_px;
+      const cv::Point2d p = joint_px + d * u;
+      if (LikenessAt(bgr, bar, p, 0) < 0.5) continue;
+      double ends[2];
+      RunEnds(bgr, bar, p, n, max_half_width_px, ends);
+      const bool clear[2] = {ends[0] < max_half_width_px, ends[1] < max_half_width_px};
+      double c;  // centre of the sleeve along +n from the axis
+      if (clear[0] && clear[1]) {
+        c = 0.5 * (ends[0] - ends[1]);
+      } else if (one_sided && bar.width_measured && (clear[0] || clear[1])) {
+        c = clear[0] ? ends[0] - bar.half_width_px : bar.half_width_px - ends[1];
+      } else {
+        continue;
+      }
+      ds.push_back(d);
+      cs.push_back(c);
+    }
+    if (ds.size() < kMinCentreSamples) return out;
+    // Least-squares line c = a + b d through the centres; its slope turns the direction.
+    double md = 0, mc = 0;
+    for (std::size_t i = 0; i < ds.size(); ++i) {
+      md += ds[i];
+      mc += cs[i];
+    }
+    md /= ds.size();
+    mc /= ds.size();
+    double sdd = 0, sdc = 0;
+    for (std::size_t i = 0; i < ds.size(); ++i) {
+      sdd += (ds[i] - md) * (ds[i] - md);
+      sdc += (ds[i] - md) * (cs[i] - mc);
+    }
+    if (sdd <= 0) return out;
+    point = joint_px + md * u + mc * n;  // the centres' mean lies on the axis
+    // An offset along +n turns the direction clockwise on screen.
+    current = Wrap180(current - DegFromRad(std::atan(sdc / sdd)));
+  }
+  if (std::abs(AngleDiff(current, deg)) > kMaxCentreTurnDeg) return out;
+  out.found = true;
+  out.deg = current;
+  out.point_px = point;
+  return out;
+}
+
+double MeasureBarHalfWidth(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px,
+                           double deg, double length_px, double max_half_width_px) {
+  if (!bar.valid || !(length_px > 2)) return -1;
+  const cv::Point2d u = DirectionVector(deg), n(-u.y, u.x);
+  std::vector<double> widths;
+  for (int k = 0; k < kAlongSamples; ++k) {
+    const double t = kAlongFrom + (kAlongTo - kAlongFrom) * k / (kAlongSamples - 1);
+    const cv::Point2d p = joint_px + t * length_px * u;
+    if (LikenessAt(bgr, bar, p, 0) < 0.5) continue;  // the axis is off the sleeve here
+    double ends[2];
+    RunEnds(bgr, bar, p, n, max_half_width_px, ends);
+    if (ends[0] < max_half_width_px && ends[1] < max_half_width_px) {
+      widths.push_back(0.5 * (ends[0] + ends[1]));
+    }
+  }
+  if (widths.size() * 2 < static_cast<std::size_t>(kAlongSamples)) return -1;
+  std::nth_element(widths.begin(), widths.begin() + widths.size() / 2, widths.end());
+  return widths[widths.size() / 2];
 }
 
 }  // namespace armmimic::lk

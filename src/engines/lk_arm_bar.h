@@ -11,8 +11,9 @@ namespace armmimic::lk {
 
 struct ArmBar {
   bool valid = false;
-  cv::Vec3f colour;          // median BGR along the part's axis at the start
-  double half_width_px = 4;  // half the part's width
+  cv::Vec3f colour;             // median BGR along the part's axis at the start
+  double half_width_px = 4;     // half the part's width
+  bool width_measured = false;  // half_width_px was measured with the sleeve clear on both sides
 };
 
 // Reads the colour along the axis from `joint_px` in direction `deg` over [0.2, 0.8] x length.
@@ -39,8 +40,30 @@ BarSearch SearchArmBar(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d&
                        double avoid_deg = 0, double avoid_half_deg = 0);
 
 // Length of the sleeve from `joint_px` along `deg`: where the axis stops having the bar's colour
-// (stops after `max_px`).
+// (stops after `max_px`). `beyond`, when given, receives the share of the axis past that end (up
+// to `max_px`) that has the bar's colour again: near 0 for a sleeve that really ends there.
 double MeasureBarLength(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px,
-                        double deg, double max_px);
+                        double deg, double max_px, double* beyond = nullptr);
+
+// The sleeve's own axis near `deg`: across the strip from `joint_px` along `deg`, at samples over
+// [0.2, 0.8] x length, the centre of the run of the bar's colour around the axis (from both ends
+// where the sleeve stands clear; with `one_sided`, also from one end and the measured half-width
+// where the other side runs into the same colour). The line through these centres is the sleeve's
+// axis, whatever the joint's position. Not found when too few samples tell or the axis turns more
+// than 10 degrees.
+struct BarAxis {
+  bool found = false;
+  double deg = 0;        // direction of the axis
+  cv::Point2d point_px;  // a point on it
+};
+BarAxis CentreArmBar(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px, double deg,
+                     double length_px, double max_half_width_px, bool one_sided);
+
+// Half the sleeve's width measured across the strip from `joint_px` along `deg`: at samples over
+// [0.2, 0.8] x length, the run of the bar's colour around the axis, where it ends on both sides
+// within `max_half_width_px` (the part stands clear of anything in the same colour). Returns the
+// median half-width, or -1 when fewer than half the samples end on both sides.
+double MeasureBarHalfWidth(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px,
+                           double deg, double length_px, double max_half_width_px);
 
 }  // namespace armmimic::lk

@@ -32,8 +32,10 @@ struct LkRun {
 };
 
 // Runs the LK engine over `scene`: with the background (mean of the empty frames) and the
-// standstill when `given_shoulder` is false, else from the last standstill frame with --shoulder.
-LkRun RunLk(const synth::ArmSceneOptions& scene, bool given_shoulder, bool thesis = false) {
+// standstill when `given_shoulder` is false, else from the last standstill frame with --shoulder
+// (the true shoulder moved by `click_error_px`, as an operator's click would be).
+LkRun RunLk(const synth::ArmSceneOptions& scene, bool given_shoulder, bool thesis = false,
+            cv::Point2d click_error_px = {0, 0}) {
   synth::ArmSceneRenderer renderer(scene);
   EngineOptions options;
   options.kind = EngineKind::kLk;
@@ -44,7 +46,7 @@ LkRun RunLk(const synth::ArmSceneOptions& scene, bool given_shoulder, bool thesi
   context.fps = scene.fps;
   int first = scene.background_frames;
   if (given_shoulder) {
-    context.shoulder_px = renderer.shoulder_px();
+    context.shoulder_px = renderer.shoulder_px() + click_error_px;
     first = scene.first_motion_frame() - 1;
   } else {
     cv::Mat sum = cv::Mat::zeros(scene.size, CV_32FC3);
@@ -83,28 +85,56 @@ synth::ArmSceneOptions Scene(uint64_t seed, synth::ArmMotion motion, synth::ArmS
   return s;
 }
 
+// Direction MAE bound in memory (measured 0.8-1.4 degrees on these scenes; the target is
+// 4).
+constexpr double kMaeBound = 2.5;
+
 TEST(LkAccuracy, SwingWithGivenShoulder) {
   const LkRun run = RunLk(Scene(1, synth::ArmMotion::kSwing, synth::ArmSide::kRight, 200), true);
   EXPECT_GE(run.OkFraction(), 0.98);
-  EXPECT_LE(run.Mae(), 4.0);
+  EXPECT_LE(run.Mae(), kMaeBound) << "MAE " << run.Mae();
 }
 
 TEST(LkAccuracy, MixedLeftWithGivenShoulder) {
   const LkRun run = RunLk(Scene(3, synth::ArmMotion::kMixed, synth::ArmSide::kLeft, 200), true);
   EXPECT_GE(run.OkFraction(), 0.98);
-  EXPECT_LE(run.Mae(), 4.0);
+  EXPECT_LE(run.Mae(), kMaeBound) << "MAE " << run.Mae();
 }
 
 TEST(LkAccuracy, MixedWithBackgroundAndStandstill) {
   const LkRun run = RunLk(Scene(1, synth::ArmMotion::kMixed, synth::ArmSide::kRight, 200), false);
   EXPECT_GE(run.OkFraction(), 0.98);
-  EXPECT_LE(run.Mae(), 4.0);
+  EXPECT_LE(run.Mae(), kMaeBound) << "MAE " << run.Mae();
 }
 
 TEST(LkAccuracy, SwingLeftWithBackgroundAndStandstill) {
   const LkRun run = RunLk(Scene(4, synth::ArmMotion::kSwing, synth::ArmSide::kLeft, 200), false);
   EXPECT_GE(run.OkFraction(), 0.98);
-  EXPECT_LE(run.Mae(), 4.0);
+  EXPECT_LE(run.Mae(), kMaeBound) << "MAE " << run.Mae();
+}
+
+// A straight arm turned out of the picture up to 70 degrees: its forearm is searched on the
+// shortened arm, not beyond the hand.
+TEST(LkAccuracy, YawTurnedArmWithBackgroundAndStandstill) {
+  const LkRun run = RunLk(Scene(7, synth::ArmMotion::kYaw, synth::ArmSide::kRight, 150), false);
+  EXPECT_GE(run.OkFraction(), 0.98);
+  EXPECT_LE(run.Mae(), kMaeBound) << "MAE " << run.Mae();
+}
+
+TEST(LkAccuracy, YawTurnedLeftArmWithGivenShoulder) {
+  const LkRun run = RunLk(Scene(8, synth::ArmMotion::kYaw, synth::ArmSide::kLeft, 150), true);
+  EXPECT_GE(run.OkFraction(), 0.98);
+  EXPECT_LE(run.Mae(), 4.0) << "MAE " << run.Mae();
+}
+
+// A shirt close to the wall's colour and a shoulder clicked 3 px too low: the sleeve lines nudge
+// the shoulder back, and a few misleading frames cannot pull the elbow away.
+TEST(LkAccuracy, LowContrastShirtWithAnImpreciseShoulder) {
+  synth::ArmSceneOptions scene = Scene(9, synth::ArmMotion::kMixed, synth::ArmSide::kRight, 150);
+  scene.clothing_contrast = 0.3;
+  const LkRun run = RunLk(scene, true, false, {1, 3});
+  EXPECT_GE(run.OkFraction(), 0.98);
+  EXPECT_LE(run.Mae(), 4.0) << "MAE " << run.Mae();
 }
 
 // Error must not accumulate: the last 100 frames of a 1000-frame scene are no worse than the
@@ -114,7 +144,7 @@ TEST(LkAccuracy, LongSceneDoesNotDrift) {
   ASSERT_EQ(run.error.size(), 1000u);
   const double first = run.Mae(0, 100), last = run.Mae(900, 1000);
   EXPECT_LE(last, first + 0.5) << "first 100: " << first << ", last 100: " << last;
-  EXPECT_LE(run.Mae(), 4.0);
+  EXPECT_LE(run.Mae(), kMaeBound) << "MAE " << run.Mae();
   EXPECT_GE(run.OkFraction(), 0.98);
 }
 
