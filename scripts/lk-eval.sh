@@ -5,6 +5,8 @@
 # shoulder), scores the angle files against the truth and prints per-scene and mean errors.
 #   scripts/lk-eval.sh [BUILD_DIR] [WORK_DIR]   (defaults: build, a new temporary folder)
 # Scenes already in WORK_DIR are reused. Extra analyze flags can be passed in LK_EVAL_FLAGS.
+# LK_EVAL_SET=heldout scores 28 other scenes instead (other seeds, sizes, frame rates, codecs,
+# the yaw motion), kept apart from the ones the engine was tuned on.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR="${1:-build}"
@@ -15,7 +17,7 @@ mkdir -p "$WORK"
 read -r -a EXTRA <<<"${LK_EVAL_FLAGS:-}"
 
 # name: synth arm options
-SCENES=(
+TUNING=(
   "m3:--seed 3"
   "m4:--seed 4"
   "m5:--seed 5 --side left"
@@ -33,6 +35,37 @@ SCENES=(
   "h25:--seed 25 --frames 200 --contrast 0.7 --drift 0.15"
   "h26:--seed 26 --motion swing --side left"
 )
+HELDOUT=(
+  "b401:--seed 401 --contrast 0"
+  "b402:--seed 402 --motion yaw"
+  "b403:--seed 403 --size 160x120"
+  "b404:--seed 404 --size 800x600"
+  "b405:--seed 405 --fps 15"
+  "b406:--seed 406 --frames 1500"
+  "b407:--seed 407 --noise 10"
+  "b408:--seed 408 --codec H264"
+  "b409:--seed 409 --contrast 0.3 --side left"
+  "b410:--seed 410 --motion bend --shadow --drift 0.3"
+  "b411:--seed 411 --head-motion --frames 400"
+  "b412:--seed 412 --contrast 2"
+  "b413:--seed 413 --motion swing --size 640x480 --noise 6"
+  "b414:--seed 414 --frames 100"
+  "b415:--seed 415 --standstill-frames 30 --background-frames 20"
+  "b416:--seed 416 --quality 30"
+  "y501:--seed 501 --motion yaw"
+  "y502:--seed 502 --motion yaw --side left"
+  "y503:--seed 503 --motion yaw"
+  "y504:--seed 504 --motion yaw --frames 300 --size 640x480"
+  "c601:--seed 601"
+  "c602:--seed 602 --side left --motion bend"
+  "c603:--seed 603 --motion yaw --shadow"
+  "c604:--seed 604 --motion swing --head-motion --noise 5"
+  "c605:--seed 605 --frames 400 --drift 0.1"
+  "c606:--seed 606 --size 640x480 --motion bend --side left"
+  "c607:--seed 607 --contrast 0.5 --motion swing"
+  "c608:--seed 608 --codec XVID --side left"
+)
+if [[ "${LK_EVAL_SET:-tuning}" == "heldout" ]]; then SCENES=("${HELDOUT[@]}"); else SCENES=("${TUNING[@]}"); fi
 
 # Prints "coverage upper_mae fore_mae overall_mae" for an angle file.
 score() {
@@ -53,12 +86,16 @@ for entry in "${SCENES[@]}"; do
   read -r -a opts <<<"${entry#*:}"
   dir="$WORK/$name"
   [[ -f "$dir/truth.tsv" ]] || "$CLI" -q synth arm "$dir" --frames 150 "${opts[@]}"
-  shoulder=190,100
-  grep -q 'side=left' "$dir/truth.tsv" && shoulder=130,100
-  "$CLI" -q analyze "$dir/scene.avi" -o "$dir/bg.tsv" --engine lk --background-frames 45 \
-    --start 45 "${EXTRA[@]}"
+  # The recording protocol from the truth's meta line; the shoulder from its last standstill row.
+  k=$(grep -o 'background_frames=[0-9]*' "$dir/truth.tsv" | cut -d= -f2)
+  m=$(grep -o 'standstill_frames=[0-9]*' "$dir/truth.tsv" | cut -d= -f2)
+  last=$((k + m - 1))
+  shoulder=$(awk -F'\t' -v f="$last" '!/^#/ && $1 == f { printf "%.0f,%.0f", $7, $8 }' \
+    "$dir/truth.tsv")
+  "$CLI" -q analyze "$dir/scene.avi" -o "$dir/bg.tsv" --engine lk --background-frames "$k" \
+    --start "$k" --standstill-frames "$m" "${EXTRA[@]}"
   "$CLI" -q analyze "$dir/scene.avi" -o "$dir/sh.tsv" --engine lk --shoulder "$shoulder" \
-    --start 104 "${EXTRA[@]}"
+    --start "$last" "${EXTRA[@]}"
   read -r c1 u1 f1 o1 <<<"$(score "$dir/truth.tsv" "$dir/bg.tsv")"
   read -r c2 u2 f2 o2 <<<"$(score "$dir/truth.tsv" "$dir/sh.tsv")"
   printf '%-5s %-50s | %-7s %5s %5s %5s       | %-7s %5s %5s %5s\n' "$name" "${entry#*:}" \
