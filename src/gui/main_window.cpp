@@ -9,6 +9,7 @@
 #include <QMenu>
 #include <QMimeData>
 #include <QScrollArea>
+#include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
 #include <QVBoxLayout>
@@ -319,7 +320,11 @@ void MainWindow::updateStatus() {
 
 void MainWindow::restoreSettings() {
   QSettings s;
-  restoreGeometry(s.value("window/geometry").toByteArray());
+  if (!restoreGeometry(s.value("window/geometry").toByteArray()) && screen()) {
+    // First start: most of the screen, so the video, the panels and the plot all have room.
+    const QRect avail = screen()->availableGeometry();
+    resize(avail.width() * 85 / 100, avail.height() * 85 / 100);
+  }
   restoreState(s.value("window/state").toByteArray());
   settings_->load(s);
   actions_->loadSettings(s);
