@@ -149,6 +149,8 @@ void AnglePlot::setResults(const ResultStore& results) {
   upper_->setVisible(!marker);
   fore_->setVisible(!marker);
   bend_->setVisible(marker);
+  // An engine that measures no yaw (LK) gets no yaw entry in the legend; no results yet, all.
+  yaw_->setVisible(!yaw.isEmpty() || results.size() == 0);
   lost_->replace(lost);
 }
 
@@ -160,6 +162,7 @@ void AnglePlot::setCursorFrame(int frame) {
 int AnglePlot::pointCount() const { return static_cast<int>(upper_->count()); }
 int AnglePlot::lostCount() const { return static_cast<int>(lost_->count()); }
 int AnglePlot::bendCount() const { return static_cast<int>(bend_->count()); }
+bool AnglePlot::yawShown() const { return yaw_->isVisible(); }
 
 int AnglePlot::frameAt(const QPointF& widget_pos) const {
   const QPointF scene = mapToScene(widget_pos.toPoint());

@@ -10,6 +10,7 @@
 
 #include "angle_plot.h"
 #include "gui_fixture.h"
+#include "result_store.h"
 
 namespace armmimic::test {
 namespace {
@@ -72,6 +73,36 @@ TEST_F(AnglePlotTest, FollowsASchemeSwitchWhileRunning) {
   EXPECT_EQ(plot.chart()->backgroundBrush().color(), QColor(0x20, 0x20, 0x20));
   const QImage shot = plot.grab().toImage();
   EXPECT_LT(QColor(shot.pixel(shot.width() / 2, shot.height() / 2)).lightness(), 80);
+}
+
+// Rows of an arm engine: `yaw` as given (nan for the LK engine, which measures none).
+gui::ResultStore ArmRows(double yaw) {
+  gui::ResultStore store;
+  for (int f = 0; f < 20; ++f) {
+    ArmMeasurement m;
+    m.frame = f;
+    m.phase = MeasurementPhase::kOk;
+    m.upper_deg = -90 + f;
+    m.fore_deg = -80 + f;
+    m.yaw_deg = yaw;
+    store.add(m);
+  }
+  return store;
+}
+
+TEST_F(AnglePlotTest, YawIsListedOnlyForEnginesThatMeasureIt) {
+  AnglePlot plot;
+  plot.setFrameRange(20);
+  plot.resize(600, 300);
+  plot.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&plot));
+  EXPECT_TRUE(plot.yawShown());  // nothing analysed yet: the legend lists every angle
+  plot.setResults(ArmRows(kNaN));
+  EXPECT_EQ(plot.pointCount(), 20);
+  EXPECT_FALSE(plot.yawShown());
+  EXPECT_FALSE(Texts(plot).contains("yaw"));
+  plot.setResults(ArmRows(12));
+  EXPECT_TRUE(plot.yawShown());
 }
 
 }  // namespace
