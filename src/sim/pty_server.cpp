@@ -121,6 +121,11 @@ void PtyServer::Run() {
   bool connected = false;
   char buf[1024];
   while (!stop_) {
+    if (held_) {
+      // A controller busy elsewhere: nothing is read or answered, motions stand still.
+      usleep(2000);
+      continue;
+    }
     pollfd p{master_fd_, POLLIN, 0};
     const int r = poll(&p, 1, 5);
     std::string out;

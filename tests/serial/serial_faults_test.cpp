@@ -133,8 +133,10 @@ TEST_F(SerialFaults, PortInUseByTheSameProgramLeavesTheRunningJournalAlone) {
   o.time_scale = 0.3;
   sim::PtyServer server(o);
   ASSERT_TRUE(server.Start(port_).ok());
-  auto run = std::async(std::launch::async, [&] { return Send(); });
+  auto run = std::async(std::launch::async, [&] { return Send({"--timeout", "120"}); });
   ASSERT_TRUE(WaitFor([&] { return !server.log().empty(); }, 20));
+  // The first send waits on its line in flight however long the checks below take.
+  server.Hold(true);
   // A plain send sees the running send's unfinished journal and refuses to replay moves.
   const test::CliResult plain = Send();
   EXPECT_EQ(plain.exit_code, 1) << plain.err;
@@ -148,6 +150,7 @@ TEST_F(SerialFaults, PortInUseByTheSameProgramLeavesTheRunningJournalAlone) {
     EXPECT_TRUE(Contains(second.err, "--port " + port_)) << flag << ": " << second.err;
     EXPECT_TRUE(Contains(second.err, "busy")) << flag << ": " << second.err;
   }
+  server.Hold(false);
   const test::CliResult first = run.get();
   ASSERT_EQ(first.exit_code, 0) << first.err;
   ExpectExactlyOnce(server.log(), p);

@@ -39,6 +39,10 @@ class PtyServer {
   // Seconds since the last byte in or out, or the end of the last motion.
   double idle_s() const;
 
+  // While held, the controller reads and answers nothing (bytes wait in the pseudo-terminal), so
+  // a client waits on its line in flight for as long as a test needs, whatever the machine's speed.
+  void Hold(bool on) { held_ = on; }
+
   // The log line format: "seq<TAB>j1 .. j6<TAB>source".
   static std::string FormatLogLine(const LoggedMove& move);
 
@@ -54,6 +58,7 @@ class PtyServer {
   std::FILE* log_file_ = nullptr;
   std::thread thread_;
   std::atomic<bool> stop_{false};
+  std::atomic<bool> held_{false};
   std::chrono::steady_clock::time_point start_;
   double last_activity_s_ = 0;
 };
