@@ -354,7 +354,15 @@ class AnchoredTracker : public Tracker {
         MeasureBarLength(bgr, upper_bar_[side_], shoulder_, upper_deg, 1.6 * arm_len_, &beyond);
     // A sleeve that fades into its surroundings (a shirt close to the wall's colour) gives no
     // length.
-    const double k = beyond < kClearEnd ? run / arm_len_ : 1;
+    double k = beyond < kClearEnd ? run / arm_len_ : 1;
+    if (k < kShortReach && reach_ == 1) {
+      // An elbow starting to bend also ends the run early, but there the forearm's sleeve goes
+      // on beside the end; past a shortened straight arm's end there is no sleeve.
+      const ArmBar& fore = fore_bar_[side_];
+      const double r = 2 * fore.half_width_px;
+      const cv::Point2d past = shoulder_ + (run + r) * DirectionVector(upper_deg);
+      if (BarShareAround(bgr, fore, past, r) > kSleeveBesideEnd) k = 1;
+    }
     const bool straight = std::abs(bend_deg) < kStraightStartDeg;
     const bool shortened = k < kShortReach && (straight || reach_ < 1);
     reach_ = shortened ? std::max(kMinReach, k) : 1;
@@ -713,9 +721,10 @@ class AnchoredTracker : public Tracker {
   static constexpr double kEndOnReach = 0.5;  // shorter: the forearm is taken in line
   static constexpr double kFoldedDeg = 90;    // unless folded back this far (an end-on artefact)
   static constexpr double kMinReach = 0.2;
-  static constexpr double kClearEnd = 0.15;  // past a real end, at most this share is sleeve
-  std::vector<cv::Vec2d> start_half_width_;  // per shoulder candidate: as read at the start
-  BarAxis axis_[2];                          // the sleeves' axes found in this frame
+  static constexpr double kSleeveBesideEnd = 0.2;  // more sleeve past the end: a bend
+  static constexpr double kClearEnd = 0.15;        // past a real end, at most this share is sleeve
+  std::vector<cv::Vec2d> start_half_width_;        // per shoulder candidate: as read at the start
+  BarAxis axis_[2];                                // the sleeves' axes found in this frame
   static constexpr std::size_t kWidthReadings = 15;
   static constexpr std::size_t kMinWidthReadings = 3;
   static constexpr double kBiasSearchDeg = 10;  // calibration search around the known pose

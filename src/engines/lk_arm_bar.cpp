@@ -226,6 +226,20 @@ BarAxis CentreArmBar(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& j
   return out;
 }
 
+double BarShareAround(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& centre_px,
+                      double radius_px) {
+  int like = 0, count = 0;
+  const int r = static_cast<int>(std::ceil(radius_px));
+  for (int dy = -r; dy <= r; ++dy) {
+    for (int dx = -r; dx <= r; ++dx) {
+      if (dx * dx + dy * dy > radius_px * radius_px) continue;
+      ++count;
+      like += LikenessAt(bgr, bar, centre_px + cv::Point2d(dx, dy), 0) >= 0.5;
+    }
+  }
+  return count ? static_cast<double>(like) / count : 0;
+}
+
 double MeasureBarHalfWidth(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px,
                            double deg, double length_px, double max_half_width_px) {
   if (!bar.valid || !(length_px > 2)) return -1;

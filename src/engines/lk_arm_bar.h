@@ -59,6 +59,10 @@ struct BarAxis {
 BarAxis CentreArmBar(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joint_px, double deg,
                      double length_px, double max_half_width_px, bool one_sided);
 
+// Share of the pixels within `radius_px` of `centre_px` that have the bar's colour, in [0, 1].
+double BarShareAround(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& centre_px,
+                      double radius_px);
+
 // Half the sleeve's width measured across the strip from `joint_px` along `deg`: at samples over
 // [0.2, 0.8] x length, the run of the bar's colour around the axis, where it ends on both sides
 // within `max_half_width_px` (the part stands clear of anything in the same colour). Returns the

@@ -130,5 +130,15 @@ TEST(LkArmBar, LengthEndsWhereTheSleeveDoesAndSaysWhetherItResumes) {
   EXPECT_GT(beyond, 0.4);
 }
 
+TEST(LkArmBar, ShareAroundCountsTheSleeveNearAPoint) {
+  const cv::Point2d shoulder(40, 120);
+  const cv::Mat image = DrawSleeve(shoulder, 0, 50, 5);
+  EXPECT_GT(BarShareAround(image, Bar(5, false), {65, 120}, 4), 0.95);     // inside the sleeve
+  EXPECT_LT(BarShareAround(image, Bar(5, false), {100, 120}, 4), 0.01);    // past its end
+  const double edge = BarShareAround(image, Bar(5, false), {90, 120}, 4);  // on its end
+  EXPECT_GT(edge, 0.3);
+  EXPECT_LT(edge, 0.7);
+}
+
 }  // namespace
 }  // namespace armmimic::lk

@@ -80,5 +80,28 @@ TEST(LkFileAccuracy, MixedMotionFromGivenShoulderThroughMjpg) {
       AnalyseSceneFile(Scene(43, synth::ArmMotion::kMixed, synth::ArmSide::kRight), true));
 }
 
+// The bundled sample (data/sample), as the README's session analyses it with the LK engine: its
+// elbow bends early, which must not pass for an arm turned out of the picture.
+TEST(LkFileAccuracy, BundledSampleFromItsBackgroundImage) {
+  const std::string sample = std::string(ARMMIMIC_SOURCE_DIR) + "/data/sample/";
+  test::TempDir dir;
+  AnalysisOptions o;
+  o.inputs = {sample + "scene.avi"};
+  o.engine.kind = EngineKind::kLk;
+  o.background_path = sample + "background.png";
+  o.start = 45;
+  AnalysisSummary summary;
+  const Status st = AnalyzeToFile(o, dir.file("angles.tsv"), {}, &summary);
+  ASSERT_TRUE(st.ok()) << st.message();
+  synth::TruthFile truth;
+  AngleFile angles;
+  ASSERT_TRUE(synth::ReadTruthFile(sample + "truth.tsv", &truth).ok());
+  ASSERT_TRUE(ReadAngleFile(dir.file("angles.tsv"), &angles).ok());
+  const synth::ScoreSummary s = synth::ScoreAngles(truth, angles).summary;
+  EXPECT_GE(s.coverage, 0.98);
+  EXPECT_LE(s.upper.mae, 2.5);
+  EXPECT_LE(s.fore.mae, 2.5);
+}
+
 }  // namespace
 }  // namespace armmimic
