@@ -718,7 +718,8 @@ class AnchoredTracker : public Tracker {
   static constexpr double kStraightStartDeg = 5;  // bent less: straight enough to measure reach
   static constexpr double kShortReach = 0.85;     // shorter than this: turned out of the picture
   static constexpr double kStraightDeg = 15;  // a shortened arm found bent more is not shortened
-  static constexpr double kEndOnReach = 0.5;  // shorter: the forearm is taken in line
+  static constexpr double kEndOnReach = 0.5;  // shorter: the forearm is taken in line, and the
+                                              // upper arm searched over this much of it
   static constexpr double kFoldedDeg = 90;    // unless folded back this far (an end-on artefact)
   static constexpr double kMinReach = 0.2;
   static constexpr double kSleeveBesideEnd = 0.2;  // more sleeve past the end: a bend

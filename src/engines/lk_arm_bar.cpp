@@ -17,6 +17,7 @@ constexpr double kAlongFrom = 0.2, kAlongTo = 0.8;
 constexpr int kCentreIterations = 2;
 constexpr std::size_t kMinCentreSamples = 5;
 constexpr double kMaxCentreTurnDeg = 10;
+constexpr double kRunStepPx = 0.5;  // across the sleeve when centring it and measuring its width
 
 bool Sample(const cv::Mat& bgr, const cv::Point2d& p, cv::Vec3f* out) {
   const int x = cvRound(p.x), y = cvRound(p.y);
@@ -37,15 +38,22 @@ double LikenessAt(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& p, d
   return Sample(bgr, p, &c) ? Likeness(c, bar.colour) : outside;
 }
 
-// Where the run of the bar's colour through `p` ends on each side along `n` (half-pixel steps);
-// `max_px` when it does not end within it.
+// Where along the strip the k-th of its kAlongSamples sample points lies, as a fraction of its
+// length.
+double AlongFraction(int k) {
+  return kAlongFrom + (kAlongTo - kAlongFrom) * k / (kAlongSamples - 1);
+}
+
+// Where the run of the bar's colour through `p` ends on each side along `n`, stepping `step_px`
+// (half a step before the first unlike sample); `max_px` when it does not end within it. Pixels
+// outside the picture count as `outside`.
 void RunEnds(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& p, const cv::Point2d& n,
-             double max_px, double ends[2]) {
+             double max_px, double step_px, double outside, double ends[2]) {
   for (int s = 0; s < 2; ++s) {
     ends[s] = max_px;
-    for (double d = 0.5; d <= max_px; d += 0.5) {
-      if (LikenessAt(bgr, bar, p + (s == 0 ? d : -d) * n, 1) < 0.5) {
-        ends[s] = d - 0.25;
+    for (double d = step_px; d <= max_px; d += step_px) {
+      if (LikenessAt(bgr, bar, p + (s == 0 ? d : -d) * n, outside) < 0.5) {
+        ends[s] = d - 0.5 * step_px;
         break;
       }
     }
@@ -61,8 +69,7 @@ ArmBar LearnArmBar(const cv::Mat& bgr, const cv::Point2d& joint_px, double deg, 
   std::vector<float> ch[3];
   std::vector<cv::Point2d> axis;
   for (int k = 0; k < kAlongSamples; ++k) {
-    const double t = kAlongFrom + (kAlongTo - kAlongFrom) * k / (kAlongSamples - 1);
-    const cv::Point2d p = joint_px + t * length_px * u;
+    const cv::Point2d p = joint_px + AlongFraction(k) * length_px * u;
     cv::Vec3f c;
     if (!Sample(bgr, p, &c)) continue;
     axis.push_back(p);
@@ -77,15 +84,8 @@ ArmBar LearnArmBar(const cv::Mat& bgr, const cv::Point2d& joint_px, double deg, 
   // narrower side counts (the other may run into the body).
   std::vector<double> widths;
   for (const cv::Point2d& p : axis) {
-    double side_w[2] = {max_half_width_px, max_half_width_px};
-    for (int s = 0; s < 2; ++s) {
-      for (double d = 1; d <= max_half_width_px; d += 1) {
-        if (LikenessAt(bgr, bar, p + (s == 0 ? d : -d) * n, 0) < 0.5) {
-          side_w[s] = d - 0.5;
-          break;
-        }
-      }
-    }
+    double side_w[2];
+    RunEnds(bgr, bar, p, n, max_half_width_px, 1, 0, side_w);
     widths.push_back(std::min(side_w[0], side_w[1]));
   }
   std::nth_element(widths.begin(), widths.begin() + widths.size() / 2, widths.end());
@@ -103,8 +103,7 @@ double ArmBarScore(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& joi
   double on = 0, off = 0;
   int count = 0;
   for (int k = 0; k < kAlongSamples; ++k) {
-    const double t = kAlongFrom + (kAlongTo - kAlongFrom) * k / (kAlongSamples - 1);
-    const cv::Point2d p = joint_px + t * length_px * u;
+    const cv::Point2d p = joint_px + AlongFraction(k) * length_px * u;
     double a = 0;
     for (double o : axis_offsets) a += LikenessAt(bgr, bar, p + o * n, 0);
     const double left = LikenessAt(bgr, bar, p + flank * n, 1);
@@ -182,12 +181,11 @@ BarAxis CentreArmBar(const cv::Mat& bgr, const ArmBar& bar, const cv::Point2d& j
     const cv::Point2d u = DirectionVector(current), n(-u.y, u.x);
     std::vector<double> ds, cs;
     for (int k = 0; k < kAlongSamples; ++k) {
-      const double t = kAlongFrom + (kAlongTo - kAlongFrom) * k / (kAlongSamples - 1);
-      const double d = t * length_px;
+      const double d = AlongFraction(k) * length_px;
       const cv::Point2d p = joint_px + d * u;
       if (LikenessAt(bgr, bar, p, 0) < 0.5) continue;
       double ends[2];
-      RunEnds(bgr, bar, p, n, max_half_width_px, ends);
+      RunEnds(bgr, bar, p, n, max_half_width_px, kRunStepPx, 1, ends);
       const bool clear[2] = {ends[0] < max_half_width_px, ends[1] < max_half_width_px};
       double c;  // centre of the sleeve along +n from the axis
       if (clear[0] && clear[1]) {
@@ -246,11 +244,10 @@ double MeasureBarHalfWidth(const cv::Mat& bgr, const ArmBar& bar, const cv::Poin
   const cv::Point2d u = DirectionVector(deg), n(-u.y, u.x);
   std::vector<double> widths;
   for (int k = 0; k < kAlongSamples; ++k) {
-    const double t = kAlongFrom + (kAlongTo - kAlongFrom) * k / (kAlongSamples - 1);
-    const cv::Point2d p = joint_px + t * length_px * u;
+    const cv::Point2d p = joint_px + AlongFraction(k) * length_px * u;
     if (LikenessAt(bgr, bar, p, 0) < 0.5) continue;  // the axis is off the sleeve here
     double ends[2];
-    RunEnds(bgr, bar, p, n, max_half_width_px, ends);
+    RunEnds(bgr, bar, p, n, max_half_width_px, kRunStepPx, 1, ends);
     if (ends[0] < max_half_width_px && ends[1] < max_half_width_px) {
       widths.push_back(0.5 * (ends[0] + ends[1]));
     }
