@@ -18,6 +18,20 @@ struct FileRun {
   synth::ScoreSummary score;
 };
 
+// Analyses with `o` into a temporary angle file and scores it against the truth at
+// `truth_path`.
+synth::ScoreSummary AnalyseAndScore(const AnalysisOptions& o, const std::string& truth_path) {
+  test::TempDir dir;
+  AnalysisSummary summary;
+  const Status st = AnalyzeToFile(o, dir.file("angles.tsv"), {}, &summary);
+  EXPECT_TRUE(st.ok()) << st.message();
+  synth::TruthFile truth;
+  AngleFile angles;
+  EXPECT_TRUE(synth::ReadTruthFile(truth_path, &truth).ok());
+  EXPECT_TRUE(ReadAngleFile(dir.file("angles.tsv"), &angles).ok());
+  return synth::ScoreAngles(truth, angles).summary;
+}
+
 // Writes the scene, analyses it (background from the empty frames and the standstill, or the
 // given shoulder from the last standstill frame) and scores the angle file.
 FileRun AnalyseSceneFile(const synth::ArmSceneOptions& scene, bool given_shoulder) {
@@ -33,15 +47,8 @@ FileRun AnalyseSceneFile(const synth::ArmSceneOptions& scene, bool given_shoulde
     o.background_frames = scene.background_frames;
     o.start = scene.background_frames;
   }
-  AnalysisSummary summary;
-  const Status st = AnalyzeToFile(o, dir.file("angles.tsv"), {}, &summary);
-  EXPECT_TRUE(st.ok()) << st.message();
-  synth::TruthFile truth;
-  AngleFile angles;
-  EXPECT_TRUE(synth::ReadTruthFile(dir.file("truth.tsv"), &truth).ok());
-  EXPECT_TRUE(ReadAngleFile(dir.file("angles.tsv"), &angles).ok());
   FileRun run;
-  run.score = synth::ScoreAngles(truth, angles).summary;
+  run.score = AnalyseAndScore(o, dir.file("truth.tsv"));
   return run;
 }
 
@@ -84,20 +91,12 @@ TEST(LkFileAccuracy, MixedMotionFromGivenShoulderThroughMjpg) {
 // elbow bends early, which must not pass for an arm turned out of the picture.
 TEST(LkFileAccuracy, BundledSampleFromItsBackgroundImage) {
   const std::string sample = std::string(ARMMIMIC_SOURCE_DIR) + "/data/sample/";
-  test::TempDir dir;
   AnalysisOptions o;
   o.inputs = {sample + "scene.avi"};
   o.engine.kind = EngineKind::kLk;
   o.background_path = sample + "background.png";
   o.start = 45;
-  AnalysisSummary summary;
-  const Status st = AnalyzeToFile(o, dir.file("angles.tsv"), {}, &summary);
-  ASSERT_TRUE(st.ok()) << st.message();
-  synth::TruthFile truth;
-  AngleFile angles;
-  ASSERT_TRUE(synth::ReadTruthFile(sample + "truth.tsv", &truth).ok());
-  ASSERT_TRUE(ReadAngleFile(dir.file("angles.tsv"), &angles).ok());
-  const synth::ScoreSummary s = synth::ScoreAngles(truth, angles).summary;
+  const synth::ScoreSummary s = AnalyseAndScore(o, sample + "truth.tsv");
   EXPECT_GE(s.coverage, 0.98);
   EXPECT_LE(s.upper.mae, 2.5);
   EXPECT_LE(s.fore.mae, 2.5);
