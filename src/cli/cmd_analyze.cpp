@@ -52,6 +52,8 @@ const std::map<std::string, std::set<EngineKind>>& EngineFlags() {
       {"--standstill-frames", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--threshold", {EngineKind::kBgsub}},
       {"--shoulder", {EngineKind::kBgsub, EngineKind::kLk}},
+      {"--elbow", {EngineKind::kLk}},
+      {"--wrist", {EngineKind::kLk}},
       {"--roi", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--initial-upper", {EngineKind::kLk}},
       {"--initial-fore", {EngineKind::kLk}},
@@ -86,7 +88,7 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
   int standstill = 60;
   int threshold = o.engine.bgsub.threshold;
   bool thesis = false;
-  cv::Point2d shoulder;
+  cv::Point2d shoulder, elbow, wrist;
   cv::Rect roi;
   ArgParser p(
       "analyze",
@@ -96,13 +98,19 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
       "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine lk\n"
       "          (--background BG.png | --background-frames K | --shoulder X,Y) [--start F]\n"
       "          [--standstill-frames 60] [--initial-upper -90] [--initial-fore -90]\n"
+      "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine lk\n"
+      "          --shoulder X,Y --elbow X,Y --wrist X,Y [--start F]\n"
       "  armmimic-cli analyze INPUT... -o ANGLES.tsv --engine marker --reference REF.png\n"
       "          [--low 20] [--high 80]\n"
       "  Arm engines also take [--roi X,Y,W,H] [--shoulder X,Y] [--thesis].",
       "Turns a video (or images) into an angle file v1, one row per analysed frame.\n"
-      "bgsub/lk: frames [F, F+standstill) are the standstill (no rows); every later frame is a\n"
-      "row. marker: one row per input image, in input order. Ctrl-C keeps the rows so far in a\n"
-      "valid file marked complete=no (exit 1).\n" +
+      "bgsub, and lk without --shoulder: frames [F, F+standstill) are the standstill (no rows);\n"
+      "every later frame is a row. lk with --shoulder has no standstill: frame F is the known\n"
+      "starting posture and already gets a row (--standstill-frames is then refused). With\n"
+      "--elbow and --wrist too, the three clicked joints give the starting directions and the\n"
+      "segment lengths; otherwise the arm length is estimated and the estimate is printed.\n"
+      "marker: one row per input image, in input order. Ctrl-C keeps the rows so far in a valid\n"
+      "file marked complete=no (exit 1).\n" +
           ParamList());
   p.Positionals(&o.inputs, "INPUT", 1, -1);
   p.String("-o,--output", &output, "ANGLES.tsv", "the angle file to write (required)");
@@ -122,6 +130,18 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
            [&](const std::string& v) {
              const std::string e = ParsePointArg(v, &shoulder);
              if (e.empty()) o.shoulder_px = shoulder;
+             return e;
+           });
+  p.Custom("--elbow", "X,Y", "lk: the elbow in frame F (with --shoulder and --wrist)",
+           [&](const std::string& v) {
+             const std::string e = ParsePointArg(v, &elbow);
+             if (e.empty()) o.elbow_px = elbow;
+             return e;
+           });
+  p.Custom("--wrist", "X,Y", "lk: the wrist in frame F (with --shoulder and --elbow)",
+           [&](const std::string& v) {
+             const std::string e = ParsePointArg(v, &wrist);
+             if (e.empty()) o.wrist_px = wrist;
              return e;
            });
   p.Custom("--roi", "X,Y,W,H", "bgsub/lk: analyse only this rectangle", [&](const std::string& v) {
@@ -165,6 +185,17 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
       return p.UsageError("--param " + assignment + " is not used by --engine " + engine_name);
     }
   }
+  if (o.engine.kind == EngineKind::kLk && p.Given("--shoulder") && p.Given("--standstill-frames")) {
+    return p.UsageError(
+        "--standstill-frames is not used by --engine lk with --shoulder: frame F is the starting "
+        "posture and gets a row");
+  }
+  if (p.Given("--elbow") && (p.Given("--initial-upper") || p.Given("--initial-fore"))) {
+    return p.UsageError(
+        std::string(p.Given("--initial-upper") ? "--initial-upper" : "--initial-fore") +
+        " cannot be given with --elbow and --wrist: the clicked joints give the "
+        "starting directions");
+  }
   o.engine.bgsub.standstill_frames = standstill;
   o.engine.lk.standstill_frames = standstill;
   o.engine.bgsub.threshold = threshold;
@@ -188,6 +219,11 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
     bar.SetTotal(total);
     bar.Update(done);
     frames_read = done;
+  };
+  cb.on_estimate = [&](const std::string& text) {
+    if (global.quiet) return;
+    bar.Finish();  // clears the bar line; the next update draws it again
+    std::cerr << "analyze: estimated: " << text << "\n";
   };
   AnalysisSummary summary;
   const Status st = AnalyzeToFile(o, output, cb, &summary);

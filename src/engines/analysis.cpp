@@ -35,6 +35,9 @@ std::string ShortNumber(double v) {
   return s;
 }
 
+// Shorter clicked segments give no usable direction or length.
+constexpr double kMinClickedSegmentPx = 4;
+
 bool Cancelled(const AnalysisCallbacks& cb) {
   return cb.cancel != nullptr && cb.cancel->load(std::memory_order_relaxed);
 }
@@ -97,13 +100,20 @@ Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
           " does not fit in " + info.path + " (" + SizeText(info.size) + ")"));
     }
   }
-  if (options.shoulder_px) {
-    const cv::Point2d& s = *options.shoulder_px;
+  const std::pair<const char*, const std::optional<cv::Point2d>*> joints[] = {
+      {"--shoulder", &options.shoulder_px},
+      {"--elbow", &options.elbow_px},
+      {"--wrist", &options.wrist_px}};
+  for (const auto& [flag, joint] : joints) {
+    if (!*joint) continue;
+    const cv::Point2d& s = **joint;
     if (s.x < 0 || s.y < 0 || s.x >= info.size.width || s.y >= info.size.height) {
-      return finish(
-          Status::Error("--shoulder is outside " + info.path + " (" + SizeText(info.size) + ")"));
+      return finish(Status::Error(std::string(flag) + " is outside " + info.path + " (" +
+                                  SizeText(info.size) + ")"));
     }
   }
+  context.elbow_px = options.elbow_px;
+  context.wrist_px = options.wrist_px;
   if (arm_engine) {
     if (!options.background_path.empty()) {
       st = LoadSized(options.background_path, "--background", info, &context.background);
@@ -188,6 +198,7 @@ Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
     const ArmMeasurement m = engine->Process(frame);
     summary->last_frame = frame.index;
     ++done;
+    if (!m.estimate.empty() && callbacks.on_estimate) callbacks.on_estimate(m.estimate);
     if (callbacks.on_measurement) callbacks.on_measurement(frame, m);
     if (m.row()) {
       ++summary->frames;
@@ -213,6 +224,10 @@ Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
 }  // namespace
 
 Status AnalysisOptions::Check() const {
+  if (engine.kind != EngineKind::kLk && (elbow_px || wrist_px)) {
+    return Status::Error(std::string(elbow_px ? "--elbow" : "--wrist") +
+                         " is used by --engine lk only");
+  }
   if (inputs.empty()) return Status::Error("no INPUT given (a video, images or a folder)");
   if (start < 0)
     return Status::Error("--start must be 0 or more (got " + std::to_string(start) + ")");
@@ -236,6 +251,22 @@ Status AnalysisOptions::Check() const {
       }
       break;
     case EngineKind::kLk:
+      if ((elbow_px || wrist_px) && !(shoulder_px && elbow_px && wrist_px)) {
+        return Status::Error(
+            "--elbow and --wrist go together with --shoulder: the arm's three joints in the start "
+            "frame");
+      }
+      if (elbow_px && wrist_px && shoulder_px) {
+        const double upper = cv::norm(*elbow_px - *shoulder_px);
+        const double fore = cv::norm(*wrist_px - *elbow_px);
+        if (upper < kMinClickedSegmentPx || fore < kMinClickedSegmentPx) {
+          return Status::Error(std::string(upper < kMinClickedSegmentPx ? "--elbow" : "--wrist") +
+                               " is less than " + std::to_string(int(kMinClickedSegmentPx)) +
+                               " pixels from the " +
+                               (upper < kMinClickedSegmentPx ? "shoulder" : "elbow") +
+                               ": the segment has no direction");
+        }
+      }
       if (!has_bg && !has_frames && !shoulder_px) {
         return Status::Error(
             "--engine lk needs one of --background, --background-frames or --shoulder");

@@ -5,6 +5,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "arm_gate.h"
 #include "armmimic/core/angles.h"
 #include "bgsub_arm.h"
 #include "bgsub_masks.h"
@@ -80,6 +81,12 @@ class BgsubEngine final : public Engine {
     standstill_bgr_sum_ = cv::Mat::zeros(region_.size(), CV_32FC3);
     standstill_count_ = 0;
     was_bent_ = false;
+    ArmGateOptions gate;
+    gate.max_speed_deg_s = options_.max_speed_deg_s;
+    gate.min_support = options_.min_support;
+    gate.confirm_frames = options_.confirm_frames;
+    gate.start_confirmed = false;  // until the standstill gives the rest pose (or a first run)
+    gate_ = ArmGate(gate);
     begun_ = true;
     return Status::Ok();
   }
@@ -106,11 +113,19 @@ class BgsubEngine final : public Engine {
       m.phase = MeasurementPhase::kSetup;
       m.note = "standstill " + std::to_string(standstill_count_) + "/" +
                std::to_string(options_.standstill_frames);
-      if (standstill_count_ == options_.standstill_frames) FinishStandstill();
+      if (standstill_count_ == options_.standstill_frames) {
+        FinishStandstill();
+        // The protocol's standstill: the arm hangs at its rest pose when the rows begin.
+        if (scene_.body_box || scene_.fixed_shoulder) {
+          gate_.Anchor(options_.rest_deg, options_.rest_deg, frame.time_s);
+        }
+      }
       FillSceneOverlay(&m);
       return m;
     }
     Measure(frame, &m);
+    if (!options_.thesis_mode)
+      gate_.Review(&m, m.phase == MeasurementPhase::kOk ? Support(m) : kNaN);
     return m;
   }
 
@@ -258,6 +273,38 @@ class BgsubEngine final : public Engine {
     m->fore_com_px = Offset(shoulder + dir * (upper_len + scene_.ref_reach_px) * 0.5, o);
   }
 
+  // Share of the fitted arm (shoulder to elbow to wrist, the joints' ends left out) that lies on
+  // the person mask (frame vs background, one pixel of tolerance): a pick that runs over the
+  // empty room is not the arm. The arm's own pixels are the person's too.
+  double Support(const ArmMeasurement& m) const {
+    if (!m.shoulder_px || !m.elbow_px || !m.wrist_px || buffers_.person.empty()) return kNaN;
+    const cv::Point2d o(region_.tl());
+    const cv::Point2d joints[3] = {*m.shoulder_px - o, *m.elbow_px - o, *m.wrist_px - o};
+    const cv::Mat& person = buffers_.person;
+    int on = 0, total = 0;
+    for (int seg = 0; seg < 2; ++seg) {
+      const cv::Point2d a = joints[seg], b = joints[seg + 1];
+      const double len = std::hypot(b.x - a.x, b.y - a.y);
+      const int n = std::max(2, static_cast<int>(len / 2));
+      for (int k = 0; k < n; ++k) {
+        const double t = seg == 0 ? 0.2 + 0.8 * k / n : 0.9 * k / n;
+        const cv::Point p(cvRound(a.x + t * (b.x - a.x)), cvRound(a.y + t * (b.y - a.y)));
+        if (p.x < 0 || p.y < 0 || p.x >= person.cols || p.y >= person.rows) continue;
+        ++total;
+        bool hit = false;
+        for (int dy = -1; dy <= 1 && !hit; ++dy) {
+          for (int dx = -1; dx <= 1 && !hit; ++dx) {
+            const cv::Point q(p.x + dx, p.y + dy);
+            hit = q.x >= 0 && q.y >= 0 && q.x < person.cols && q.y < person.rows &&
+                  person.at<uchar>(q) != 0;
+          }
+        }
+        on += hit;
+      }
+    }
+    return total > 0 ? static_cast<double>(on) / total : kNaN;
+  }
+
   // yaw = acos(a/b) (5.2.6): a from this frame, b from the arm-length image. Improved: the arm's
   // reach from the shoulder along its axis, which a partly hidden arm does not shorten.
   double Yaw(const bgsub::ArmGeometry& g) const {
@@ -279,6 +326,7 @@ class BgsubEngine final : public Engine {
   cv::Mat standstill_bgr_sum_;
   int standstill_count_ = 0;
   bool was_bent_ = false;
+  ArmGate gate_;  // honest status: a pick off the person or an impossible jump is `lost`
   cv::Mat gray_;
   bgsub::Buffers buffers_;
 };

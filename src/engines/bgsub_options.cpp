@@ -52,6 +52,17 @@ Status BgsubOptions::Check() const {
     return Status::Error("bgsub upper_arm_fraction must be in (0.1, 0.9) (got " +
                          Str(upper_arm_fraction) + ")");
   }
+  if (!(max_speed_deg_s >= 10 && max_speed_deg_s <= 100000)) {
+    return Status::Error("bgsub max_speed_deg_s must be in [10, 100000] (got " +
+                         Str(max_speed_deg_s) + ")");
+  }
+  if (!(min_support >= 0 && min_support <= 1)) {
+    return Status::Error("bgsub min_support must be in [0, 1] (got " + Str(min_support) + ")");
+  }
+  if (confirm_frames < 1 || confirm_frames > 1000) {
+    return Status::Error("bgsub confirm_frames must be in [1, 1000] (got " + Str(confirm_frames) +
+                         ")");
+  }
   return Status::Ok();
 }
 

@@ -88,6 +88,14 @@ class AnchoredTracker : public Tracker {
     arm_len_ = start.arm_length_px > 0 ? start.arm_length_px : 0.4 * size_.height;
     lu_ = o_.upper_fraction * arm_len_;
     lf_ = arm_len_ - lu_;
+    support_ = 1;
+    prev_gray_.release();
+    lengths_measured_ = start.upper_length_px > 0 && start.fore_length_px > 0;
+    if (lengths_measured_) {
+      lu_ = start.upper_length_px;
+      lf_ = start.fore_length_px;
+      arm_len_ = lu_ + lf_;
+    }
     upper_deg_ = Wrap180(o_.initial_upper_deg);
     fore_deg_ = Wrap180(o_.initial_fore_deg);
     side_ = shoulders_.size() == 1 ? 0 : -1;
@@ -150,6 +158,7 @@ class AnchoredTracker : public Tracker {
       SetPoseMotions();
     }
     FitPose(bgr);
+    RateSupport(gray);
     UpdateFeatures();
     LearnElbow();
     const bool sparse =
@@ -170,7 +179,8 @@ class AnchoredTracker : public Tracker {
     const double max_hw = MaxHalfWidth();
     upper_bar_[side] = LearnArmBar(bgr, shoulder_, upper_deg_, lu_, max_hw);
     const double prior_len = arm_len_, prior_lu = lu_, prior_lf = lf_;
-    if (upper_bar_[side].valid && std::abs(AngleDiff(fore_deg_, upper_deg_)) < 5) {
+    if (!lengths_measured_ && upper_bar_[side].valid &&
+        std::abs(AngleDiff(fore_deg_, upper_deg_)) < 5) {
       const double sleeve =
           MeasureBarLength(bgr, upper_bar_[side], shoulder_, upper_deg_, 1.6 * arm_len_);
       if (sleeve > 0.5 * arm_len_ && sleeve < 1.5 * arm_len_) {
@@ -588,14 +598,57 @@ class AnchoredTracker : public Tracker {
     const double s = std::sin(bend * kPi / 180);
     elbow_num_ += s * s * (lu_ + offset);
     elbow_den_ += s * s;
-    lu_ = std::clamp(elbow_num_ / elbow_den_, 0.3 * arm_len_, 0.75 * arm_len_);
+    if (!lengths_measured_)
+      lu_ = std::clamp(elbow_num_ / elbow_den_, 0.3 * arm_len_, 0.75 * arm_len_);
     elbow_from_bar_ = true;
+  }
+
+  // How well this frame's evidence backs the pose. A part found on its sleeve is fully
+  // supported; otherwise its share of agreeing features counts. A part with neither keeps the
+  // support it had while the image around the arm did not change (an arm at rest sheds its
+  // features but is still where it was); once the image there changes it has none.
+  void RateSupport(const cv::Mat& gray) {
+    int n[2] = {0, 0};
+    for (const Feature& f : feats_) n[f.label] += f.in_fit ? 1 : 0;
+    const double need = std::max(1, o_.min_part_features / 2);
+    const double upper = upper_bar_used_ ? 1.0 : std::min(1.0, n[kUpper] / need);
+    const double fore =
+        fore_bar_used_ || reach_ < kEndOnReach ? 1.0 : std::min(1.0, n[kFore] / need);
+    double support = std::min(upper, fore);
+    if (support < 1 && !prev_gray_.empty() && !ArmRegionChanged(gray)) {
+      support = std::max(support, support_);
+    }
+    support_ = support;
+    gray.copyTo(prev_gray_);
+  }
+
+  // True when more than a few pixels in the band around the current pose differ clearly from
+  // the previous frame.
+  bool ArmRegionChanged(const cv::Mat& gray) const {
+    const double hw = std::max(3.0, 1.5 * HalfWidth());
+    const cv::Point2d joints[3] = {shoulder_, Elbow(), Wrist()};
+    int changed = 0, total = 0;
+    for (int seg = 0; seg < 2; ++seg) {
+      const cv::Point2d a = joints[seg], b = joints[seg + 1];
+      const double len = Dist(a, b);
+      if (!(len > 1)) continue;
+      const cv::Point2d u = (b - a) / len, nrm(-u.y, u.x);
+      for (double t = 0; t <= len; t += 2) {
+        for (double o = -hw; o <= hw; o += 2) {
+          const cv::Point p(cvRound(a.x + t * u.x + o * nrm.x), cvRound(a.y + t * u.y + o * nrm.y));
+          if (p.x < 0 || p.y < 0 || p.x >= gray.cols || p.y >= gray.rows) continue;
+          ++total;
+          changed += std::abs(int(gray.at<uchar>(p)) - int(prev_gray_.at<uchar>(p))) > kChangeGrey;
+        }
+      }
+    }
+    return total > 0 && changed > kChangedShare * total;
   }
 
   // Once the elbow bends, the features seeded on a straight arm tell where it is: those that
   // follow the upper arm lie before it, those that follow the forearm beyond it.
   void LearnElbow() {
-    if (reach_ < 1) return;
+    if (reach_ < 1 || lengths_measured_) return;
     if (std::abs(AngleDiff(fore_deg_, upper_deg_)) < o_.bend_for_elbow_deg) return;
     std::vector<std::pair<double, int>> samples;
     for (const Feature& f : feats_) {
@@ -691,8 +744,10 @@ class AnchoredTracker : public Tracker {
     }
     const std::string note = "anchored: " + std::to_string(upper.size()) + " upper, " +
                              std::to_string(fore.size()) + " forearm features";
-    return MakeTrackerPose(upper_deg_, fore_deg_, true, shoulder_, Elbow(), Wrist(),
-                           std::move(upper), std::move(fore), note);
+    TrackerPose pose = MakeTrackerPose(upper_deg_, fore_deg_, true, shoulder_, Elbow(), Wrist(),
+                                       std::move(upper), std::move(fore), note);
+    pose.support = support_;
+    return pose;
   }
 
   static constexpr double kMinLeverPx = 4;
@@ -707,6 +762,11 @@ class AnchoredTracker : public Tracker {
   cv::Point2d shoulder_;
   double head_limit_y_ = -1;
   double arm_len_ = 0, lu_ = 0, lf_ = 0;
+  bool lengths_measured_ = false;  // lu_ and lf_ from clicked joints: not re-learnt
+  double support_ = 1;             // RateSupport(): the start pose is fully supported
+  cv::Mat prev_gray_;
+  static constexpr int kChangeGrey = 25;         // a clear change, well above sensor noise
+  static constexpr double kChangedShare = 0.05;  // of the band's pixels
   double upper_deg_ = -90, fore_deg_ = -90;
   Motion2D tu_, tf_;
   std::vector<Feature> feats_;

@@ -10,6 +10,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "arm_gate.h"
 #include "armmimic/core/angle_file.h"
 #include "engine_factories.h"
 #include "lk_body_box.h"
@@ -65,12 +66,26 @@ class LkEngine : public Engine {
       }
       shoulder_given_ = s - cv::Point2d(roi_.tl());
     }
+    upper_length_px_ = fore_length_px_ = 0;
+    if (context.elbow_px && context.wrist_px && shoulder_given_) {
+      // The clicked joints: starting directions and segment lengths, measured.
+      const cv::Point2d s = *context.shoulder_px, e = *context.elbow_px, w = *context.wrist_px;
+      o_.initial_upper_deg = DirectionDeg(s, e);
+      o_.initial_fore_deg = DirectionDeg(e, w);
+      upper_length_px_ = cv::norm(e - s);
+      fore_length_px_ = cv::norm(w - e);
+    }
     if (!shoulder_given_ && background_.empty()) {
       return Status::Error(
           "lk: needs a background (--background or --background-frames) or a shoulder "
           "(--shoulder X,Y)");
     }
     tracker_ = o_.thesis_mode ? lk::CreateThesisTracker(o_) : lk::CreateAnchoredTracker(o_);
+    ArmGateOptions gate;
+    gate.max_speed_deg_s = o_.max_speed_deg_s;
+    gate.min_support = o_.min_support;
+    gate.confirm_frames = o_.confirm_frames;
+    gate_ = ArmGate(gate);
     state_ = shoulder_given_ ? State::kStart : State::kStandstill;
     standstill_count_ = 0;
     sum_.release();
@@ -101,7 +116,17 @@ class LkEngine : public Engine {
         start.bgr = view;
         start.shoulders = {*shoulder_given_};
         start.shoulder_fixed = true;
-        start.arm_length_px = 0.4 * roi_.height;
+        if (upper_length_px_ > 0) {
+          start.upper_length_px = upper_length_px_;
+          start.fore_length_px = fore_length_px_;
+          start.arm_length_px = upper_length_px_ + fore_length_px_;
+        } else {
+          start.arm_length_px = kArmToRoiHeight * roi_.height;
+          m.estimate = "lk: arm length " + FormatNumber(start.arm_length_px, 0) +
+                       " px estimated as " + FormatNumber(kArmToRoiHeight, 1) + " x the " +
+                       (roi_.size() == frame_size_ ? "frame" : "region of interest") +
+                       " height; give the elbow and wrist to measure it";
+        }
         state_ = State::kTracking;
         return Fill(tracker_->Start(start), m);
       }
@@ -120,6 +145,9 @@ class LkEngine : public Engine {
             {"standstill_frames", std::to_string(o_.standstill_frames)},
             {"initial_upper", FormatNumber(o_.initial_upper_deg, 2)},
             {"initial_fore", FormatNumber(o_.initial_fore_deg, 2)},
+            {"calibration", upper_length_px_ > 0 ? "joints"
+                            : shoulder_given_    ? "shoulder"
+                                                 : "standstill"},
             {"side", LkArmSideName(o_.side)},
             {"quality", FormatNumber(o_.quality_level, 4)},
             {"min_distance", FormatNumber(o_.min_distance_px, 2)},
@@ -166,18 +194,25 @@ class LkEngine : public Engine {
     }
     const double below_shoulder = body.box.y + body.box.height - body.left_shoulder.y;
     start.arm_length_px = kArmToTrunk * below_shoulder;
+    m.estimate = "lk: shoulder (" + FormatNumber(start.shoulders.front().x + roi_.x, 0) + "," +
+                 FormatNumber(start.shoulders.front().y + roi_.y, 0) + ") and arm length " +
+                 FormatNumber(start.arm_length_px, 0) +
+                 " px estimated from the standstill's body box";
     start.head_limit_y = body.left_shoulder.y - 0.05 * body.box.height;
     tracker_->Start(start);
     state_ = State::kTracking;
     return m;
   }
 
-  ArmMeasurement& Fill(const lk::TrackerPose& pose, ArmMeasurement& m) const {
+  ArmMeasurement& Fill(const lk::TrackerPose& pose, ArmMeasurement& m) {
     const cv::Point2d off(roi_.tl());
     m.phase = pose.ok ? MeasurementPhase::kOk : MeasurementPhase::kLost;
     m.note = pose.note;
     m.body_box = body_box_;
-    if (!pose.ok) return m;
+    if (!pose.ok) {
+      if (!o_.thesis_mode) gate_.Review(&m, pose.support);
+      return m;
+    }
     m.upper_deg = pose.upper_deg;
     m.fore_deg = pose.fore_deg;
     m.bend_deg = AngleDiff(pose.fore_deg, pose.upper_deg);
@@ -193,20 +228,26 @@ class LkEngine : public Engine {
     const cv::Point2f offf(static_cast<float>(off.x), static_cast<float>(off.y));
     for (const cv::Point2f& p : pose.upper_features) m.upper_features.push_back(p + offf);
     for (const cv::Point2f& p : pose.fore_features) m.fore_features.push_back(p + offf);
+    if (!o_.thesis_mode) gate_.Review(&m, pose.support);
     return m;
   }
 
   // Shoulder-to-wrist length as a fraction of the body box below the shoulder (a prior only:
   // the engine learns the elbow from the motion).
   static constexpr double kArmToTrunk = 0.9;
+  // With a shoulder but no elbow or wrist: shoulder-to-wrist as a fraction of the analysed
+  // height (a guess, reported as such).
+  static constexpr double kArmToRoiHeight = 0.4;
   static constexpr double kBentDeg = 10;  // overlay: drawn as bent beyond this
 
   LkOptions o_;
   std::unique_ptr<lk::Tracker> tracker_;
+  ArmGate gate_;  // honest status: weak evidence or an impossible jump is `lost`
   cv::Size frame_size_;
   cv::Rect roi_;
   cv::Mat background_;
   std::optional<cv::Point2d> shoulder_given_;
+  double upper_length_px_ = 0, fore_length_px_ = 0;  // clicked; 0 when not given
   State state_ = State::kStandstill;
   int standstill_count_ = 0;
   cv::Mat sum_;

@@ -71,6 +71,9 @@ Status LkOptions::Check() const {
       Range("prior_weight", prior_weight, 0, 1000),
       Range("bend_for_elbow_deg", bend_for_elbow_deg, 0, 180),
       Range("max_bend_deg", max_bend_deg, 90, 180),
+      Range("max_speed_deg_s", max_speed_deg_s, 10, 100000),
+      Range("min_support", min_support, 0, 1),
+      Range("confirm_frames", confirm_frames, 1, 1000),
   };
   for (const Status& st : checks) {
     if (!st) return st;

@@ -22,7 +22,11 @@ struct TrackerStart {
   std::vector<cv::Point2d> shoulders;
   bool shoulder_fixed = false;  // given by the user: not refined from the motion
   double arm_length_px = 0;     // prior: shoulder to wrist
-  double head_limit_y = -1;     // motion above this line (the head) does not decide the side
+  // Measured segment lengths (clicked joints); 0 when unknown. When both are given they are used
+  // as they are: not re-learnt from the sleeve or the features.
+  double upper_length_px = 0;
+  double fore_length_px = 0;
+  double head_limit_y = -1;  // motion above this line (the head) does not decide the side
 };
 
 struct TrackerPose {
@@ -31,6 +35,9 @@ struct TrackerPose {
   double upper_deg = kNaN;
   double fore_deg = kNaN;
   bool have_shoulder = false;  // false while the side is still undecided
+  // How much of this frame's evidence backs the pose, 0..1 (nan: not rated): the weaker part's
+  // share of sleeve and feature support (lk_anchored_tracker.cpp).
+  double support = kNaN;
   cv::Point2d shoulder{kNaN, kNaN}, elbow{kNaN, kNaN}, wrist{kNaN, kNaN};
   cv::Point2d upper_com{kNaN, kNaN}, fore_com{kNaN, kNaN};
   std::vector<cv::Point2f> upper_features, fore_features;

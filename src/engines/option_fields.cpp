@@ -149,6 +149,12 @@ const std::vector<OptionField<BgsubOptions>>& BgsubOptionFields() {
               "Upper-arm fraction", "upper arm / shoulder-to-fingertip reach"),
       Bool<B>("upper_from_person", &B::upper_from_person, true, "Upper arm from person mask",
               "an upper arm near rest is fitted in the person mask with the torso removed"),
+      Real<B>("max_speed_deg_s", &B::max_speed_deg_s, 600, 10, 100000, 0, "Fastest arm turn",
+              "a segment turning faster than this, degrees a second, is a wrong pick: lost"),
+      Real<B>("min_support", &B::min_support, 0.5, 0, 1, 2, "Minimum support",
+              "a fitted arm with less of its length on the person mask (0..1) is lost"),
+      Int<B>("confirm_frames", &B::confirm_frames, 3, 1, 1000, "Frames to re-acquire",
+             "agreeing frames before a new pick is trusted (also at the start)"),
   };
   return fields;
 }
@@ -237,6 +243,12 @@ const std::vector<OptionField<LkOptions>>& LkOptionFields() {
       Real<L>("max_bend_deg", &L::max_bend_deg, 150, 90, 180, 1, "Largest bend",
               "the forearm's sleeve is not searched folded further back onto the upper arm, "
               "degrees"),
+      Real<L>("max_speed_deg_s", &L::max_speed_deg_s, 600, 10, 100000, 0, "Fastest arm turn",
+              "a segment turning faster than this, degrees a second, is a wrong lock: lost"),
+      Real<L>("min_support", &L::min_support, 0.3, 0, 1, 2, "Minimum support",
+              "a pose backed by less sleeve and feature evidence (0..1) is lost"),
+      Int<L>("confirm_frames", &L::confirm_frames, 3, 1, 1000, "Frames to re-acquire",
+             "agreeing frames before the arm is trusted again after a rejected jump"),
   };
   return fields;
 }

@@ -89,10 +89,15 @@ synth::ArmSceneOptions Scene(uint64_t seed, synth::ArmMotion motion, synth::ArmS
 // is 4).
 constexpr double kMaeBound = 2.5;
 
-// The engine found the arm in >= 98 % of the motion frames, within `mae_bound` on average.
-void ExpectAccurate(const LkRun& run, double mae_bound = kMaeBound) {
-  EXPECT_GE(run.OkFraction(), 0.98);
+// The engine found the arm in >= 95 % of the motion frames (a frame whose pose jumps faster
+// than an arm turns is honestly `lost`), within `mae_bound` on average, and no `ok` frame is
+// confidently wrong (more than 15 degrees off) beyond `wrong_share` of the frames.
+void ExpectAccurate(const LkRun& run, double mae_bound = kMaeBound, double wrong_share = 0) {
+  EXPECT_GE(run.OkFraction(), 0.95);
   EXPECT_LE(run.Mae(), mae_bound) << "MAE " << run.Mae();
+  int wrong = 0;
+  for (double e : run.error) wrong += e > 15;
+  EXPECT_LE(wrong, wrong_share * run.rows) << "ok frames more than 15 degrees off";
 }
 
 TEST(LkAccuracy, SwingWithGivenShoulder) {
@@ -119,7 +124,9 @@ TEST(LkAccuracy, SwingLeftWithBackgroundAndStandstill) {
 // shortened arm, not beyond the hand.
 TEST(LkAccuracy, YawTurnedArmWithBackgroundAndStandstill) {
   const LkRun run = RunLk(Scene(7, synth::ArmMotion::kYaw, synth::ArmSide::kRight, 150), false);
-  ExpectAccurate(run);
+  // Turned 70 degrees away, the arm is seen at a third of its length: its direction is the least
+  // certain of all (measured: 2 of 150 frames over 15 degrees).
+  ExpectAccurate(run, kMaeBound, 0.02);
 }
 
 TEST(LkAccuracy, YawTurnedLeftArmWithGivenShoulder) {

@@ -29,6 +29,8 @@ struct AnalysisOptions {
   std::string reference_path;              // --reference (marker)
   int start = 0;                           // --start F: first standstill frame
   std::optional<cv::Point2d> shoulder_px;  // --shoulder X,Y
+  std::optional<cv::Point2d> elbow_px;     // --elbow X,Y (lk, with --shoulder and --wrist)
+  std::optional<cv::Point2d> wrist_px;     // --wrist X,Y
   std::optional<cv::Rect> roi;             // --roi X,Y,W,H
   Status Check() const;                    // messages name the flag
 };
@@ -41,6 +43,9 @@ struct AnalysisCallbacks {
   // Phase text for long setup steps ("background", "standstill", "analysis").
   std::function<void(const std::string&)> on_phase;
   const std::atomic<bool>* cancel = nullptr;  // set to stop early
+  // A value the engine had to estimate rather than measure (an arm length from the region of
+  // interest, ...), once, when it is decided: the shells show it so nothing is guessed silently.
+  std::function<void(const std::string&)> on_estimate;
 };
 
 struct AnalysisSummary {

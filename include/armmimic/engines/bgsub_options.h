@@ -33,6 +33,11 @@ struct BgsubOptions {
   double upper_arm_fraction = 0.45;      // upper arm / (shoulder-to-fingertip reach)
   bool upper_from_person = true;  // upper arm near rest: fit it in the person mask, torso removed
 
+  // --- Honest status (arm_gate.h), used only when thesis_mode is false ---
+  double max_speed_deg_s = 600;  // a segment turning faster than this is a wrong pick: lost
+  double min_support = 0.5;      // share of the fitted arm lying on the person mask, at least
+  int confirm_frames = 3;        // agreeing frames before a new pick is trusted
+
   Status Check() const;  // messages name the CLI flag where there is one
 };
 

@@ -64,6 +64,11 @@ struct LkOptions {
   double bend_for_elbow_deg = 20;  // the elbow is located only when bent this much
   double max_bend_deg = 150;       // the forearm's sleeve is not searched folded further back
 
+  // --- honest status (arm_gate.h); ignored in thesis_mode ---
+  double max_speed_deg_s = 600;  // a segment turning faster than this is a wrong lock: lost
+  double min_support = 0.3;      // a pose backed by less sleeve/feature evidence is lost
+  int confirm_frames = 3;        // agreeing frames before a new lock is trusted again
+
   Status Check() const;
 };
 

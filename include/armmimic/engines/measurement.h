@@ -24,6 +24,9 @@ struct ArmMeasurement {
   MeasurementPhase phase = MeasurementPhase::kLost;
   std::string file;        // marker engine: input image name
   std::string note;        // why lost, or which rule decided (shown in the GUI)
+  // A value estimated rather than measured, decided on this frame ("arm length 96 px from the
+  // region of interest's height"): reported once through AnalysisCallbacks::on_estimate.
+  std::string estimate;
 
   double upper_deg = kNaN;
   double fore_deg = kNaN;

@@ -1,0 +1,55 @@
+// ArmGate: the arm engines' last word on a frame. An engine proposes a pose with a support score
+// (how much of its own evidence backs it); the gate keeps it `ok` only when the evidence is
+// strong enough and the pose is one an arm can reach from the last accepted pose in the time
+// between them (still images, whose time stamps do not advance, have no speed to check).
+// Otherwise the frame is `lost`, with the reason in the note. After a rejected
+// jump the gate re-acquires the arm by itself once a few consecutive, mutually consistent
+// candidates with good support agree, so a wrong lock is not taken on the first frame.
+#pragma once
+
+#include <string>
+
+#include "armmimic/engines/measurement.h"
+
+namespace armmimic {
+
+struct ArmGateOptions {
+  double max_speed_deg_s = 600;  // segment turn rate no arm motion exceeds (upper and bend)
+  double min_support = 0.3;      // below: the evidence does not carry an estimate
+  int confirm_frames = 3;        // agreeing candidates before the gate trusts a new lock
+  bool start_confirmed = true;   // the first candidate is trusted (a calibrated start pose)
+};
+
+class ArmGate {
+ public:
+  explicit ArmGate(const ArmGateOptions& options = {}) : o_(options) { Reset(); }
+  void Reset();
+  // A known pose at `time_s` (the protocol's standstill pose): later candidates must be reachable
+  // from it, and the gate is confirmed.
+  void Anchor(double upper_deg, double fore_deg, double time_s);
+
+  // `m` is kOk when the engine has a candidate; `support` in [0, 1] (nan: not rated). Leaves it
+  // kOk, or turns it kLost (angles cleared, the reason in m->note).
+  void Review(ArmMeasurement* m, double support);
+
+  bool confirmed() const { return confirmed_; }
+
+ private:
+  struct Pose {
+    double upper_deg = 0, bend_deg = 0, time_s = 0;
+  };
+  // The largest turn an arm makes in `dt_s` seconds (at least one frame's worth).
+  double Reach(double dt_s) const;
+  bool Consistent(const Pose& from, const Pose& to) const;
+  static void Lose(ArmMeasurement* m, const std::string& why);
+
+  ArmGateOptions o_;
+  bool confirmed_ = false;  // the last accepted pose is trusted
+  bool have_last_ = false;
+  Pose last_;            // last accepted pose
+  Pose run_last_;        // last candidate of the current agreeing run (while unconfirmed)
+  int run_length_ = 0;   // agreeing candidates so far
+  double frame_dt_ = 0;  // smallest time step seen between candidates
+};
+
+}  // namespace armmimic
