@@ -316,10 +316,10 @@ const std::vector<OptionField<PoseOptions>>& PoseOptionFields() {
       Enum<P>("side", &P::side, PoseSide::kAuto, {"auto", "left", "right"}, "Arm",
               "--side: the person's own arm (auto: the better seen over the first second)")
           .Main(),
-      Real<P>("min_score", &P::min_score, 0.3, 0, 1, 2, "Minimum keypoint score",
+      Real<P>("min_score", &P::min_score, 0.4, 0, 1, 2, "Minimum keypoint score",
               "a shoulder, elbow or wrist scored lower is not seen: lost")
           .Main(),
-      Real<P>("min_length_ratio", &P::min_length_ratio, 0.5, 0, 1, 2, "Minimum segment length",
+      Real<P>("min_length_ratio", &P::min_length_ratio, 0.55, 0, 1, 2, "Minimum segment length",
               "a segment shorter than this share of its usual length points at the camera: lost")
           .Main(),
       Real<P>("crop_score", &P::crop_score, 0.2, 0, 1, 2, "Crop keypoint score",

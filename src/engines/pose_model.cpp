@@ -56,6 +56,9 @@ Status CheckPinned(const std::string& dir) {
   for (const PinnedFile& f : kPinned) {
     const std::string path = dir + "/" + f.name;
     if (!FileExists(path)) return Status::Error(path + " not found; " + kFetchAdvice);
+  }
+  for (const PinnedFile& f : kPinned) {
+    const std::string path = dir + "/" + f.name;
     const long long size = FileSize(path);
     if (size != f.bytes) {
       return Status::Error(path + " is " + (size < f.bytes ? "truncated" : "not the pinned file") +

@@ -13,10 +13,10 @@ enum class PoseSide { kAuto, kLeft, kRight };  // kAuto: the arm better seen ove
 struct PoseOptions {
   PoseSide side = PoseSide::kAuto;
   // A shoulder, elbow or wrist scored below this is not seen: the row is lost.
-  double min_score = 0.3;
+  double min_score = 0.4;
   // A segment shorter than this share of its usual length over the clip points at the camera:
   // its 2-D direction means nothing, the row is lost.
-  double min_length_ratio = 0.5;
+  double min_length_ratio = 0.55;
   // Crop tracking (as in MoveNet's demo): torso keypoints above this score place the next crop;
   // below it, or when an arm keypoint drops below min_score, the next frame searches the whole
   // image again.
