@@ -166,8 +166,8 @@ QWidget* EngineSettingsPanel::makeInputs() {
     QDoubleSpinBox** spins = joint == 0 ? elbow_ : wrist_;
     auto* row = new QHBoxLayout;
     for (int i = 0; i < 2; ++i) {
-      spins[i] = DSpin(0, 100000, 0, 1, tr("pixels"),
-                       QString(joint == 0 ? "elbow" : "wrist") + axes[i]);
+      spins[i] =
+          DSpin(0, 100000, 0, 1, tr("pixels"), QString(joint == 0 ? "elbow" : "wrist") + axes[i]);
       row->addWidget(new QLabel(QString(axes[i]).toLower()));
       row->addWidget(spins[i], 1);
     }

@@ -24,7 +24,7 @@ namespace {
 struct Reference {
   std::string name;  // "synth_110", "video_8"
   int frame = 0;
-  PoseKeypoints k;   // in input pixels (0..192)
+  PoseKeypoints k;  // in input pixels (0..192)
 };
 
 std::vector<Reference> ReadReferences(const std::string& path) {
@@ -85,8 +85,9 @@ void CheckParity(const std::vector<Reference>& refs,
       errors.push_back(std::abs(AngleDiff(mine[i], theirs[i])));
     }
   }
-  std::printf("arm directions against TensorFlow.js: median %.2f, p90 %.2f, max %.2f degrees (%zu)\n",
-              Quantile(errors, 0.5), Quantile(errors, 0.9), Quantile(errors, 1.0), errors.size());
+  std::printf(
+      "arm directions against TensorFlow.js: median %.2f, p90 %.2f, max %.2f degrees (%zu)\n",
+      Quantile(errors, 0.5), Quantile(errors, 0.9), Quantile(errors, 1.0), errors.size());
   EXPECT_LE(Quantile(errors, 0.5), 1.0);
   EXPECT_LE(Quantile(errors, 0.9), 3.0);
 }
@@ -140,6 +141,56 @@ TEST(PoseEngineTest, ASceneWithNobodyGivesLostRows) {
     EXPECT_TRUE(m.row());
     EXPECT_LT(m.confidence, 0.4);
   }
+}
+
+// The generated person (moving arm on screen right: the person's own left), every 8th frame of
+// the motion: directions within a few degrees of the truth, every row ok, none confidently wrong.
+TEST(PoseEngineTest, FindsTheGeneratedArmsKnownDirections) {
+  synth::ArmSceneOptions o;
+  synth::ArmSceneRenderer scene(o);
+  auto engine = StartPose(o.size, PoseSide::kLeft);
+  std::vector<double> errors;
+  int ok = 0, rows = 0;
+  for (int i = o.first_motion_frame(); i < o.frame_count(); i += 8) {
+    Frame f;
+    f.index = i;
+    synth::ArmTruth truth;
+    f.image = scene.Render(i, &truth);
+    const ArmMeasurement m = engine->Process(f);
+    ++rows;
+    if (m.phase != MeasurementPhase::kOk) continue;
+    ++ok;
+    errors.push_back(std::abs(AngleDiff(m.upper_deg, truth.upper_deg)));
+    errors.push_back(std::abs(AngleDiff(m.fore_deg, truth.fore_deg)));
+    EXPECT_GE(m.confidence, 0.4);
+  }
+  ASSERT_FALSE(errors.empty());
+  std::printf("generated arm: %d of %d rows ok, median %.1f, max %.1f degrees\n", ok, rows,
+              Quantile(errors, 0.5), Quantile(errors, 1.0));
+  EXPECT_GE(ok, rows * 8 / 10);
+  EXPECT_LE(Quantile(errors, 0.5), 5.0);
+  EXPECT_LE(Quantile(errors, 1.0), 15.0);  // no ok row confidently wrong
+}
+
+// --auto-calibrate's joints on the generated person's start frame, against the truth.
+TEST(PoseEngineTest, AutoCalibrateFindsTheGeneratedArmsJoints) {
+  test::TempDir dir;
+  synth::ArmSceneOptions o;
+  o.motion_frames = 2;
+  ASSERT_TRUE(synth::WriteArmScene(o, dir.path(), nullptr).ok());
+  synth::ArmSceneRenderer scene(o);
+  synth::ArmTruth truth;
+  scene.Render(o.first_motion_frame(), &truth);
+  PoseArm arm;
+  PoseSide side = PoseSide::kAuto;
+  const Status st = DetectArmJoints({dir.file("scene.avi")}, o.first_motion_frame(),
+                                    PoseSide::kLeft, "", 0.4, &arm, &side);
+  ASSERT_TRUE(st.ok()) << st.message();
+  EXPECT_EQ(side, PoseSide::kLeft);
+  const double upper = cv::norm(truth.elbow_px - truth.shoulder_px);
+  EXPECT_LT(cv::norm(arm.shoulder - truth.shoulder_px), 0.25 * upper);
+  EXPECT_LT(cv::norm(arm.elbow - truth.elbow_px), 0.25 * upper);
+  EXPECT_LT(cv::norm(arm.wrist - truth.wrist_px), 0.25 * upper);
 }
 
 }  // namespace

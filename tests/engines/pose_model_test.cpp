@@ -92,8 +92,8 @@ TEST(PoseModelTest, AShortWeightShardIsNamed) {
   WriteFile(dir.file("w.bin"), std::string(8, '\0'));
   Status st;
   EXPECT_EQ(PoseNetwork::LoadUnchecked(dir.file("model.json"), &st), nullptr);
-  EXPECT_EQ(st.message(), dir.file("w.bin") +
-                              " is truncated: 8 bytes, but weight k needs bytes up to 16");
+  EXPECT_EQ(st.message(),
+            dir.file("w.bin") + " is truncated: 8 bytes, but weight k needs bytes up to 16");
 }
 
 TEST(PoseModelTest, TheSearchOrderStartsWithTheFlagThenTheEnvironment) {

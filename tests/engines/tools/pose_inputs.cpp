@@ -58,8 +58,7 @@ int main(int argc, char** argv) {
       }
       bgr = frame.image;
     }
-    const cv::Mat rgb =
-        armmimic::PoseNetwork::MakeInput(bgr, armmimic::WholeImageCrop(bgr.size()));
+    const cv::Mat rgb = armmimic::PoseNetwork::MakeInput(bgr, armmimic::WholeImageCrop(bgr.size()));
     const std::string path = out + "/" + kind + "_" + std::to_string(index) + ".ppm";
     if (!WritePpm(path, rgb)) {
       std::cerr << path << ": cannot write\n";
