@@ -54,7 +54,9 @@ class PoseEngine : public Engine {
     m.time_s = frame.time_s;
     const cv::Mat image = frame.image(area_);
     const PoseCrop whole = WholeImageCrop(image.size());
-    PoseKeypoints k = net_->Run(image, tracking_ ? crop_ : whole);
+    const bool cropped =
+        tracking_ && (crop_.x != whole.x || crop_.y != whole.y || crop_.size != whole.size);
+    PoseKeypoints k = net_->Run(image, cropped ? crop_ : whole);
     if (o_.side == PoseSide::kAuto) {  // without a first-second choice: the better arm now
       o_.side = ArmOf(k, PoseSide::kLeft).score >= ArmOf(k, PoseSide::kRight).score
                     ? PoseSide::kLeft
@@ -62,7 +64,7 @@ class PoseEngine : public Engine {
       m.estimate = std::string("arm: the person's ") + PoseSideName(o_.side) +
                    " (the better seen in the first frame)";
     }
-    if (tracking_ && ArmOf(k, o_.side).score < o_.min_score) {
+    if (cropped && ArmOf(k, o_.side).score < o_.min_score) {
       // The scores dropped inside the crop: search the whole image again.
       const PoseKeypoints again = net_->Run(image, whole);
       if (ArmOf(again, o_.side).score > ArmOf(k, o_.side).score) k = again;
