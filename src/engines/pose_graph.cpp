@@ -22,15 +22,17 @@ std::string Base64Decode(const std::string& in) {
     return -1;
   };
   std::string out;
-  int bits = 0, acc = 0;
+  int bits = 0;
+  unsigned acc = 0;  // holds fewer than 14 bits between characters
   for (char c : in) {
     const int v = value(c);
     if (v < 0) continue;  // '=' padding, whitespace
-    acc = (acc << 6) | v;
+    acc = (acc << 6) | static_cast<unsigned>(v);
     bits += 6;
     if (bits >= 8) {
       bits -= 8;
-      out += static_cast<char>((acc >> bits) & 0xff);
+      out += static_cast<char>((acc >> bits) & 0xffu);
+      acc &= (1u << bits) - 1;
     }
   }
   return out;
