@@ -77,7 +77,12 @@ MainWindow::MainWindow(QWidget* parent)
   updateStatus();
 }
 
-MainWindow::~MainWindow() { job_->cancel(); }
+MainWindow::~MainWindow() {
+  job_->cancel();
+  // The Robot panel is deleted with its dock, after this window's members and the objects it
+  // talks to: a send it aborts on the way out must report to nobody.
+  robot_->disconnect();
+}
 
 void MainWindow::wireActions() {
   AppActions* a = actions_;

@@ -538,9 +538,11 @@ bool RobotPanel::sendPlan(bool confirmed) {
                         .arg(link_->device()),
                     QMessageBox::Cancel, this);
     box.setInformativeText("<pre>" + ranges.toHtmlEscaped() + "</pre>");
-    box.addButton(tr("Move the robot"), QMessageBox::AcceptRole);
+    QPushButton* move = box.addButton(tr("Move the robot"), QMessageBox::AcceptRole);
     box.setDefaultButton(QMessageBox::Cancel);
-    if (box.exec() == QMessageBox::Cancel) return false;
+    box.exec();
+    // Only the button that says so moves the arm: Esc, Cancel or closing the question do not.
+    if (box.clickedButton() != static_cast<QAbstractButton*>(move)) return false;
   }
   replies_->clear();
   const bool ok = link_->send(program, profile_, plan_.SendLimits());
