@@ -82,27 +82,27 @@ std::vector<AngleRow> AnglePlot::visibleRows() const {
 QString AnglePlot::saveImage(const QString& path) {
   const bool cursor_shown = cursor_->isVisible();
   cursor_->setVisible(false);  // the video's position is not part of the data
-  const QRectF source = scene()->sceneRect();
+  const QRect source = viewport()->rect();  // what the widget shows, in its own pixels
   QString error;
   if (QFileInfo(path).suffix().compare("svg", Qt::CaseInsensitive) == 0) {
     QSvgGenerator svg;
     svg.setFileName(path);
-    svg.setSize(source.size().toSize());
-    svg.setViewBox(QRectF(QPointF(0, 0), source.size()));
+    svg.setSize(source.size());
+    svg.setViewBox(QRectF(QPointF(0, 0), QSizeF(source.size())));
     svg.setTitle(tr("armmimic angles"));
     QPainter painter;
     if (!painter.begin(&svg)) {
       error = tr("%1: cannot write the SVG file").arg(path);
     } else {
-      scene()->render(&painter, QRectF(QPointF(0, 0), source.size()), source);
+      render(&painter, QRectF(QPointF(0, 0), QSizeF(source.size())), source);
       painter.end();
     }
   } else {
-    QImage image((source.size() * 2).toSize(), QImage::Format_ARGB32);
+    QImage image(source.size() * 2, QImage::Format_ARGB32);
     image.fill(palette().color(QPalette::Base));
     QPainter painter(&image);
     painter.setRenderHint(QPainter::Antialiasing);
-    scene()->render(&painter, QRectF(image.rect()), source);
+    render(&painter, QRectF(image.rect()), source);
     painter.end();
     if (!image.save(path, "PNG")) error = tr("%1: cannot write the PNG file").arg(path);
   }
