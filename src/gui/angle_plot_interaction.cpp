@@ -81,7 +81,7 @@ std::vector<AngleRow> AnglePlot::visibleRows() const {
 
 QString AnglePlot::saveImage(const QString& path) {
   const bool cursor_shown = cursor_->isVisible();
-  cursor_->setVisible(false);  // the video's position is not part of the data
+  cursor_->setVisible(false);               // the video's position is not part of the data
   const QRect source = viewport()->rect();  // what the widget shows, in its own pixels
   QString error;
   if (QFileInfo(path).suffix().compare("svg", Qt::CaseInsensitive) == 0) {

@@ -115,7 +115,7 @@ class MainWindow : public QMainWindow {
   struct Pending {
     ResultStore results;
     QString angle_path;
-    int frame = 0;
+    int frame = -1;  // the frame to show (-1: the first)
   };
   std::optional<Pending> pending_;  // results waiting for their video to open
 };

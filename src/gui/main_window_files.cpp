@@ -91,7 +91,10 @@ bool MainWindow::takePendingResults() {
   const Pending p = *pending_;
   pending_.reset();
   showResults(p.results, p.angle_path);
-  player_->seek(p.frame);
+  // After the player's own first request for frame 0, which it makes once this returns.
+  if (p.frame < 0) return true;
+  QMetaObject::invokeMethod(
+      player_, [player = player_, frame = p.frame] { player->seek(frame); }, Qt::QueuedConnection);
   return true;
 }
 
@@ -129,7 +132,7 @@ bool MainWindow::openAngleFile(const QString& path) {
   const QString video = QFileInfo(path).dir().filePath(QString::fromStdString(file.Meta("source")));
   const bool same = player_->isOpen() && QFileInfo(player_->inputs().first()) == QFileInfo(video);
   if (!file.Meta("source").empty() && QFileInfo(video).isFile() && !same) {
-    pending_ = Pending{results, path, view_->frameIndex()};
+    pending_ = Pending{results, path, -1};
     openInputs({video});
     return true;
   }
