@@ -27,9 +27,9 @@ AnglePanel::AnglePanel(QWidget* parent)
   connect(reset, &QAction::triggered, plot_, &AnglePlot::resetZoom);
   connect(seconds, &QAction::toggled, plot_, &AnglePlot::setTimeAxis);
   connect(image, &QAction::triggered, this, [this] {
-    const QString base =
-        suggested_base_.isEmpty() ? RecentFiles::lastDir() + "/angles" : suggested_base_;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save the plot"), base + "-plot.png",
+    const QString suggested =
+        suggested_path_.isEmpty() ? RecentFiles::lastDir() + "/angles-plot.png" : suggested_path_;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save the plot"), suggested,
                                                       tr("PNG image (*.png);;SVG drawing (*.svg)"));
     if (!path.isEmpty()) saveImage(path);
   });

@@ -24,8 +24,8 @@ class AnglePanel : public QWidget {
   AnglePlot* plot() const { return plot_; }
   // What the readout shows ("" when the mouse is not over the plot).
   QString readout() const;
-  // Where "Save image…" suggests to write: this path without its suffix, plus ".png".
-  void setSuggestedBase(const QString& base_path) { suggested_base_ = base_path; }
+  // Where "Save image…" suggests to write ("scene-plot.png" beside the video).
+  void setSuggestedPath(const QString& path) { suggested_path_ = path; }
   // Writes the plot (PNG or SVG from the suffix) and reports it. False on error.
   bool saveImage(const QString& path);
   // Called when the video's frame rate is known: a time axis needs one.
@@ -40,7 +40,7 @@ class AnglePanel : public QWidget {
  private:
   std::unique_ptr<Ui::AnglePanelForm> ui_;
   AnglePlot* plot_;
-  QString suggested_base_;
+  QString suggested_path_;
 };
 
 }  // namespace armmimic::gui

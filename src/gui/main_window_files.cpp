@@ -55,6 +55,8 @@ void MainWindow::wireFileActions() {
   connect(a->cancel, &QAction::triggered, robot_, [this] {
     if (robot_->link()->isSending()) robot_->link()->abort();
   });
+  connect(player_, &VideoPlayer::opened, this,
+          [this] { angles_->setSuggestedPath(suggestedPath("plot.png")); });
   connect(player_, &VideoPlayer::error, this, [this] {
     // The video an angle file or session names did not open: its results still show.
     if (!pending_) return;
@@ -112,9 +114,21 @@ bool MainWindow::openAngleFile(const QString& path) {
     log_->error(QString::fromStdString(st.message()));
     return false;
   }
-  // The engine, start frame and parameters the file was made with; the input images stay.
+  // The engine, start frame and parameters the file was made with; the input images and the
+  // other engines' parameters stay.
   AnalysisOptions o = settings_->options();
-  o.engine = recorded.engine;
+  o.engine.kind = recorded.engine.kind;
+  switch (recorded.engine.kind) {
+    case EngineKind::kBgsub:
+      o.engine.bgsub = recorded.engine.bgsub;
+      break;
+    case EngineKind::kLk:
+      o.engine.lk = recorded.engine.lk;
+      break;
+    case EngineKind::kMarker:
+      o.engine.marker = recorded.engine.marker;
+      break;
+  }
   o.start = recorded.start;
   settings_->setOptions(o);
   for (const std::string& s : skipped) {

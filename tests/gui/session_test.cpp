@@ -78,6 +78,10 @@ TEST_F(SessionTest, AnAngleFileFromTheCliOpensWithItsVideoOptionsAndPlan) {
   ASSERT_TRUE(ReadAngleFile(tsv, &file).ok());
   MainWindow w;
   Show(w);
+  AnalysisOptions mine = w.settingsPanel()->options();
+  mine.engine.kind = EngineKind::kLk;
+  mine.engine.lk.max_corners = 99;  // another engine's setting: not the file's to change
+  w.settingsPanel()->setOptions(mine);
   ASSERT_TRUE(w.openAngleFile(QString::fromStdString(tsv))) << w.log()->text().toStdString();
   // The video named in the header lies beside the file: it opens, for the overlay.
   ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen() && w.results().rows() > 0; }));
@@ -98,6 +102,7 @@ TEST_F(SessionTest, AnAngleFileFromTheCliOpensWithItsVideoOptionsAndPlan) {
   EXPECT_EQ(o.engine.bgsub.closing_size, 7);
   EXPECT_EQ(o.engine.bgsub.standstill_frames, scenes().standstill_frames);
   EXPECT_EQ(o.start, scenes().background_frames);
+  EXPECT_EQ(o.engine.lk.max_corners, 99);
   // The robot panel plans from it, and exporting gives the file back as it is.
   EXPECT_TRUE(w.robotPanel()->plan().planned()) << w.log()->text().toStdString();
   EXPECT_FALSE(w.hasUnsavedResults());
@@ -275,6 +280,7 @@ TEST_F(SessionTest, CsvSitsNextToTheAngleFileWithTheVideosName) {
   EXPECT_TRUE(w.suggestedPath("csv").endsWith("/scene.csv"))
       << w.suggestedPath("csv").toStdString();
   EXPECT_TRUE(w.suggestedPath("tsv").endsWith("/scene.tsv"));
+  EXPECT_TRUE(w.suggestedPath("plot.png").endsWith("/scene-plot.png"));
   ASSERT_TRUE(w.exportAngles(QString::fromStdString(tmp_.file("scene.tsv"))));
   AngleFile file;
   ASSERT_TRUE(ReadAngleFile(tmp_.file("scene.tsv"), &file).ok());
