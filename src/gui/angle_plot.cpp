@@ -235,24 +235,21 @@ void AnglePlot::redrawLayers() {
   clip_->setRect(area);
   for (int c = 0; c < 4; ++c) {
     QPainterPath path;
-    bool drawing = false;
+    QPolygonF run;  // consecutive measured frames
+    auto flush = [&] {
+      if (run.size() == 1) path.addEllipse(run.front(), 2.0, 2.0);  // a lone frame: a dot
+      if (run.size() > 1) path.addPolygon(run);
+      run.clear();
+    };
     int previous = -2;
     for (const AngleRow& row : rows_) {
       const double v = valueOf(row, PlotCurve(c));
-      if (!std::isfinite(v)) {
-        drawing = false;  // a gap: the next value starts a new line
-        continue;
-      }
-      const QPointF p = toChart(row.frame, v);
-      if (drawing && row.frame == previous + 1) {
-        path.lineTo(p);
-      } else {
-        path.moveTo(p);
-        path.lineTo(p);  // a single measured frame still shows as a dot
-      }
-      drawing = true;
+      if (!std::isfinite(v) || row.frame != previous + 1) flush();  // a gap ends the line
+      if (!std::isfinite(v)) continue;
+      run << toChart(row.frame, v);
       previous = row.frame;
     }
+    flush();
     curve_items_[c]->setPath(path);
   }
   // A lost frame is a red band one frame wide, with a mark on the bottom edge.

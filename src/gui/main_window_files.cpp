@@ -265,9 +265,11 @@ bool MainWindow::confirmClose() {
   }
   if (unsaved_) {
     QMessageBox box(QMessageBox::Question, tr("Quit without saving?"),
-                    tr("The angles of the last analysis are in no exported file or saved "
-                       "session yet."),
+                    tr("The angles of the last analysis are not saved."),
                     QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
+    box.setInformativeText(
+        tr("Export them as an angle file, or quit and lose them. (A saved "
+           "session keeps them too: File > Save session.)"));
     box.setObjectName("quitUnsaved");
     box.button(QMessageBox::Save)->setText(tr("Export angle file…"));
     box.setDefaultButton(QMessageBox::Save);

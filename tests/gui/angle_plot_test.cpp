@@ -106,15 +106,15 @@ TEST_F(AnglePlotTest, YawIsListedOnlyForEnginesThatMeasureIt) {
   EXPECT_TRUE(plot.yawShown());
 }
 
-// 21 frames at 30 fps, upper arm 30°, forearm 60°, frame 10 lost and yaw measured only on
-// frames 0..4 (a straight arm) and 15..20.
+// 21 frames at 30 fps, upper arm 30°, forearm 60°, frames 10, 17 and 19 lost (18 alone between
+// two lost ones) and yaw measured only on frames 0..4 (a straight arm) and 15..20.
 gui::ResultStore RowsWithALostFrame() {
   gui::ResultStore store;
   for (int f = 0; f <= 20; ++f) {
     ArmMeasurement m;
     m.frame = f;
     m.time_s = f / 30.0;
-    m.phase = f == 10 ? MeasurementPhase::kLost : MeasurementPhase::kOk;
+    m.phase = (f == 10 || f == 17 || f == 19) ? MeasurementPhase::kLost : MeasurementPhase::kOk;
     m.upper_deg = 30;
     m.fore_deg = 60;
     m.yaw_deg = (f < 5 || f >= 15) ? 20 : kNaN;
@@ -144,10 +144,11 @@ class PlotOnScreen : public AnglePlotTest {
 
 TEST_F(PlotOnScreen, ALostFrameLeavesAGap) {
   EXPECT_EQ(plot_.runs(gui::PlotCurve::kUpper),
-            (std::vector<std::pair<int, int>>{{0, 9}, {11, 20}}));
-  EXPECT_EQ(plot_.runs(gui::PlotCurve::kYaw), (std::vector<std::pair<int, int>>{{0, 4}, {15, 20}}));
-  EXPECT_EQ(plot_.lostCount(), 1);
-  EXPECT_EQ(plot_.pointCount(), 20);
+            (std::vector<std::pair<int, int>>{{0, 9}, {11, 16}, {18, 18}, {20, 20}}));
+  EXPECT_EQ(plot_.runs(gui::PlotCurve::kYaw),
+            (std::vector<std::pair<int, int>>{{0, 4}, {15, 16}, {18, 18}, {20, 20}}));
+  EXPECT_EQ(plot_.lostCount(), 3);
+  EXPECT_EQ(plot_.pointCount(), 18);
   // On screen: the upper-arm line crosses frame 5 at 30 degrees and does not cross frame 10.
   const QImage shot = plot_.grab().toImage();
   auto line_near = [&](double frame) {
@@ -160,6 +161,8 @@ TEST_F(PlotOnScreen, ALostFrameLeavesAGap) {
   };
   EXPECT_TRUE(line_near(5));
   EXPECT_TRUE(line_near(15));
+  EXPECT_TRUE(line_near(18));  // a lone measured frame still shows, as a dot
+  EXPECT_FALSE(line_near(17.4));
   EXPECT_FALSE(line_near(10));
   EXPECT_FALSE(line_near(9.5));
   EXPECT_FALSE(line_near(10.5));

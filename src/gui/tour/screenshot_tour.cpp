@@ -165,7 +165,14 @@ int main(int argc, char** argv) {
   w.player()->seek(205);
   Wait([&] { return w.view()->frameIndex() == 205; });
   Shot("07d-robot-3d");
+  // A J3 limit the pose breaks: the forearm turns red, and the plan report says which frames.
+  armmimic::robot::PlannerOptions tight = robot->plannerOptions();
+  tight.limits.max_deg[2] = -80;
+  robot->setPlannerOptions(tight);
+  Shot("07e-robot-3d-limit");
+  robot->resetPlannerDefaults();
   robot_dock->setFloating(false);
+  robot_dock->raise();
 
   robot->findChild<QTabWidget*>("robotTabs")->setCurrentIndex(1);
   robot->startSimulator(0.05);
