@@ -142,10 +142,14 @@ bool MainWindow::openAngleFile(const QString& path) {
                  .arg(path)
                  .arg(file.rows.size())
                  .arg(QString::fromStdString(file.Meta("engine"))));
-  // Its video, when it lies beside the file, for the overlay.
+  // Its video (or the marker engine's folder of views), when it lies beside the file, for the
+  // overlay. A single image named by a marker file is one view of several: not opened alone.
   const QString video = QFileInfo(path).dir().filePath(QString::fromStdString(file.Meta("source")));
-  const bool same = player_->isOpen() && QFileInfo(player_->inputs().first()) == QFileInfo(video);
-  if (!file.Meta("source").empty() && QFileInfo(video).isFile() && !same) {
+  const QFileInfo source(video);
+  const bool openable = !file.Meta("source").empty() &&
+                        (source.isDir() || (source.isFile() && file.Meta("engine") != "marker"));
+  const bool same = player_->isOpen() && QFileInfo(player_->inputs().first()) == source;
+  if (openable && !same) {
     pending_ = Pending{results, path, -1};
     openInputs({video});
     return true;

@@ -126,6 +126,26 @@ TEST_F(SessionTest, AnAngleFileFromTheCliOpensWithItsVideoOptionsAndPlan) {
   EXPECT_TRUE(w2.log()->text().contains(QString::fromStdString(tmp_.file("bad.tsv"))));
 }
 
+TEST_F(SessionTest, AMarkerFileOpensWithItsFolderOfViews) {
+  const std::string out = tmp_.file("views.tsv");
+  const CliResult r =
+      RunCli({"-q", "analyze", scenes().marker_dir + "/views", "-o", out, "--engine", "marker",
+              "--reference", scenes().marker_dir + "/reference.png"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // The views lie beside the file, as the header's source names them.
+  ASSERT_TRUE(QDir().rename(QString::fromStdString(tmp_.file("views.tsv")),
+                            QString::fromStdString(scenes().marker_dir + "/views.tsv")));
+  MainWindow w;
+  Show(w);
+  ASSERT_TRUE(w.openAngleFile(QString::fromStdString(scenes().marker_dir + "/views.tsv")));
+  ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen() && w.results().rows() > 0; }))
+      << w.log()->text().toStdString();
+  EXPECT_EQ(QFileInfo(w.player()->inputs().first()).fileName(), "views");
+  EXPECT_GT(w.plot()->bendCount(), 0);
+  EXPECT_EQ(w.settingsPanel()->options().engine.kind, EngineKind::kMarker);
+  QFile::remove(QString::fromStdString(scenes().marker_dir + "/views.tsv"));
+}
+
 TEST_F(SessionTest, ASessionRestoresVideoOptionsClicksAndResults) {
   const QString session = QString::fromStdString(tmp_.file("scene.armmimic"));
   std::string exported;
