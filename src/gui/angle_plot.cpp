@@ -5,14 +5,55 @@
 
 #include <QChart>
 #include <QFontMetricsF>
+#include <QGraphicsItem>
 #include <QGraphicsLayout>
 #include <QLegend>
 #include <QLegendMarker>
 #include <QLineSeries>
+#include <QPainter>
 #include <QScatterSeries>
 #include <QValueAxis>
 
 namespace armmimic::gui {
+
+// One layer of the plot: a path painted in the plot area. Unlike QGraphicsPathItem it never
+// works out the outline of its stroke (shape()), which for a curve of thousands of points cost
+// the view far more than painting it.
+class PlotLayer : public QGraphicsItem {
+ public:
+  explicit PlotLayer(QGraphicsItem* parent) : QGraphicsItem(parent) {}
+  void setPath(const QPainterPath& path) {
+    prepareGeometryChange();
+    path_ = path;
+    bounds_ = path.controlPointRect().adjusted(-3, -3, 3, 3);
+  }
+  void setPen(const QPen& pen) {
+    pen_ = pen;
+    update();
+  }
+  void setBrush(const QBrush& brush) {
+    brush_ = brush;
+    update();
+  }
+  QRectF boundingRect() const override { return bounds_; }
+  QPainterPath shape() const override {
+    QPainterPath p;
+    p.addRect(bounds_);
+    return p;
+  }
+  void paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) override {
+    painter->setPen(pen_);
+    painter->setBrush(brush_);
+    painter->drawPath(path_);
+  }
+
+ private:
+  QPainterPath path_;
+  QRectF bounds_;
+  QPen pen_ = Qt::NoPen;
+  QBrush brush_ = Qt::NoBrush;
+};
+
 namespace {
 
 const QColor kCurveColors[4] = {QColor(0xe0, 0xa0, 0x00), QColor(0x00, 0x9c, 0xd8),
@@ -70,14 +111,9 @@ AnglePlot::AnglePlot(QWidget* parent)
   clip_->setPen(Qt::NoPen);
   clip_->setFlag(QGraphicsItem::ItemClipsChildrenToShape);
   clip_->setZValue(5);  // above the grid, below the legend
-  lost_bands_ = new QGraphicsPathItem(clip_);
-  lost_bands_->setPen(Qt::NoPen);
-  lost_ticks_ = new QGraphicsPathItem(clip_);
-  lost_ticks_->setPen(Qt::NoPen);
-  for (QGraphicsPathItem*& item : curve_items_) {
-    item = new QGraphicsPathItem(clip_);
-    item->setBrush(Qt::NoBrush);
-  }
+  lost_bands_ = new PlotLayer(clip_);
+  lost_ticks_ = new PlotLayer(clip_);
+  for (PlotLayer*& item : curve_items_) item = new PlotLayer(clip_);
   cursor_ = new QGraphicsLineItem(clip_);
   connect(chart, &QChart::plotAreaChanged, this, &AnglePlot::fitDegreeTicks);
   connect(chart, &QChart::plotAreaChanged, this, &AnglePlot::redrawLayers);
@@ -126,12 +162,19 @@ void AnglePlot::applyRanges() {
   const double first = zoom_ ? zoom_->left() : 0;
   const double last = zoom_ ? zoom_->right() : last_frame_;
   x_->setTitleText(seconds_ ? tr("time (s)") : tr("frame"));
-  x_->setRange(xOf(first), xOf(last));
   const double span = xOf(last) - xOf(first);
   const double step = seconds_ ? NiceStep(span, -3) : NiceStep(span, 0);
+  // Qt Charts makes an item per tick: the old interval over the new range (a long video opened
+  // after a short one, a zoom out) would ask for thousands for a moment. One wide enough for
+  // both ranges first.
+  x_->setTickInterval(std::max({x_->tickInterval(), x_->max() - x_->min(), span}));
+  x_->setRange(xOf(first), xOf(last));
   x_->setTickInterval(step);
   x_->setLabelFormat(
       QString("%.%1f").arg(seconds_ ? std::max(0, int(-std::floor(std::log10(step)))) : 0));
+  if (y_->tickType() == QValueAxis::TicksDynamic) {  // as above
+    y_->setTickInterval(std::max({y_->tickInterval(), y_->max() - y_->min(), 360.0}));
+  }
   y_->setRange(zoom_ ? zoom_->top() : -180, zoom_ ? zoom_->bottom() : 180);
   fitDegreeTicks(chart()->plotArea());
   redrawLayers();
@@ -167,9 +210,9 @@ void AnglePlot::fitDegreeTicks(const QRectF& plot_area) {
       break;
     }
   }
-  y_->setTickType(QValueAxis::TicksDynamic);
-  y_->setTickAnchor(0);
   y_->setTickInterval(step);
+  y_->setTickAnchor(0);
+  y_->setTickType(QValueAxis::TicksDynamic);
   y_->setLabelFormat(step < 1 ? "%.1f" : "%.0f");
 }
 
@@ -230,37 +273,79 @@ QPointF AnglePlot::toChart(double frame, double deg) const {
                  area.bottom() - (deg - y0) / (y1 - y0) * area.height());
 }
 
+namespace {
+
+// Adds one run of consecutive frames (screen points, left to right) to `path`. A lone frame is
+// a dot. Where a run has more points than pixel columns, each column keeps its first, lowest,
+// highest and last point (the M4 reduction): the line drawn is the same, the path far shorter.
+void AddRun(const QPolygonF& run, QPainterPath* path) {
+  if (run.size() == 1) {
+    path->addEllipse(run.front(), 2.0, 2.0);
+    return;
+  }
+  if (run.size() <= 4 * (run.back().x() - run.front().x() + 1)) {
+    path->addPolygon(run);
+    return;
+  }
+  QPolygonF reduced;
+  for (int i = 0; i < run.size();) {
+    const double column = std::floor(run[i].x());
+    int j = i, low = i, high = i;
+    for (; j < run.size() && std::floor(run[j].x()) == column; ++j) {
+      if (run[j].y() < run[low].y()) low = j;
+      if (run[j].y() > run[high].y()) high = j;
+    }
+    reduced << run[i] << run[std::min(low, high)] << run[std::max(low, high)] << run[j - 1];
+    i = j;
+  }
+  path->addPolygon(reduced);
+}
+
+}  // namespace
+
 void AnglePlot::redrawLayers() {
   const QRectF area = chart()->plotArea();
   clip_->setRect(area);
+  // Only the frames in view (and one beyond each side, so lines run to the edge).
+  const double first = std::floor(frameOf(x_->min())) - 1;
+  const double last = std::ceil(frameOf(x_->max())) + 1;
+  // More frames than pixels: one-pixel lines, which Qt's raster engine draws on a far faster
+  // path than wider ones (bench/gui/plot_bench.cpp), and which look as thick there.
+  const double width = (last - first) > area.width() ? 1.0 : 1.5;
   for (int c = 0; c < 4; ++c) {
+    curve_items_[c]->setPen(QPen(kCurveColors[c], width, Qt::SolidLine, Qt::RoundCap));
     QPainterPath path;
     QPolygonF run;  // consecutive measured frames
-    auto flush = [&] {
-      if (run.size() == 1) path.addEllipse(run.front(), 2.0, 2.0);  // a lone frame: a dot
-      if (run.size() > 1) path.addPolygon(run);
-      run.clear();
-    };
     int previous = -2;
     for (const AngleRow& row : rows_) {
+      if (row.frame < first || row.frame > last) continue;
       const double v = valueOf(row, PlotCurve(c));
-      if (!std::isfinite(v) || row.frame != previous + 1) flush();  // a gap ends the line
+      if (!std::isfinite(v) || row.frame != previous + 1) {  // a gap ends the line
+        if (!run.isEmpty()) AddRun(run, &path);
+        run.clear();
+      }
       if (!std::isfinite(v)) continue;
       run << toChart(row.frame, v);
       previous = row.frame;
     }
-    flush();
+    if (!run.isEmpty()) AddRun(run, &path);
     curve_items_[c]->setPath(path);
   }
-  // A lost frame is a red band one frame wide, with a mark on the bottom edge.
+  // Each run of lost frames is a red band, with a mark on the bottom edge.
   QPainterPath bands, ticks;
-  for (const AngleRow& row : rows_) {
-    if (row.ok()) continue;
-    const double left = toChart(row.frame - 0.5, 0).x();
-    const double right = toChart(row.frame + 0.5, 0).x();
+  for (std::size_t i = 0; i < rows_.size(); ++i) {
+    if (rows_[i].ok() || rows_[i].frame < first || rows_[i].frame > last) continue;
+    std::size_t j = i;
+    while (j + 1 < rows_.size() && !rows_[j + 1].ok() && rows_[j + 1].frame == rows_[j].frame + 1) {
+      ++j;
+    }
+    const double left = toChart(rows_[i].frame - 0.5, 0).x();
+    const double right = toChart(rows_[j].frame + 0.5, 0).x();
     const double w = std::max(1.0, right - left);
     bands.addRect(QRectF(left, area.top(), w, area.height()));
-    ticks.addRect(QRectF(left + w / 2 - 2, area.bottom() - 8, 4, 8));
+    ticks.addRect(QRectF(left + w / 2 - std::max(2.0, w / 2 - 1), area.bottom() - 8,
+                         std::max(4.0, w - 2), 8));
+    i = j;
   }
   lost_bands_->setPath(bands);
   lost_ticks_->setPath(ticks);

@@ -17,7 +17,6 @@
 #include "result_store.h"
 
 class QGraphicsLineItem;
-class QGraphicsPathItem;
 class QGraphicsRectItem;
 class QLineSeries;
 class QRubberBand;
@@ -27,6 +26,8 @@ class QValueAxis;
 namespace armmimic::gui {
 
 enum class PlotCurve { kUpper = 0, kFore = 1, kYaw = 2, kBend = 3 };
+
+class PlotLayer;
 
 class AnglePlot : public QChartView {
   Q_OBJECT
@@ -107,9 +108,9 @@ class AnglePlot : public QChartView {
   QValueAxis* x_;
   QValueAxis* y_;
   QGraphicsRectItem* clip_;  // the plot area; clips the layers below
-  QGraphicsPathItem* curve_items_[4];
-  QGraphicsPathItem* lost_bands_;
-  QGraphicsPathItem* lost_ticks_;
+  PlotLayer* curve_items_[4];
+  PlotLayer* lost_bands_;
+  PlotLayer* lost_ticks_;
   QGraphicsLineItem* cursor_;
   QRubberBand* band_ = nullptr;
   QPoint band_origin_;

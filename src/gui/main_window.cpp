@@ -9,7 +9,6 @@
 #include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
-#include <QVBoxLayout>
 
 #include "analysis_job.h"
 #include "angle_panel.h"
