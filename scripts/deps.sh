@@ -65,7 +65,7 @@ TXT
 
 PACKAGES=(
   cmake ninja-build g++ pkg-config
-  qt6-base-dev qt6-base-dev-tools qt6-serialport-dev qt6-charts-dev qt6-qpa-plugins
+  qt6-base-dev qt6-base-dev-tools qt6-serialport-dev qt6-charts-dev qt6-svg-dev qt6-qpa-plugins
   libqt6opengl6-dev libgl1-mesa-dev libglx-dev
   libopencv-dev libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
