@@ -443,7 +443,11 @@ ArmSceneRenderer::ArmSceneRenderer(const ArmSceneOptions& options)
 ArmSceneRenderer::~ArmSceneRenderer() = default;
 
 const ArmSceneOptions& ArmSceneRenderer::options() const { return impl_->opt; }
-int ArmSceneRenderer::frame_count() const { return impl_->opt.frame_count(); }
+cv::Size ArmSceneRenderer::size() const { return impl_->opt.size; }
+double ArmSceneRenderer::fps() const { return impl_->opt.fps; }
+int ArmSceneRenderer::background_frames() const { return impl_->opt.background_frames; }
+int ArmSceneRenderer::standstill_frames() const { return impl_->opt.standstill_frames; }
+int ArmSceneRenderer::motion_frames() const { return impl_->opt.motion_frames; }
 
 ArmTruth ArmSceneRenderer::Truth(int frame) const {
   const bool person = frame >= impl_->opt.background_frames;
