@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,7 +33,11 @@ struct AnalysisOptions {
   std::optional<cv::Point2d> elbow_px;     // --elbow X,Y (lk, with --shoulder and --wrist)
   std::optional<cv::Point2d> wrist_px;     // --wrist X,Y
   std::optional<cv::Rect> roi;             // --roi X,Y,W,H
-  Status Check() const;                    // messages name the flag
+  // Where the frames come from when set, instead of VideoSource::Open(inputs): called once per
+  // pass over the input (the background estimate, then the analysis). `inputs` still names
+  // the source. Benchmarks run rendered scenes this way (VideoSource::FromFrames).
+  std::function<std::unique_ptr<VideoSource>(Status*)> open_source;
+  Status Check() const;  // messages name the flag
 };
 
 struct AnalysisCallbacks {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "armmimic/core/status.h"
 #include "armmimic/engines/bgsub_options.h"
@@ -13,8 +14,13 @@ namespace armmimic {
 
 enum class EngineKind { kBgsub, kLk, kMarker };
 
-const char* EngineName(EngineKind kind);                        // "bgsub", "lk", "marker"
+const char* EngineName(EngineKind kind);  // "bgsub", "lk", "marker"
 bool ParseEngineKind(const std::string& name, EngineKind* out);
+// Every engine, in the order above. A new engine joins this list, and the parsers and the
+// robustness benchmark (bench/robustness.cpp) find it here.
+const std::vector<EngineKind>& AllEngineKinds();
+// Engines that measure a human arm (all but the marker engine).
+bool IsArmEngine(EngineKind kind);
 
 struct EngineOptions {
   EngineKind kind = EngineKind::kBgsub;
