@@ -106,12 +106,20 @@ struct RandomArmScene::Impl {
   }
 
   // Places the camouflage object behind one segment of the arm at one moment of its motion.
+  // A moment is drawn where that segment's middle is clear of the torso (an object there would
+  // hide behind the body).
   void AimCamouflage(cv::RNG& rng) {
     const int n = p().motion_frames;
-    const int i = rng.uniform(n / 4, std::max(n / 4 + 1, 3 * n / 4));
-    const ArmJoints j = JointsOf(d.person, motion.At(i), {0, 0});
     const bool fore = p().short_sleeves || rng.uniform(0, 2) == 1;
-    const cv::Point2d a = fore ? j.elbow : j.shoulder, b = fore ? j.wrist : j.elbow;
+    const PersonModel& m = d.person;
+    cv::Point2d a, b;
+    for (int attempt = 0; attempt < 20; ++attempt) {
+      const int i = rng.uniform(n / 4, std::max(n / 4 + 1, 3 * n / 4));
+      const ArmJoints j = JointsOf(m, motion.At(i), {0, 0});
+      a = fore ? j.elbow : j.shoulder, b = fore ? j.wrist : j.elbow;
+      const cv::Point2d mid = (a + b) * 0.5;
+      if (std::fabs(mid.x - m.cx) > (m.w + 8) * m.s || mid.y < m.ysh - 15 * m.s) break;
+    }
     d.room.camo_at = (a + b) * 0.5;
     d.room.camo_size = cv::norm(b - a);
     const cv::Vec3f& c = fore && p().short_sleeves ? d.person.skin : d.person.sleeve;

@@ -24,7 +24,8 @@ double Direction(cv::Point2d v) { return std::atan2(-v.y, v.x) * 180.0 / CV_PI; 
 
 class Planner {
  public:
-  Planner(const PersonModel& m, cv::Size size) : m_(m), size_(size) {}
+  Planner(const PersonModel& m, cv::Size size, double raised_max)
+      : m_(m), size_(size), raised_max_(raised_max) {}
 
   bool Inside(cv::Point2d p) const {
     const double margin = 2;
@@ -87,7 +88,7 @@ class Planner {
         *p = {rng.uniform(-90.0, 60.0), rng.uniform(0.0, 150.0)};
         return true;
       case kRaised:
-        *p = {rng.uniform(60.0, 115.0), rng.uniform(-10.0, 50.0)};
+        *p = {rng.uniform(60.0, raised_max_), rng.uniform(-10.0, raised_max_ > 100 ? 50.0 : 30.0)};
         return true;
       case kByHead:
         return Reach(h + cv::Point2d(rng.uniform(1.0, 1.9) * rx, rng.uniform(-0.6, 0.6) * ry), p);
@@ -104,6 +105,7 @@ class Planner {
  private:
   const PersonModel& m_;
   cv::Size size_;
+  double raised_max_;
 };
 
 }  // namespace
@@ -126,7 +128,7 @@ Pose RandomMotion::At(double i) const {
 
 RandomMotion PlanRandomMotion(cv::RNG& rng, const MotionPlanSpec& spec, const PersonModel& m,
                               cv::Size size, RandomSceneParams* params) {
-  const Planner planner(m, size);
+  const Planner planner(m, size, spec.raised_max_deg);
   std::vector<PoseClass> required;
   if (spec.by_head) required.push_back(kByHead);
   if (spec.above_head) required.push_back(kAboveHead);

@@ -248,10 +248,11 @@ RoomSpec DrawRoom(cv::RNG& rng, const RoomRequest& req, const PersonModel& m, cv
     const ObjectKind kinds_camo[] = {ObjectKind::kPoster, ObjectKind::kDoor, ObjectKind::kCabinet};
     RoomObject o =
         MakeObject(rng, kinds_camo[rng.uniform(0, 3)], req.camo_at, true, size, room.floor_y);
-    const double side = req.camo_size * rng.uniform(1.0, 1.8);
+    // About one segment in size, so the rest of the arm stays in view.
+    const double side = req.camo_size * rng.uniform(req.camo_scale.first, req.camo_scale.second);
+    const double height = side * rng.uniform(0.7, 1.3);
     o.box = cv::Rect2d(req.camo_at.x - side * rng.uniform(0.3, 0.7),
-                       req.camo_at.y - side * rng.uniform(0.3, 0.7), side,
-                       side * rng.uniform(0.8, 1.6));
+                       req.camo_at.y - height * rng.uniform(0.3, 0.7), side, height);
     o.kind = ObjectKind::kPoster;  // a flat surface in one colour
     o.colour = req.camo_colour;
     const cv::Vec3f jitter(static_cast<float>(rng.uniform(-8.0, 8.0)),

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -90,9 +91,10 @@ struct RoomRequest {
   bool behind_arm = false;  // the first piece is placed where the arm moves
   bool keep_clear = false;  // the others stay out of the arm's reach
   bool camouflage_object = false;
-  cv::Vec3f camo_colour;  // the lit colour of the segment it hides
-  cv::Point2d camo_at;    // where that segment passes
-  double camo_size = 0;   // the segment's length, pixels
+  cv::Vec3f camo_colour;                           // the lit colour of the segment it hides
+  cv::Point2d camo_at;                             // where that segment passes
+  double camo_size = 0;                            // the segment's length, pixels
+  std::pair<double, double> camo_scale{0.5, 0.9};  // the object's side over camo_size
 };
 
 RoomSpec DrawRoom(cv::RNG& rng, const RoomRequest& req, const PersonModel& m, cv::Size size,
@@ -136,6 +138,7 @@ class RandomMotion {
 // Which pose classes a scene's motion visits and how fast it may move.
 struct MotionPlanSpec {
   bool by_head = false, above_head = false, across_torso = false, raised = true;
+  double raised_max_deg = 115;          // the raised arm's upper-arm direction goes up to this
   double speed_min = 1, speed_max = 4;  // peak degrees a frame of each move, drawn per move
   bool one_fast_move = false;           // at least one move at 0.8..1 of speed_max
   double pause_chance = 0.3;

@@ -27,7 +27,8 @@ struct TierKnobs {
   double distinct_sleeve = 0;  // sleeves of another cloth than the shirt
   double camo_object = 0, camo_wall = 0, camo_shirt = 0;
   Range camo_wall_distance{0, 0};
-  double min_sleeve_wall = 60;  // lit sleeve to wall, when not camouflaged
+  Range camo_object_scale{0.5, 0.9};  // a camouflage object's side over the segment it hides
+  double min_sleeve_wall = 60;        // lit sleeve to wall, when not camouflaged
   Range wall_sat{0, 0}, wall_val{0.8, 0.8};
   int pieces_lo = 0, pieces_hi = 0;
   double behind_chance = 0;
@@ -40,6 +41,7 @@ struct TierKnobs {
   Range speed{1, 4};  // peak degrees a frame of each move
   bool one_fast = false;
   double by_head = 0, above_head = 0, across_torso = 0, raised = 0;
+  double raised_max = 115;  // the raised arm's upper-arm direction up to this (90: straight up)
 };
 
 TierKnobs EasyKnobs() {
@@ -55,7 +57,7 @@ TierKnobs EasyKnobs() {
   k.pieces_lo = 0, k.pieces_hi = 2;
   k.vignette = {0, 0.1}, k.noise = {1, 2}, k.quality = {90, 95};
   k.speed = {1.5, 4};
-  k.raised = 0.5;
+  k.raised = 0.5, k.raised_max = 95;
   return k;
 }
 
@@ -90,6 +92,7 @@ TierKnobs HardKnobs() {
   k.short_sleeves = 0.5, k.cover = {0.2, 0.9};
   k.distinct_sleeve = 0.2;
   k.camo_object = 0.45, k.camo_wall = 0.25, k.camo_shirt = 0.30, k.camo_wall_distance = {25, 45};
+  k.camo_object_scale = {0.7, 1.2};
   k.min_sleeve_wall = 60;
   k.wall_sat = {0, 0.45}, k.wall_val = {0.35, 0.95};
   k.pieces_lo = 2, k.pieces_hi = 5, k.behind_chance = 1;
@@ -163,6 +166,8 @@ void DrawPerson(cv::RNG& rng, const TierKnobs& k, cv::Size size, bool headroom, 
   double y_lo = (m.head_dy + 0.8 * m.head_ry) * m.s;
   const double y_room = (m.head_dy + m.head_ry + 16 + m.hand) * m.s;
   if (headroom && y_room <= y_hi_wrist) y_lo = std::max(y_lo, y_room);
+  // The easy tier keeps the whole head in the frame.
+  if (k.centre_spread > 0) y_lo = std::max(y_lo, (m.head_dy + m.head_ry) * m.s + 4);
   if (y_lo <= y_hi_hand) {
     m.ysh = rng.uniform(y_lo, y_hi_hand);
   } else {
@@ -284,6 +289,7 @@ SceneDraw DrawScene(const RandomArmSceneOptions& options) {
   mo.above_head = rng.uniform(0.0, 1.0) < k.above_head;
   mo.across_torso = rng.uniform(0.0, 1.0) < k.across_torso;
   mo.raised = rng.uniform(0.0, 1.0) < k.raised;
+  mo.raised_max_deg = k.raised_max;
   p.speed_limit_deg = k.speed.hi;
   DrawPerson(rng, k, options.size, mo.above_head || mo.raised, &d);
   DrawClothing(rng, k, &d);
@@ -296,6 +302,7 @@ SceneDraw DrawScene(const RandomArmSceneOptions& options) {
   room.behind_arm = room.pieces > 0 && rng.uniform(0.0, 1.0) < k.behind_chance;
   room.keep_clear = options.tier == SceneTier::kEasy;
   room.camouflage_object = p.camouflage == "object";
+  room.camo_scale = {k.camo_object_scale.lo, k.camo_object_scale.hi};
   return d;
 }
 
