@@ -52,8 +52,10 @@ struct RandomArmScene::Impl {
   RandomArmSceneOptions opt;
   SceneDraw d;
   RandomMotion motion;
-  cv::Mat room;      // canonical, CV_32FC3
-  cv::Mat vignette;  // CV_32FC1
+  cv::Mat room;       // canonical, CV_32FC3
+  cv::Mat room_body;  // the room with the body standing still in it
+  cv::Rect body_box;  // where the body layer has any coverage
+  cv::Mat vignette;   // CV_32FC1
   PersonTextures tex;
   Layer body;
   uint64_t noise_seed = 0;
@@ -151,18 +153,25 @@ struct RandomArmScene::Impl {
   cv::Mat Compose(int frame, bool person, const Pose& pose, bool effects, uint64_t salt,
                   cv::Mat* arm_mask) const {
     const cv::Size size = opt.size;
-    cv::Mat canvas = room.clone();
+    thread_local cv::Mat canvas;  // reused: a frame's light is built in place
     const cv::Point2d offset = effects ? Sway(frame) : cv::Point2d(0, 0);
+    const bool swayed = person && offset != cv::Point2d(0, 0);
+    (person && !swayed ? room_body : room).copyTo(canvas);
+    if (swayed) {
+      // The body moved by a sub-pixel offset: warp only its bounding box.
+      const int margin = cvCeil(std::max(std::fabs(offset.x), std::fabs(offset.y))) + 2;
+      const cv::Rect r = (body_box + cv::Size(2 * margin, 2 * margin) - cv::Point(margin, margin)) &
+                         cv::Rect(0, 0, size.width, size.height);
+      const cv::Matx23d shift(1, 0, offset.x, 0, 1, offset.y);
+      Layer moved;
+      cv::warpAffine(body.color(r), moved.color, shift, r.size(), cv::INTER_LINEAR,
+                     cv::BORDER_CONSTANT, cv::Scalar::all(0));
+      cv::warpAffine(body.alpha(r), moved.alpha, shift, r.size(), cv::INTER_LINEAR,
+                     cv::BORDER_CONSTANT, cv::Scalar::all(0));
+      cv::Mat under = canvas(r);
+      Over(moved, &under);
+    }
     if (person) {
-      if (offset == cv::Point2d(0, 0)) {
-        Over(body, &canvas);
-      } else {
-        const cv::Matx23d shift(1, 0, offset.x, 0, 1, offset.y);
-        Layer moved;
-        cv::warpAffine(body.color, moved.color, shift, size, cv::INTER_LINEAR);
-        cv::warpAffine(body.alpha, moved.alpha, shift, size, cv::INTER_LINEAR);
-        Over(moved, &canvas);
-      }
       Layer layer{canvas, cv::Mat()};
       PaintHead(&layer, d.person, tex, offset, effects ? Nod(frame) : 0.0);
       const ArmJoints j = JointsOf(d.person, pose, offset);
@@ -175,11 +184,9 @@ struct RandomArmScene::Impl {
     } else if (arm_mask) {
       *arm_mask = cv::Mat(size, CV_32FC1, 0.0f);
     }
-    ApplyLight(&canvas, vignette, effects ? Gain(frame) : cv::Vec3f(1, 1, 1),
-               effects ? ShadowAt(frame) : ShadowSpot{});
-    AddSensorNoise(&canvas, p().noise_sigma, Mix(noise_seed, salt));
-    cv::Mat out;
-    canvas.convertTo(out, CV_8UC3);
+    cv::Mat out =
+        Expose(canvas, vignette, effects ? Gain(frame) : cv::Vec3f(1, 1, 1),
+               effects ? ShadowAt(frame) : ShadowSpot{}, p().noise_sigma, Mix(noise_seed, salt));
     if (p().side == ArmSide::kLeft) {
       cv::flip(out, out, 1);
       if (arm_mask) cv::flip(*arm_mask, *arm_mask, 1);
@@ -236,6 +243,9 @@ RandomArmScene::RandomArmScene(const RandomArmSceneOptions& options)
   m.body.color = cv::Mat(options.size, CV_32FC3, cv::Scalar::all(0));
   m.body.alpha = cv::Mat(options.size, CV_32FC1, cv::Scalar(0));
   PaintStaticBody(&m.body, m.d.person, m.tex);
+  m.body_box = cv::boundingRect(m.body.alpha > 0);
+  m.room_body = m.room.clone();
+  Over(m.body, &m.room_body);
 }
 
 RandomArmScene::~RandomArmScene() = default;
@@ -286,10 +296,7 @@ cv::Mat RandomArmScene::ArmLengthImage(ArmTruth* truth) const {
 }
 
 cv::Mat RandomArmScene::EmptyBackground() const {
-  cv::Mat canvas = impl_->room.clone();
-  ApplyLight(&canvas, impl_->vignette, {1, 1, 1}, ShadowSpot{});
-  cv::Mat out;
-  canvas.convertTo(out, CV_8UC3);
+  cv::Mat out = Expose(impl_->room, impl_->vignette, {1, 1, 1}, ShadowSpot{}, 0, 0);
   if (impl_->p().side == ArmSide::kLeft) cv::flip(out, out, 1);
   return out;
 }

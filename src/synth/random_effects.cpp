@@ -2,6 +2,7 @@
 // colour cast, sensor noise and JPEG compression; and the small colour helpers.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
@@ -95,38 +96,71 @@ cv::Mat VignetteMap(cv::Size size, double strength) {
   return map;
 }
 
-void ApplyLight(cv::Mat* canvas, const cv::Mat& vignette, const cv::Vec3f& gain,
-                const ShadowSpot& shadow) {
-  const int W = canvas->cols, H = canvas->rows;
-  for (int y = 0; y < H; ++y) {
-    cv::Vec3f* row = canvas->ptr<cv::Vec3f>(y);
-    const float* v = vignette.ptr<float>(y);
-    double dy2 = 0;
-    const bool shade_row = shadow.on && std::fabs(y - shadow.centre.y) < 3 * shadow.sigma.height;
-    if (shade_row) {
-      const double dy = (y - shadow.centre.y) / shadow.sigma.height;
-      dy2 = dy * dy;
-    }
-    for (int x = 0; x < W; ++x) {
-      float k = v[x];
-      if (shade_row) {
-        const double dx = (x - shadow.centre.x) / shadow.sigma.width;
-        k *= static_cast<float>(1 - shadow.strength * std::exp(-0.5 * (dx * dx + dy2)));
-      }
-      cv::Vec3f& p = row[x];
-      p[0] *= k * gain[0];
-      p[1] *= k * gain[1];
-      p[2] *= k * gain[2];
-    }
+namespace {
+
+// xoshiro256**: a small, fast generator; the sensor noise needs many numbers a frame.
+class FastRng {
+ public:
+  explicit FastRng(uint64_t seed) {
+    for (uint64_t& v : s_) v = seed = Mix(seed, 0x5EED);
   }
+  uint64_t Next() {
+    const uint64_t out = Rotl(s_[1] * 5, 7) * 9;
+    const uint64_t t = s_[1] << 17;
+    s_[2] ^= s_[0], s_[3] ^= s_[1], s_[1] ^= s_[2], s_[0] ^= s_[3], s_[2] ^= t;
+    s_[3] = Rotl(s_[3], 45);
+    return out;
+  }
+
+ private:
+  static uint64_t Rotl(uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
+  uint64_t s_[4];
+};
+
+// About N(0, 1): the centred sum of four 16-bit uniforms, scaled to unit variance (Irwin-Hall;
+// the tails end at +-3.46, which sensor noise does not miss).
+inline float Gauss(uint64_t r) {
+  const uint32_t sum = static_cast<uint32_t>(r & 0xFFFF) + static_cast<uint32_t>(r >> 16 & 0xFFFF) +
+                       static_cast<uint32_t>(r >> 32 & 0xFFFF) + static_cast<uint32_t>(r >> 48);
+  constexpr float kScale = 1.7320508f / 65536.0f;  // sqrt(12 / 4) per unit of 65536
+  return (static_cast<float>(sum) - 2.0f * 65535.0f) * kScale;
 }
 
-void AddSensorNoise(cv::Mat* canvas, double sigma, uint64_t seed) {
-  if (sigma <= 0) return;
-  cv::RNG rng(seed);
-  cv::Mat noise(canvas->size(), CV_32FC3);
-  rng.fill(noise, cv::RNG::NORMAL, 0, sigma);
-  *canvas += noise;
+}  // namespace
+
+cv::Mat Expose(const cv::Mat& canvas, const cv::Mat& vignette, const cv::Vec3f& gain,
+               const ShadowSpot& shadow, double noise_sigma, uint64_t noise_seed) {
+  const int W = canvas.cols, H = canvas.rows;
+  cv::Mat out(canvas.size(), CV_8UC3);
+  // The shadow is a separable Gaussian: one factor per column, one per row.
+  std::vector<float> across(W, 0.0f);
+  if (shadow.on) {
+    for (int x = 0; x < W; ++x) {
+      const double dx = (x - shadow.centre.x) / shadow.sigma.width;
+      across[x] = static_cast<float>(shadow.strength * std::exp(-0.5 * dx * dx));
+    }
+  }
+  FastRng rng(noise_seed);
+  const float sigma = static_cast<float>(noise_sigma);
+  for (int y = 0; y < H; ++y) {
+    const cv::Vec3f* in = canvas.ptr<cv::Vec3f>(y);
+    const float* v = vignette.ptr<float>(y);
+    cv::Vec3b* o = out.ptr<cv::Vec3b>(y);
+    float down = 0;
+    if (shadow.on) {
+      const double dy = (y - shadow.centre.y) / shadow.sigma.height;
+      down = static_cast<float>(std::exp(-0.5 * dy * dy));
+    }
+    for (int x = 0; x < W; ++x) {
+      const float k = v[x] * (1.0f - across[x] * down);
+      for (int c = 0; c < 3; ++c) {
+        float value = in[x][c] * k * gain[c];
+        if (sigma > 0) value += sigma * Gauss(rng.Next());
+        o[x][c] = cv::saturate_cast<uchar>(value);
+      }
+    }
+  }
+  return out;
 }
 
 }  // namespace random_scene

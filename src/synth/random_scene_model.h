@@ -176,8 +176,9 @@ struct ShadowSpot {
   double strength = 0;
 };
 cv::Mat VignetteMap(cv::Size size, double strength);
-void ApplyLight(cv::Mat* canvas, const cv::Mat& vignette, const cv::Vec3f& gain,
-                const ShadowSpot& shadow);
-void AddSensorNoise(cv::Mat* canvas, double sigma, uint64_t seed);
+// The frame the camera delivers from the scene's light (`canvas`, CV_32FC3): vignetting, the
+// shadow, the per-channel gain and Gaussian sensor noise (sigma 0: none), rounded to CV_8UC3.
+cv::Mat Expose(const cv::Mat& canvas, const cv::Mat& vignette, const cv::Vec3f& gain,
+               const ShadowSpot& shadow, double noise_sigma, uint64_t noise_seed);
 
 }  // namespace armmimic::synth::random_scene
