@@ -14,15 +14,9 @@
 
 namespace armmimic::synth::random_scene {
 
-// A 64-bit mix of a seed and a salt (splitmix64 finaliser).
-uint64_t Mix(uint64_t seed, uint64_t salt);
-
 // A colour from hue (degrees), saturation and value (0..1), BGR 0..255.
 cv::Vec3f Hsv(double hue, double sat, double val);
 double ColourDistance(const cv::Vec3f& a, const cv::Vec3f& b);
-cv::Vec3f Clamp255(const cv::Vec3f& c);
-// A tileable noise texture (see paint.h) with the given relative amplitude and blur.
-Texture MakeTexture(cv::RNG& rng, float amplitude, double blur);
 
 // Limbs are shaded as cylinders: their lit middle shows about this share of their colour.
 inline constexpr float kLimbShade = 0.854f;

@@ -140,6 +140,38 @@ struct TierRanges {
   double drift_abs_lo, drift_abs_hi, sway_hi, speed_limit;
 };
 
+// One scene's knobs against its tier's ranges; its arm in the frame and within the speed limit.
+void CheckKnobs(const RandomArmScene& r, const TierRanges& want, const std::string& at) {
+  const RandomSceneParams& p = r.params();
+  EXPECT_EQ(want.fps.count(p.fps), 1u) << at;
+  EXPECT_GE(p.arm_fraction, want.arm_lo - 1e-9) << at;
+  EXPECT_LE(p.arm_fraction, want.arm_hi + 1e-9) << at;
+  EXPECT_NEAR(p.upper_px + p.fore_px, p.arm_fraction * 240, 1e-6) << at;
+  EXPECT_GE(p.noise_sigma, want.noise_lo) << at;
+  EXPECT_LE(p.noise_sigma, want.noise_hi) << at;
+  EXPECT_GE(p.jpeg_quality, want.quality_lo) << at;
+  EXPECT_LE(p.jpeg_quality, want.quality_hi) << at;
+  EXPECT_GE(std::fabs(p.drift), want.drift_abs_lo) << at;
+  EXPECT_LE(std::fabs(p.drift), want.drift_abs_hi) << at;
+  EXPECT_LE(p.sway_px, want.sway_hi + 1e-9) << at;
+  EXPECT_DOUBLE_EQ(p.speed_limit_deg, want.speed_limit) << at;
+  EXPECT_LE(p.max_step_deg, want.speed_limit + 1e-6) << at;
+  EXPECT_GE(p.background_frames, 10) << at;
+  EXPECT_GE(p.standstill_frames, 15) << at;
+  // The moving arm's joints stay in the frame, and every step obeys the speed limit.
+  double prev_upper = r.Truth(r.first_motion_frame() - 1).upper_deg;
+  double prev_fore = r.Truth(r.first_motion_frame() - 1).fore_deg;
+  for (int f = r.first_motion_frame(); f < r.frame_count(); ++f) {
+    const ArmTruth t = r.Truth(f);
+    for (const cv::Point2d& j : {t.elbow_px, t.wrist_px}) {
+      ASSERT_TRUE(j.x >= 0 && j.y >= 0 && j.x < 320 && j.y < 240) << at << " frame " << f;
+    }
+    EXPECT_LE(std::fabs(AngleDiff(t.upper_deg, prev_upper)), want.speed_limit + 1e-6) << at;
+    EXPECT_LE(std::fabs(AngleDiff(t.fore_deg, prev_fore)), want.speed_limit + 1e-6) << at;
+    prev_upper = t.upper_deg, prev_fore = t.fore_deg;
+  }
+}
+
 TEST(RandomArmScene, TierKnobsStayInTheirDocumentedRanges) {
   const std::pair<SceneTier, TierRanges> tiers[] = {
       {SceneTier::kEasy, {{30}, 0.30, 0.40, 1, 2, 90, 95, 0, 0, 0, 4}},
@@ -154,33 +186,7 @@ TEST(RandomArmScene, TierKnobsStayInTheirDocumentedRanges) {
       const RandomArmScene r(Opt(seed, tier));
       const RandomSceneParams& p = r.params();
       const std::string at = std::string(SceneTierName(tier)) + " seed " + std::to_string(seed);
-      EXPECT_EQ(want.fps.count(p.fps), 1u) << at;
-      EXPECT_GE(p.arm_fraction, want.arm_lo - 1e-9) << at;
-      EXPECT_LE(p.arm_fraction, want.arm_hi + 1e-9) << at;
-      EXPECT_NEAR(p.upper_px + p.fore_px, p.arm_fraction * 240, 1e-6) << at;
-      EXPECT_GE(p.noise_sigma, want.noise_lo) << at;
-      EXPECT_LE(p.noise_sigma, want.noise_hi) << at;
-      EXPECT_GE(p.jpeg_quality, want.quality_lo) << at;
-      EXPECT_LE(p.jpeg_quality, want.quality_hi) << at;
-      EXPECT_GE(std::fabs(p.drift), want.drift_abs_lo) << at;
-      EXPECT_LE(std::fabs(p.drift), want.drift_abs_hi) << at;
-      EXPECT_LE(p.sway_px, want.sway_hi + 1e-9) << at;
-      EXPECT_DOUBLE_EQ(p.speed_limit_deg, want.speed_limit) << at;
-      EXPECT_LE(p.max_step_deg, want.speed_limit + 1e-6) << at;
-      EXPECT_GE(p.background_frames, 10) << at;
-      EXPECT_GE(p.standstill_frames, 15) << at;
-      // The moving arm's joints stay in the frame, and every step obeys the speed limit.
-      double prev_upper = r.Truth(r.first_motion_frame() - 1).upper_deg;
-      double prev_fore = r.Truth(r.first_motion_frame() - 1).fore_deg;
-      for (int f = r.first_motion_frame(); f < r.frame_count(); ++f) {
-        const ArmTruth t = r.Truth(f);
-        for (const cv::Point2d& j : {t.elbow_px, t.wrist_px}) {
-          ASSERT_TRUE(j.x >= 0 && j.y >= 0 && j.x < 320 && j.y < 240) << at << " frame " << f;
-        }
-        EXPECT_LE(std::fabs(AngleDiff(t.upper_deg, prev_upper)), want.speed_limit + 1e-6) << at;
-        EXPECT_LE(std::fabs(AngleDiff(t.fore_deg, prev_fore)), want.speed_limit + 1e-6) << at;
-        prev_upper = t.upper_deg, prev_fore = t.fore_deg;
-      }
+      CheckKnobs(r, want, at);
       short_sleeves += p.short_sleeves;
       camouflaged += p.camouflage != "none";
       by_head += p.hand_by_head, above += p.hand_above_head, across += p.across_torso;
@@ -231,7 +237,7 @@ TEST(RandomArmScene, CheckNamesTheSizeAndTiersParse) {
 }
 
 TEST(RandomArmScene, MetaLineNamesTheSceneAndItsKnobs) {
-  const RandomArmScene r(Opt(100123, SceneTier::kEasy, {160, 120}));
+  const RandomArmScene r(Opt(4243, SceneTier::kEasy, {160, 120}));
   const AngleMeta meta = RandomSceneMeta(r);
   auto value = [&meta](const std::string& key) {
     for (const auto& [k, v] : meta) {
@@ -241,7 +247,7 @@ TEST(RandomArmScene, MetaLineNamesTheSceneAndItsKnobs) {
   };
   EXPECT_EQ(value("random"), "1");
   EXPECT_EQ(value("tier"), "easy");
-  EXPECT_EQ(value("seed"), "100123");
+  EXPECT_EQ(value("seed"), "4243");
   EXPECT_EQ(value("background_frames"), std::to_string(r.background_frames()));
   EXPECT_EQ(value("motion_frames"), std::to_string(r.motion_frames()));
   EXPECT_EQ(value("sleeves"), "long");
