@@ -14,6 +14,8 @@
 #include <sstream>
 #include <thread>
 
+#include <sys/resource.h>
+
 #include <opencv2/core/utility.hpp>
 
 #include "armmimic/engines/option_fields.h"
@@ -38,7 +40,7 @@ with the scene's knobs), OUT/table.md, OUT/features.md and OUT/summary.md.
                            the set's range, and every tier uses the same seed numbers
   --tiers LIST             easy,medium,hard (default all)
   --engines LIST           arm engines to run (default every arm engine)
-  --modes LIST             calibration modes (default all: thesis, joints)
+  --modes LIST             calibration modes (default all: thesis, joints, auto, none)
   --param ENGINE.KEY=VAL   an engine setting, as analyze --param (repeatable)
   --size WxH               frame size (default 320x240)
   --threads N              worker threads (default 2)
@@ -173,7 +175,7 @@ std::vector<RunSpec> Plan(const Args& a, const synth::RandomArmSceneOptions& fir
   }
   const synth::RandomArmScene scene(first);
   const SceneInputs inputs{&scene, work_dir + "/probe.png"};
-  std::vector<RunSpec> specs;
+  std::vector<RunSpec> candidates;
   for (EngineKind k : engines) {
     for (const CalibrationMode& mode : CalibrationModes()) {
       if (!a.modes.empty() &&
@@ -184,10 +186,36 @@ std::vector<RunSpec> Plan(const Args& a, const synth::RandomArmSceneOptions& fir
       AnalysisOptions o;
       const Status st = BuildOptions(spec, inputs, &o);
       if (st) {
-        specs.push_back(spec);
-      } else if (!a.quiet) {
+        candidates.push_back(spec);
+      } else if (!a.modes.empty() && !a.quiet) {
         std::cerr << "robustness: " << spec.Name() << " not run: " << st.message() << "\n";
       }
+    }
+  }
+  // A run that cannot start at all (a missing model) is reported once instead of failing on
+  // every scene: each candidate runs on the first motion frames of the first seed's scene of
+  // every tier, and is dropped only when it fails on all of them (one scene may refuse, e.g. an
+  // arm the pose network does not see well enough to calibrate from).
+  std::vector<std::string> errors(candidates.size());
+  std::vector<int> failed(candidates.size(), 0);
+  for (synth::SceneTier tier : a.tiers) {
+    synth::RandomArmSceneOptions o = first;
+    o.tier = tier;
+    const synth::RandomArmScene probe_scene(o);
+    const SceneResult probe =
+        RunScene(o, candidates, work_dir, probe_scene.first_motion_frame() + 2);
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      if (probe.runs[i].error.empty()) continue;
+      ++failed[i];
+      errors[i] = probe.runs[i].error;
+    }
+  }
+  std::vector<RunSpec> specs;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (failed[i] < static_cast<int>(a.tiers.size())) {
+      specs.push_back(candidates[i]);
+    } else {
+      std::cerr << "robustness: " << candidates[i].Name() << " not run: " << errors[i] << "\n";
     }
   }
   return specs;
@@ -234,7 +262,14 @@ std::vector<SceneResult> RunAll(const Args& a,
   return results;
 }
 
-// The run in one line: scenes, frames, wall time and where the threads' time went.
+// User and system time of the whole process so far.
+double ProcessorSeconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+// The run in one line: scenes, frames, wall and processor time, where the threads' time went.
 std::string HeadLine(const Args& a, const std::vector<SceneResult>& results,
                      const std::vector<RunSpec>& specs, double seconds) {
   long motion = 0, total = 0;
@@ -253,10 +288,11 @@ std::string HeadLine(const Args& a, const std::vector<SceneResult>& results,
   char buf[512];
   std::snprintf(buf, sizeof(buf),
                 "%zu %s scenes (seeds %lld..%lld per tier, %dx%d), %ld frames (%ld motion), %zu "
-                "runs each, %.0f s on %d threads; thread time: rendering %.0f s",
+                "runs each, %.0f s on %d threads (processor time %.0f s); thread time: rendering "
+                "%.0f s",
                 results.size(), a.set.c_str(), a.first_seed, a.first_seed + a.per_tier - 1,
                 a.size.width, a.size.height, total, motion, specs.size(), seconds, a.threads,
-                render_s);
+                ProcessorSeconds(), render_s);
   std::string head = buf;
   for (std::size_t i = 0; i < specs.size(); ++i) {
     std::snprintf(buf, sizeof(buf), ", %s %.0f s", specs[i].Name().c_str(), spec_s[i]);

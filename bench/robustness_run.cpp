@@ -1,6 +1,8 @@
 #include "robustness_run.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -53,6 +55,30 @@ Status JointsMode(const SceneInputs& in, EngineKind, AnalysisOptions* o) {
   return Status::Ok();
 }
 
+// What `analyze --side` says: the person's own moving arm (facing the camera, their left arm is
+// on the image's right).
+void NameTheArm(const SceneInputs& in, AnalysisOptions* o) {
+  const PoseSide side =
+      in.scene->params().side == synth::ArmSide::kRight ? PoseSide::kLeft : PoseSide::kRight;
+  o->engine.pose.side = side;
+  o->calibrate_side = side;
+}
+
+Status NoneMode(const SceneInputs& in, EngineKind, AnalysisOptions* o) {
+  // Nothing but where the motion starts and which arm moves.
+  o->start = in.scene->first_motion_frame();
+  NameTheArm(in, o);
+  return Status::Ok();
+}
+
+Status AutoMode(const SceneInputs& in, EngineKind, AnalysisOptions* o) {
+  // The joints on the first motion frame from the pose network (--auto-calibrate).
+  o->start = in.scene->first_motion_frame();
+  o->auto_calibrate = true;
+  NameTheArm(in, o);
+  return Status::Ok();
+}
+
 }  // namespace
 
 const std::vector<CalibrationMode>& CalibrationModes() {
@@ -64,6 +90,12 @@ const std::vector<CalibrationMode>& CalibrationModes() {
        "shoulder, elbow and wrist clicked on the first motion frame (the truth, rounded to whole "
        "pixels)",
        JointsMode},
+      {"auto",
+       "the joints on the first motion frame from the pose network (--auto-calibrate), the "
+       "moving arm named (--side)",
+       AutoMode},
+      {"none", "nothing but the first motion frame (--start) and the moving arm (--side)",
+       NoneMode},
   };
   return modes;
 }
@@ -89,7 +121,7 @@ Status BuildOptions(const RunSpec& spec, const SceneInputs& inputs, AnalysisOpti
 }
 
 SceneResult RunScene(const synth::RandomArmSceneOptions& options, const std::vector<RunSpec>& specs,
-                     const std::string& work_dir) {
+                     const std::string& work_dir, int max_frames) {
   const auto t0 = std::chrono::steady_clock::now();
   SceneResult result;
   result.seed = options.seed;
@@ -97,13 +129,13 @@ SceneResult RunScene(const synth::RandomArmSceneOptions& options, const std::vec
   const synth::RandomArmScene scene(options);
   result.knobs = scene.params().Describe();
   auto frames = std::make_shared<std::vector<cv::Mat>>();
-  frames->reserve(static_cast<std::size_t>(scene.frame_count()));
+  const int count =
+      max_frames > 0 ? std::min(max_frames, scene.frame_count()) : scene.frame_count();
+  frames->reserve(static_cast<std::size_t>(count));
   const int quality = scene.params().jpeg_quality;
-  for (int f = 0; f < scene.frame_count(); ++f) {
-    frames->push_back(synth::JpegRoundTrip(scene.Render(f), quality));
-  }
+  for (int f = 0; f < count; ++f) frames->push_back(synth::JpegRoundTrip(scene.Render(f), quality));
   synth::TruthFile truth;
-  for (int f = 0; f < scene.frame_count(); ++f) truth.rows.push_back(scene.Truth(f).ToRow());
+  for (int f = 0; f < count; ++f) truth.rows.push_back(scene.Truth(f).ToRow());
   const std::string name =
       std::string(synth::SceneTierName(options.tier)) + "-" + std::to_string(options.seed);
   SceneInputs inputs{&scene, work_dir + "/armlength-" + name + ".png"};

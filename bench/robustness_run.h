@@ -58,8 +58,8 @@ struct SceneResult {
 };
 
 // Renders the scene and runs every spec on it. `work_dir` holds the arm-length image while
-// the scene runs.
+// the scene runs. `max_frames` > 0 keeps only the scene's first frames (a quick probe).
 SceneResult RunScene(const synth::RandomArmSceneOptions& options, const std::vector<RunSpec>& specs,
-                     const std::string& work_dir);
+                     const std::string& work_dir, int max_frames = 0);
 
 }  // namespace armmimic::bench

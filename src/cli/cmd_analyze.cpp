@@ -1,4 +1,4 @@
-// armmimic-cli analyze INPUT... -o ANGLES.tsv --engine bgsub|lk|marker: video or images in, an
+// armmimic-cli analyze INPUT... -o ANGLES.tsv --engine bgsub|lk|marker|pose: video or images in, an
 // angle file v1 out (docs/cli.md). Ctrl-C keeps the rows so far in a file marked complete=no.
 #include <signal.h>
 
@@ -48,13 +48,16 @@ const std::map<std::string, std::set<EngineKind>>& EngineFlags() {
       {"--background", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--background-frames", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--arm-length", {EngineKind::kBgsub}},
-      {"--start", {EngineKind::kBgsub, EngineKind::kLk}},
+      {"--start", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kPose}},
       {"--standstill-frames", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--threshold", {EngineKind::kBgsub}},
       {"--shoulder", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--elbow", {EngineKind::kLk}},
       {"--wrist", {EngineKind::kLk}},
-      {"--roi", {EngineKind::kBgsub, EngineKind::kLk}},
+      {"--roi", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kPose}},
+      {"--side", {EngineKind::kPose, EngineKind::kLk}},
+      {"--model", {EngineKind::kPose, EngineKind::kLk}},
+      {"--auto-calibrate", {EngineKind::kLk}},
       {"--initial-upper", {EngineKind::kLk}},
       {"--initial-fore", {EngineKind::kLk}},
       {"--reference", {EngineKind::kMarker}},
@@ -90,6 +93,7 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
   bool thesis = false;
   cv::Point2d shoulder, elbow, wrist;
   cv::Rect roi;
+  std::string side_name;
   ArgParser p(
       "analyze",
       "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine bgsub\n"
@@ -100,8 +104,12 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
       "          [--standstill-frames 60] [--initial-upper -90] [--initial-fore -90]\n"
       "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine lk\n"
       "          --shoulder X,Y --elbow X,Y --wrist X,Y [--start F]\n"
+      "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine lk --auto-calibrate\n"
+      "          [--side left|right] [--start F] [--model DIR]\n"
       "  armmimic-cli analyze INPUT... -o ANGLES.tsv --engine marker --reference REF.png\n"
       "          [--low 20] [--high 80]\n"
+      "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine pose [--side left|right] [--start F]\n"
+      "          [--model DIR]\n"
       "  Arm engines also take [--roi X,Y,W,H] [--shoulder X,Y] [--thesis].",
       "Turns a video (or images) into an angle file v1, one row per analysed frame.\n"
       "bgsub, and lk without --shoulder: frames [F, F+standstill) are the standstill (no rows);\n"
@@ -109,19 +117,28 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
       "starting posture and already gets a row (--standstill-frames is then refused). With\n"
       "--elbow and --wrist too, the three clicked joints give the starting directions and the\n"
       "segment lengths; otherwise the arm length is estimated and the estimate is printed.\n"
-      "marker: one row per input image, in input order. Ctrl-C keeps the rows so far in a valid\n"
-      "file marked complete=no (exit 1).\n" +
+      "lk --auto-calibrate: the pose network finds the shoulder, elbow and wrist in frame F, as\n"
+      "if clicked (--side names the person's own arm; default: the better seen).\n"
+      "marker: one row per input image, in input order.\n"
+      "pose: a pose network (MoveNet) finds the person's arm in every frame from F on, with no\n"
+      "background or calibration; a row is lost where the arm is not seen or a segment points at\n"
+      "the camera, and a confidence column (0-1) follows the angles. --side names the person's\n"
+      "own arm (default: the better seen over the first second). The model is fetched by\n"
+      "scripts/deps.sh --with-model and found without flags (docs/pose.md).\n"
+      "Ctrl-C keeps the rows so far in a valid file marked complete=no (exit 1).\n" +
           ParamList());
   p.Positionals(&o.inputs, "INPUT", 1, -1);
   p.String("-o,--output", &output, "ANGLES.tsv", "the angle file to write (required)");
-  p.String("--engine", &engine_name, "NAME", "bgsub, lk or marker (required)");
+  p.String("--engine", &engine_name, "NAME", "bgsub, lk, marker or pose (required)");
   p.String("--background", &o.background_path, "BG.png", "bgsub/lk: the empty scene image");
   p.Int("--background-frames", &o.background_frames, "K",
         "bgsub/lk: estimate the background from frames [0, K) of the video", 1, 1000000);
   p.String("--arm-length", &o.arm_length_path, "ARM.png",
            "bgsub: straight horizontal arm at zero yaw (gives b)");
   p.Int("--start", &o.start, "F",
-        "bgsub/lk: first standstill frame (default 0; a camera or stream drops F frames)", 0);
+        "bgsub/lk: first standstill frame; pose: first frame (default 0; a camera or stream "
+        "drops F frames)",
+        0);
   p.Int("--standstill-frames", &standstill, "N", "bgsub/lk: standstill length (default 60)", 1,
         100000);
   p.Int("--threshold", &threshold, "T", "bgsub: grey-level difference threshold (default 45)", 1,
@@ -159,6 +176,12 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
         0, 255);
   p.Int("--high", &o.engine.marker.high, "H",
         "marker: upper grey level of the markers (default 80)", 0, 255);
+  p.String("--side", &side_name, "left|right",
+           "pose, lk --auto-calibrate: the person's own arm (default: the better seen)");
+  p.String("--model", &o.model_dir, "DIR",
+           "pose, lk --auto-calibrate: the folder holding movenet-lightning.json and .bin");
+  p.Flag("--auto-calibrate", &o.auto_calibrate,
+         "lk: the shoulder, elbow and wrist in frame F from the pose network");
   p.Flag("--thesis", &thesis, "run the thesis method only, without the improvements");
   p.Custom("--param", "ENGINE.KEY=VALUE",
            "any engine parameter listed above; repeatable, applied after the other flags",
@@ -170,9 +193,10 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
            });
   if (auto code = p.Parse(args)) return *code;
 
-  if (engine_name.empty()) return p.UsageError("missing --engine (bgsub, lk or marker)");
+  if (engine_name.empty()) return p.UsageError("missing --engine (bgsub, lk, marker or pose)");
   if (!ParseEngineKind(engine_name, &o.engine.kind)) {
-    return p.UsageError("--engine: unknown engine '" + engine_name + "' (bgsub, lk or marker)");
+    return p.UsageError("--engine: unknown engine '" + engine_name +
+                        "' (bgsub, lk, marker or pose)");
   }
   if (output.empty()) return p.UsageError("missing -o ANGLES.tsv (the angle file to write)");
   for (const auto& [flag, engines] : EngineFlags()) {
@@ -185,7 +209,21 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
       return p.UsageError("--param " + assignment + " is not used by --engine " + engine_name);
     }
   }
-  if (o.engine.kind == EngineKind::kLk && p.Given("--shoulder") && p.Given("--standstill-frames")) {
+  if (p.Given("--side")) {
+    PoseSide side = PoseSide::kAuto;
+    if (!ParsePoseSide(side_name, &side)) {
+      return p.UsageError("--side '" + side_name + "': expected left or right (the person's own)");
+    }
+    o.engine.pose.side = side;
+    o.calibrate_side = side;
+  }
+  if (o.engine.kind != EngineKind::kPose && !o.auto_calibrate &&
+      (p.Given("--side") || p.Given("--model"))) {
+    return p.UsageError(std::string(p.Given("--side") ? "--side" : "--model") +
+                        " is used by --engine " + engine_name + " only with --auto-calibrate");
+  }
+  if (o.engine.kind == EngineKind::kLk && (p.Given("--shoulder") || o.auto_calibrate) &&
+      p.Given("--standstill-frames")) {
     return p.UsageError(
         "--standstill-frames is not used by --engine lk with --shoulder: frame F is the starting "
         "posture and gets a row");

@@ -10,13 +10,15 @@ const char* EngineName(EngineKind kind) {
       return "lk";
     case EngineKind::kMarker:
       return "marker";
+    case EngineKind::kPose:
+      return "pose";
   }
   return "?";
 }
 
 const std::vector<EngineKind>& AllEngineKinds() {
   static const std::vector<EngineKind> kinds = {EngineKind::kBgsub, EngineKind::kLk,
-                                                EngineKind::kMarker};
+                                                EngineKind::kMarker, EngineKind::kPose};
   return kinds;
 }
 
@@ -40,6 +42,8 @@ Status EngineOptions::Check() const {
       return lk.Check();
     case EngineKind::kMarker:
       return marker.Check();
+    case EngineKind::kPose:
+      return pose.Check();
   }
   return Status::Ok();
 }

@@ -18,6 +18,7 @@
 #include "armmimic/core/video_source.h"
 #include "armmimic/engines/engine_options.h"
 #include "armmimic/engines/measurement.h"
+#include "armmimic/engines/pose_options.h"
 
 namespace armmimic {
 
@@ -33,9 +34,15 @@ struct AnalysisOptions {
   std::optional<cv::Point2d> elbow_px;     // --elbow X,Y (lk, with --shoulder and --wrist)
   std::optional<cv::Point2d> wrist_px;     // --wrist X,Y
   std::optional<cv::Rect> roi;             // --roi X,Y,W,H
+  std::string model_dir;                   // --model DIR: the pose model's folder
+  // --auto-calibrate: the shoulder, elbow and wrist in frame `start` come from the pose network
+  // (tracking engines), as if given with --shoulder/--elbow/--wrist.
+  bool auto_calibrate = false;
+  PoseSide calibrate_side = PoseSide::kAuto;  // --side with --auto-calibrate: the person's arm
   // Where the frames come from when set, instead of VideoSource::Open(inputs): called once per
-  // pass over the input (the background estimate, then the analysis). `inputs` still names
-  // the source. Benchmarks run rendered scenes this way (VideoSource::FromFrames).
+  // pass over the input (the background estimate, the pose network's look at the start, the
+  // analysis). `inputs` still names the source. Benchmarks run rendered scenes this way
+  // (VideoSource::FromFrames).
   std::function<std::unique_ptr<VideoSource>(Status*)> open_source;
   Status Check() const;  // messages name the flag
 };
