@@ -21,10 +21,11 @@ int RunScore(const std::vector<std::string>& args, const GlobalOptions& global) 
               "Compares an angle file with the truth of a generated scene, frame by frame (rows\n"
               "are matched by frame index). Prints a table like thesis Table 5-1 (truth,\n"
               "calculated and error of the upper arm and forearm directions; yaw and bend for\n"
-              "marker scenes) and a summary: coverage, mean absolute direction error per segment,\n"
-              "the axis error (difference mod 180, as the thesis measured orientation), maximum,\n"
-              "yaw and bend errors. Exit status 0 whatever the errors; 1 when a file cannot be\n"
-              "read or is malformed.");
+              "marker scenes) and a summary: coverage, the confidently wrong rate (rows ok with\n"
+              "an error over 15 degrees), mean absolute direction error per segment, the axis\n"
+              "error (difference mod 180, as the thesis measured orientation), maximum, yaw and\n"
+              "bend errors. Exit status 0 whatever the errors; 1 when a file cannot be read or\n"
+              "is malformed.");
   p.Positionals(&files, "TRUTH.tsv ANGLES.tsv", 2, 2);
   p.String("--plot", &plot, "FILE", "also draw the error against the frame into an image (.png)");
   p.String("--plot-size", &plot_size, "WxH", "size of the plot (default 800x400)");

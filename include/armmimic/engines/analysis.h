@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,7 +39,12 @@ struct AnalysisOptions {
   // (tracking engines), as if given with --shoulder/--elbow/--wrist.
   bool auto_calibrate = false;
   PoseSide calibrate_side = PoseSide::kAuto;  // --side with --auto-calibrate: the person's arm
-  Status Check() const;                       // messages name the flag
+  // Where the frames come from when set, instead of VideoSource::Open(inputs): called once per
+  // pass over the input (the background estimate, the pose network's look at the start, the
+  // analysis). `inputs` still names the source. Benchmarks run rendered scenes this way
+  // (VideoSource::FromFrames).
+  std::function<std::unique_ptr<VideoSource>(Status*)> open_source;
+  Status Check() const;  // messages name the flag
 };
 
 struct AnalysisCallbacks {
