@@ -214,6 +214,28 @@ void SerialLink::Start(std::vector<robot::LinkLine> lines, const std::string& so
   Flush();
 }
 
+void SerialLink::StartStream(const std::string& source_name) {
+  clock_.start();
+  paused_ = false;
+  paused_ns_ = 0;
+  held_.clear();
+  reported_ = 0;
+  finished_sent_ = false;
+  protocol_.StartStream(source_name, Now());
+  timer_->start();
+  Flush();
+}
+
+void SerialLink::Append(robot::LinkLine line) {
+  protocol_.Append(std::move(line), Now());
+  Flush();
+}
+
+void SerialLink::EndStream() {
+  protocol_.EndStream();
+  Flush();
+}
+
 void SerialLink::Cancel(const std::string& reason) {
   protocol_.Abort(reason);
   Flush();
