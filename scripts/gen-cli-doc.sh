@@ -55,7 +55,7 @@ HEAD
   echo '```'
   "$CLI" --help
   echo '```'
-  for cmd in background analyze synth "synth arm" "synth marker" score plan send puma-sim; do
+  for cmd in background analyze synth "synth arm" "synth marker" score plan send mimic puma-sim; do
     echo
     echo "### $cmd"
     echo
