@@ -8,8 +8,8 @@
 #include <QFileInfo>
 #include <QMenu>
 #include <QMimeData>
-#include <QScrollArea>
 #include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QVBoxLayout>
@@ -20,6 +20,7 @@
 #include "engine_settings_panel.h"
 #include "icons.h"
 #include "log_view.h"
+#include "mimic_panel.h"
 #include "playback_bar.h"
 #include "prompts.h"
 #include "recent_files.h"
@@ -40,6 +41,7 @@ MainWindow::MainWindow(QWidget* parent)
       plot_(new AnglePlot),
       log_(new LogView),
       robot_(new RobotPanel),
+      mimic_(new MimicPanel),
       job_(new AnalysisJob(this)),
       status_(new StatusLine(statusBar())) {
   setObjectName("mainWindow");
@@ -61,10 +63,17 @@ MainWindow::MainWindow(QWidget* parent)
                  ->toggleViewAction();
   toggles << dock(tr("Angles"), "plotDock", plot_, Qt::BottomDockWidgetArea)->toggleViewAction();
   toggles << dock(tr("Robot"), "robotDock", robot_, Qt::LeftDockWidgetArea)->toggleViewAction();
+  auto* mimic_scroll = new QScrollArea;  // the live view never makes the dock column taller
+  mimic_scroll->setWidget(mimic_);
+  mimic_scroll->setWidgetResizable(true);
+  mimic_scroll->setFrameShape(QFrame::NoFrame);
+  toggles << dock(tr("Mimic live"), "mimicDock", mimic_scroll, Qt::LeftDockWidgetArea)
+                 ->toggleViewAction();
   log_dock_ = dock(tr("Messages"), "logDock", log_, Qt::BottomDockWidgetArea);
   toggles << log_dock_->toggleViewAction();
   tabifyDockWidget(findChild<QDockWidget*>("plotDock"), log_dock_);
   tabifyDockWidget(findChild<QDockWidget*>("analysisDock"), findChild<QDockWidget*>("robotDock"));
+  tabifyDockWidget(findChild<QDockWidget*>("robotDock"), findChild<QDockWidget*>("mimicDock"));
   findChild<QDockWidget*>("analysisDock")->raise();
   resizeDocks({findChild<QDockWidget*>("plotDock")}, {260}, Qt::Vertical);
   findChild<QDockWidget*>("plotDock")->raise();
@@ -78,6 +87,7 @@ MainWindow::MainWindow(QWidget* parent)
   connect(&throttle_, &QTimer::timeout, this, &MainWindow::refreshViews);
   wireActions();
   wireAnalysis();
+  wireMimic();
   restoreSettings();
   updateStatus();
 }
@@ -232,6 +242,20 @@ void MainWindow::wireAnalysis() {
       findChild<QDockWidget*>("plotDock")->raise();  // the angles just measured, not old errors
     }
   });
+}
+
+void MainWindow::wireMimic() {
+  mimic_->setSources(
+      [this] {
+        AnalysisOptions options = settings_->options();
+        options.inputs.clear();
+        for (const QString& s : player_->inputs()) options.inputs.push_back(s.toStdString());
+        if (player_->isLive()) player_->close();  // the live run reads the camera itself
+        return options;
+      },
+      [this] { return robot_->plannerOptions(); }, robot_->link());
+  connect(mimic_, &MimicPanel::message, log_, &LogView::info);
+  connect(mimic_, &MimicPanel::errorOccurred, log_, &LogView::error);
 }
 
 void MainWindow::setBusy(bool busy) {

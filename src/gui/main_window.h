@@ -17,6 +17,7 @@ class AnglePlot;
 class AppActions;
 class EngineSettingsPanel;
 class LogView;
+class MimicPanel;
 class PlaybackBar;
 class RecentFiles;
 class RobotPanel;
@@ -45,6 +46,7 @@ class MainWindow : public QMainWindow {
   AnglePlot* plot() const { return plot_; }
   LogView* log() const { return log_; }
   RobotPanel* robotPanel() const { return robot_; }
+  MimicPanel* mimicPanel() const { return mimic_; }
   StatusLine* statusLine() const { return status_; }
   AppActions* actions() const { return actions_; }
   const ResultStore& results() const { return results_; }
@@ -58,6 +60,7 @@ class MainWindow : public QMainWindow {
   QDockWidget* dock(const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea a);
   void wireActions();
   void wireAnalysis();
+  void wireMimic();
   void refreshViews();
   void updateStatus();
   void setBusy(bool busy);
@@ -73,6 +76,7 @@ class MainWindow : public QMainWindow {
   AnglePlot* plot_;
   LogView* log_;
   RobotPanel* robot_;
+  MimicPanel* mimic_;
   AnalysisJob* job_;
   RecentFiles* recent_ = nullptr;
   QDockWidget* log_dock_ = nullptr;
