@@ -20,6 +20,7 @@
 #include "engine_settings_panel.h"
 #include "icons.h"
 #include "log_view.h"
+#include "mimic_controller.h"
 #include "mimic_panel.h"
 #include "playback_bar.h"
 #include "prompts.h"
@@ -67,6 +68,7 @@ MainWindow::MainWindow(QWidget* parent)
   mimic_scroll->setWidget(mimic_);
   mimic_scroll->setWidgetResizable(true);
   mimic_scroll->setFrameShape(QFrame::NoFrame);
+  mimic_scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   toggles << dock(tr("Mimic live"), "mimicDock", mimic_scroll, Qt::LeftDockWidgetArea)
                  ->toggleViewAction();
   log_dock_ = dock(tr("Messages"), "logDock", log_, Qt::BottomDockWidgetArea);
@@ -254,6 +256,12 @@ void MainWindow::wireMimic() {
         return options;
       },
       [this] { return robot_->plannerOptions(); }, robot_->link());
+  // The live frames fill the big view too while the robot follows.
+  connect(mimic_->controller(), &MimicController::frameReady, this,
+          [this](const QImage& image, int index, const ArmMeasurement& m) {
+            view_->setFrame(image, index, -1);
+            view_->setMeasurement(m);
+          });
   connect(mimic_, &MimicPanel::message, log_, &LogView::info);
   connect(mimic_, &MimicPanel::errorOccurred, log_, &LogView::error);
 }

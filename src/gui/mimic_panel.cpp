@@ -3,6 +3,7 @@
 #include <QCheckBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QShortcut>
 #include <QVBoxLayout>
@@ -44,17 +45,19 @@ MimicPanel::MimicPanel(QWidget* parent)
       view_(new VideoView),
       preview_(new RobotPreview) {
   setObjectName("mimicPanel");
-  settings_ = new QLabel;
+  // A read-only text box, not a word-wrapped label: a height-for-width label would make the
+  // scrolling dock size the whole panel by the video view's preferred height.
+  settings_ = new QPlainTextEdit;
   settings_->setObjectName("mimicSettings");
-  settings_->setWordWrap(true);
-  settings_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  settings_->setReadOnly(true);
+  settings_->setFixedHeight(settings_->fontMetrics().lineSpacing() * 5 + 10);
   confirm_ = new QCheckBox(tr("I have checked this mapping and these limits for this robot"));
   confirm_->setObjectName("mimicConfirm");
   deadman_ = new QCheckBox(tr("Dead-man: move only while “Hold to move” is held"));
   deadman_->setObjectName("mimicDeadman");
   start_ = new QPushButton(tr("Start mimicking"));
   start_->setObjectName("mimicStart");
-  stop_ = new QPushButton(tr("STOP  (F12)"));
+  stop_ = new QPushButton(tr("STOP   (F12 / Ctrl+.)"));
   stop_->setObjectName("mimicStop");
   stop_->setMinimumHeight(56);
   stop_->setStyleSheet(
@@ -67,23 +70,26 @@ MimicPanel::MimicPanel(QWidget* parent)
   state_->setObjectName("mimicState");
   latency_ = new QLabel(tr("Latency: no run yet"));
   latency_->setObjectName("mimicLatency");
-  latency_->setWordWrap(true);
+  latency_->setMinimumWidth(1);  // a long line is cut, never widens the panel
+  state_->setMinimumWidth(1);
 
+  // Stop on top, where it is always in sight; the settings to confirm next to their tick.
+  view_->setMinimumSize(200, 150);
   auto* views = new QHBoxLayout;
   views->addWidget(view_, 3);
   views->addWidget(preview_, 2);
-  auto* buttons = new QHBoxLayout;
-  buttons->addWidget(start_, 1);
-  buttons->addWidget(stop_, 2);
+  auto* controls = new QHBoxLayout;
+  controls->addWidget(start_, 1);
+  controls->addWidget(hold_, 1);
   auto* layout = new QVBoxLayout(this);
+  layout->addWidget(stop_);
   layout->addLayout(views, 1);
+  layout->addWidget(state_);
+  layout->addWidget(latency_);
   layout->addWidget(settings_);
   layout->addWidget(confirm_);
   layout->addWidget(deadman_);
-  layout->addLayout(buttons);
-  layout->addWidget(hold_);
-  layout->addWidget(state_);
-  layout->addWidget(latency_);
+  layout->addLayout(controls);
 
   // Stop works from anywhere in the application, whatever has the focus.
   stop_shortcut_ = new QShortcut(this);
@@ -159,7 +165,7 @@ void MimicPanel::refreshSettings() {
   if (now == shown_) return;
   const bool was_confirmed = confirm_->isChecked();
   shown_ = now;
-  settings_->setText(now);
+  settings_->setPlainText(now);
   preview_->setLimits(planner_().limits);
   if (was_confirmed) {
     confirm_->setChecked(false);  // a change the operator has not seen is not confirmed

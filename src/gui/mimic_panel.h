@@ -19,6 +19,7 @@
 
 class QCheckBox;
 class QLabel;
+class QPlainTextEdit;
 class QPushButton;
 class QShortcut;
 
@@ -67,7 +68,7 @@ class MimicPanel : public QWidget {
   QTimer refresh_;
   VideoView* view_;
   RobotPreview* preview_;
-  QLabel* settings_;
+  QPlainTextEdit* settings_;
   QCheckBox* confirm_;
   QCheckBox* deadman_;
   QPushButton* start_;
