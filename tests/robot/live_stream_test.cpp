@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "angle_rows.h"
+
 #include "armmimic/core/angles.h"
 #include "test_util.h"
 
@@ -97,17 +99,7 @@ struct Rig {
 };
 
 AngleRow Row(int frame, double upper, double bend, bool lost = false) {
-  AngleRow r;
-  r.frame = frame;
-  r.time_s = frame / kFps;
-  r.status = lost ? RowStatus::kLost : RowStatus::kOk;
-  if (!lost) {
-    r.upper_deg = Wrap180(upper);
-    r.bend_deg = Wrap180(bend);
-    r.fore_deg = Wrap180(upper + bend);
-    r.yaw_deg = 0;
-  }
-  return r;
+  return test::MakeRow(frame, kFps, upper, bend, 0, lost);
 }
 
 TEST(LiveStream, LostFramesHoldTheRobot) {

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "angle_rows.h"
+
 #include "armmimic/core/angles.h"
 #include "armmimic/robot/val_program.h"
 
@@ -14,17 +16,7 @@ namespace {
 constexpr double kFps = 30;
 
 AngleRow Row(int frame, double upper, double bend, double yaw = 0, bool lost = false) {
-  AngleRow r;
-  r.frame = frame;
-  r.time_s = frame / kFps;
-  r.status = lost ? RowStatus::kLost : RowStatus::kOk;
-  if (!lost) {
-    r.upper_deg = Wrap180(upper);
-    r.bend_deg = Wrap180(bend);
-    r.fore_deg = Wrap180(upper + bend);
-    r.yaw_deg = yaw;
-  }
-  return r;
+  return test::MakeRow(frame, kFps, upper, bend, yaw, lost);
 }
 
 StreamPlanner Begin(PlannerOptions o = {}) {

@@ -8,6 +8,7 @@
 #include <QSerialPort>
 #include <QTimer>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -92,6 +93,8 @@ class SerialLink : public QObject {
   void portError(const QString& message);
 
  private:
+  // Resets the clock, the pause and the reports, then starts the protocol at the new time.
+  void Begin(const std::function<void(double now_s)>& start_protocol);
   void OnReadyRead();
   void OnError(QSerialPort::SerialPortError error);
   void OnTick();
