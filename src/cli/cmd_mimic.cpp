@@ -7,6 +7,7 @@
 #include <csignal>
 #include <ctime>
 #include <iostream>
+#include <optional>
 
 #include "analysis_flags.h"
 #include "args.h"
@@ -75,34 +76,18 @@ const char* kDescription =
     "the angle file is kept (complete=no); a second one stops at once. Exit 0 when the input\n"
     "ends, 1 when the link is lost, the controller refuses or is silent, or on an interrupt.\n";
 
-int RunMimic(const std::vector<std::string>& args, const GlobalOptions& global) {
+// What the flags say: the live run's options and the port.
+struct MimicSetup {
   live::MimicOptions o;
-  AnalysisFlags analysis_flags(&o.analysis);
-  robot::PlannerOptions& planner = o.stream.planner;
-  PlannerFlags planner_flags(&planner, true);
   serial::PortSettings port;
-  std::vector<std::string> videos;
-  std::string output, camera, stream_url, profile_path;
-  bool realtime = false, dry_run = false;
-  double stale_after_s = o.stream.stale_after_s;
-  ArgParser p("mimic", kSynopsis, kDescription + AnalysisFlags::ParamList());
-  p.Positionals(&videos, "VIDEO", 0, 1);
-  p.Flag("--realtime", &realtime, "read VIDEO at its own frame rate, as a camera delivers it");
-  p.String("--camera", &camera, "N", "analyse camera N (/dev/videoN)");
-  p.String("--stream", &stream_url, "URL", "analyse a network stream (rtsp://, http://)");
-  p.String("-o,--output", &output, "ANGLES.tsv",
-           "the angle file to write (default mimic-DATE-TIME.tsv)");
-  analysis_flags.Register(p);
-  AddPortFlags(p, &port);
-  p.Flag("--dry-run", &dry_run, "print the commands with their times; open no port");
-  p.String("--profile", &profile_path, "FILE", "controller profile (docs/profiles/)");
-  planner_flags.RegisterMapping(p);
-  planner_flags.RegisterFilter(p);
-  planner_flags.RegisterLimits(p);
-  p.Double("--stale-after", &stale_after_s, "S",
-           "hold the robot when no frame was measured for this long (default 0.2)");
-  if (auto code = p.Parse(args)) return *code;
+  bool dry_run = false;
+  std::string output;
+};
 
+// Exactly one of VIDEO --realtime, --camera N and --stream URL, as the analysis input.
+std::optional<int> PickInput(const ArgParser& p, const std::vector<std::string>& videos,
+                             const std::string& camera, const std::string& stream_url,
+                             bool realtime, AnalysisOptions* analysis) {
   const int sources =
       (videos.empty() ? 0 : 1) + (camera.empty() ? 0 : 1) + (stream_url.empty() ? 0 : 1);
   if (sources != 1) {
@@ -116,57 +101,97 @@ int RunMimic(const std::vector<std::string>& args, const GlobalOptions& global) 
   if (videos.empty() && realtime) {
     return p.UsageError("--realtime paces a VIDEO file; a camera or stream is live already");
   }
-  if (!camera.empty()) {
-    int index = 0;
-    if (!ParseIntArg(camera, &index) || index < 0) {
-      return p.UsageError("--camera: '" + camera + "' is not a camera number (0, 1, ...)");
-    }
+  int index = 0;
+  if (!camera.empty() && (!ParseIntArg(camera, &index) || index < 0)) {
+    return p.UsageError("--camera: '" + camera + "' is not a camera number (0, 1, ...)");
   }
-  o.analysis.inputs = {!videos.empty()  ? videos[0]
-                       : camera.empty() ? stream_url
-                                        : "camera:" + camera};
-  o.analysis.realtime = realtime;
-  if (auto code = analysis_flags.CheckEngine(p)) return *code;
-  if (auto code = analysis_flags.Finish(p)) return *code;
-  if (!dry_run && port.port.empty()) {
+  analysis->inputs = {!videos.empty()  ? videos[0]
+                      : camera.empty() ? stream_url
+                                       : "camera:" + camera};
+  analysis->realtime = realtime;
+  return std::nullopt;
+}
+
+// Parses and checks every flag into `m`. Returns the exit code when the command must end now.
+std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* m) {
+  live::MimicOptions& o = m->o;
+  AnalysisFlags analysis_flags(&o.analysis);
+  PlannerFlags planner_flags(&o.stream.planner, true);
+  std::vector<std::string> videos;
+  std::string camera, stream_url, profile_path;
+  bool realtime = false;
+  ArgParser p("mimic", kSynopsis, kDescription + AnalysisFlags::ParamList());
+  p.Positionals(&videos, "VIDEO", 0, 1);
+  p.Flag("--realtime", &realtime, "read VIDEO at its own frame rate, as a camera delivers it");
+  p.String("--camera", &camera, "N", "analyse camera N (/dev/videoN)");
+  p.String("--stream", &stream_url, "URL", "analyse a network stream (rtsp://, http://)");
+  p.String("-o,--output", &m->output, "ANGLES.tsv",
+           "the angle file to write (default mimic-DATE-TIME.tsv)");
+  analysis_flags.Register(p);
+  AddPortFlags(p, &m->port);
+  p.Flag("--dry-run", &m->dry_run, "print the commands with their times; open no port");
+  p.String("--profile", &profile_path, "FILE", "controller profile (docs/profiles/)");
+  planner_flags.RegisterMapping(p);
+  planner_flags.RegisterFilter(p);
+  planner_flags.RegisterLimits(p);
+  p.Double("--stale-after", &o.stream.stale_after_s, "S",
+           "hold the robot when no frame was measured for this long (default 0.2)");
+  if (auto code = p.Parse(args)) return code;
+  if (auto code = PickInput(p, videos, camera, stream_url, realtime, &o.analysis)) return code;
+  if (auto code = analysis_flags.CheckEngine(p)) return code;
+  if (auto code = analysis_flags.Finish(p)) return code;
+  if (!m->dry_run && m->port.port.empty()) {
     return p.UsageError("--port is required (or --dry-run; 'send --list-ports' lists the ports)");
   }
-  if (!dry_run) {
-    const Status s = port.Check();
-    if (!s.ok()) return p.UsageError(s.message());
-  }
-  if (!(stale_after_s > 0)) return p.UsageError("--stale-after must be > 0");
-  if (auto code = planner_flags.ParseTexts(p)) return *code;
-  const robot::SourceKind kind = o.analysis.engine.kind == EngineKind::kMarker
-                                     ? robot::SourceKind::kMarker
-                                     : robot::SourceKind::kArm;
-  if (auto code = planner_flags.Finish(p, kind, false)) return *code;
-
-  robot::ControllerProfile& profile = o.stream.profile;
+  if (const Status s = m->port.Check(); !m->dry_run && !s.ok()) return p.UsageError(s.message());
+  if (!(o.stream.stale_after_s > 0)) return p.UsageError("--stale-after must be > 0");
+  if (auto code = planner_flags.ParseTexts(p)) return code;
+  o.stream.kind = o.analysis.engine.kind == EngineKind::kMarker ? robot::SourceKind::kMarker
+                                                                : robot::SourceKind::kArm;
+  if (auto code = planner_flags.Finish(p, o.stream.kind, false)) return code;
   if (!profile_path.empty()) {
-    const Status s = robot::ReadProfile(profile_path, &profile);
+    const Status s = robot::ReadProfile(profile_path, &o.stream.profile);
     if (!s.ok()) return Fail(s.message());
   }
-  if (output.empty()) output = DefaultOutput();
-  o.angles_path = output;
-  o.stream.kind = kind;
-  o.stream.stale_after_s = stale_after_s;
+  if (m->output.empty()) m->output = DefaultOutput();
+  o.angles_path = m->output;
   o.stream.source_name = o.analysis.inputs[0];
-  o.stream.port_name = dry_run ? "dry-run" : port.port;
-  o.stream.journal_path = dry_run ? "" : robot::LiveJournal::PathFor(output);
-  o.stream.latency_path = robot::LatencyLog::PathFor(output);
+  o.stream.port_name = m->dry_run ? "dry-run" : m->port.port;
+  o.stream.journal_path = m->dry_run ? "" : robot::LiveJournal::PathFor(m->output);
+  o.stream.latency_path = robot::LatencyLog::PathFor(m->output);
   if (const Status s = o.stream.Check(); !s.ok()) return p.UsageError("--profile: " + s.message());
+  return std::nullopt;
+}
 
+void Report(const live::MimicRun& run, const MimicSetup& m, const GlobalOptions& global) {
+  std::cout << "mimic: " << run.stream().Summary().Describe() << std::endl;
+  if (global.quiet) return;
+  const AnalysisSummary& a = run.analysis_summary();
+  const robot::StreamStats& st = run.stream().planner().stats();
+  std::cerr << "mimic: " << a.frames << " rows (" << a.ok << " ok, " << a.lost << " lost) in "
+            << m.output << (a.cancelled ? " (complete=no)" : "") << "; " << st.flagged_jumps
+            << " impossible jumps, " << st.limit_holds << " targets outside the limits, "
+            << st.rate_limited << " commands held back by the speed limits\n";
+  if (m.o.stream.journal_path.empty()) return;
+  const int last = run.stream().last_acked_seq();
+  std::cerr << "mimic: journal " << m.o.stream.journal_path << " (last acknowledged move: "
+            << (last > 0 ? "command " + std::to_string(last) : std::string("none"))
+            << "), latency log " << m.o.stream.latency_path << "\n";
+}
+
+int RunMimic(const std::vector<std::string>& args, const GlobalOptions& global) {
+  MimicSetup m;
+  if (auto code = ParseMimic(args, &m)) return *code;
   int argc = 1;
   char name[] = "armmimic-cli";
   char* argv[] = {name, nullptr};
   QCoreApplication app(argc, argv);
-  serial::SerialLink link(robot::LinkSettings::FromProfile(profile));
-  if (!dry_run) {
-    const Status s = link.Open(port);
+  serial::SerialLink link(robot::LinkSettings::FromProfile(m.o.stream.profile));
+  if (!m.dry_run) {
+    const Status s = link.Open(m.port);
     if (!s.ok()) return Fail(s.message());
   }
-  live::MimicRun run(dry_run ? nullptr : &link);
+  live::MimicRun run(m.dry_run ? nullptr : &link);
   run.SetDryWriter([](const robot::LinkLine& l) {
     std::cout << (std::isnan(l.time_s) ? std::string("       -") : "t=" + FormatNumber(l.time_s, 3))
               << "\t" << l.text << std::endl;
@@ -189,32 +214,15 @@ int RunMimic(const std::vector<std::string>& args, const GlobalOptions& global) 
     }
   });
   poll.start();
-  if (const Status s = run.Start(o); !s.ok()) return Fail(s.message());
+  if (const Status s = run.Start(m.o); !s.ok()) return Fail(s.message());
   if (!global.quiet) {
-    std::cerr << "mimic: " << o.analysis.inputs[0] << " -> "
-              << (dry_run ? std::string("dry run (no port)") : port.port) << "; angles " << output
-              << "; Ctrl-C stops\n";
+    std::cerr << "mimic: " << m.o.analysis.inputs[0] << " -> "
+              << (m.dry_run ? std::string("dry run (no port)") : m.port.port) << "; angles "
+              << m.output << "; Ctrl-C stops\n";
   }
   app.exec();
   link.Close();
-
-  const robot::LatencySummary summary = run.stream().Summary();
-  std::cout << "mimic: " << summary.Describe() << std::endl;
-  const AnalysisSummary& a = run.analysis_summary();
-  if (!global.quiet) {
-    const robot::StreamStats& st = run.stream().planner().stats();
-    std::cerr << "mimic: " << a.frames << " rows (" << a.ok << " ok, " << a.lost << " lost) in "
-              << output << (a.cancelled ? " (complete=no)" : "") << "; " << st.flagged_jumps
-              << " impossible jumps, " << st.limit_holds << " targets outside the limits, "
-              << st.rate_limited << " commands held back by the speed limits\n";
-    if (!o.stream.journal_path.empty()) {
-      std::cerr << "mimic: journal " << o.stream.journal_path << " (last acknowledged move: "
-                << (run.stream().last_acked_seq() > 0
-                        ? "command " + std::to_string(run.stream().last_acked_seq())
-                        : std::string("none"))
-                << "), latency log " << o.stream.latency_path << "\n";
-    }
-  }
+  Report(run, m, global);
   if (!ok) return Fail(message.empty() ? "stopped" : message);
   return kExitOk;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <csignal>
 #include <iostream>
+#include <optional>
 
 #include "args.h"
 #include "armmimic/core/angle_file.h"
@@ -46,6 +47,39 @@ std::string Num(double v, int decimals) { return FormatNumber(v, decimals); }
 
 std::string Interrupted() { return g_interrupted ? "interrupted (Ctrl-C)" : ""; }
 
+// --dry-run: every line that would be sent, with its planned time; no port.
+int PrintDryRun(const robot::SendSession& session, const GlobalOptions& global) {
+  const std::string& source = session.program().source_name;
+  int moves = 0;
+  for (const robot::LinkLine& l : session.lines()) {
+    std::cout << (std::isnan(l.time_s) ? std::string("       -") : "t=" + Num(l.time_s, 3)) << "\t"
+              << source << ":" << l.line_no << "\t" << l.text << "\n";
+    if (robot::IsMotionLine(l.text)) ++moves;
+  }
+  if (!global.quiet) {
+    std::cerr << "send --dry-run: " << session.lines().size() << " lines (" << moves
+              << " motion), planned duration " << Num(session.duration_s(), 2)
+              << " s; no port opened, nothing sent\n";
+  }
+  return kExitOk;
+}
+
+// A line written before the link died but never acknowledged: did it run? Ask the arm.
+Status AskUncertain(robot::SendSession& session, serial::SerialLink& link,
+                    const GlobalOptions& global) {
+  bool ask = false;
+  robot::LinkLine query;
+  Status s = session.UncertainQuery(&ask, &query);
+  if (!s.ok() || !ask) return s;
+  if (!serial::RunToEnd(link, {query}, session.program().source_name, Interrupted)) {
+    return Status::Error(link.protocol().error_message() + " (while asking WHERE)");
+  }
+  std::string note;
+  s = session.ResolveUncertain(link.protocol().last_replies(), &note);
+  if (s.ok() && !global.quiet) std::cerr << note << "\n";
+  return s;
+}
+
 int ListPorts() {
   const std::vector<serial::PortInfo> ports = serial::ListPorts();
   if (ports.empty()) std::cerr << "armmimic-cli send: no serial ports found\n";
@@ -63,8 +97,8 @@ int ListPorts() {
   return kExitOk;
 }
 
-int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
-  SendOptions o;
+// Parses and checks the flags. Returns the exit code when the command must end now.
+std::optional<int> ParseSend(const std::vector<std::string>& args, SendOptions* o) {
   ArgParser p("send",
               "  armmimic-cli send (ANGLES.tsv | PROGRAM.val) --port DEVICE [--baud 9600]\n"
               "          [--dry-run] [--resume] [--profile FILE]\n"
@@ -76,55 +110,62 @@ int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
               "joint and speed limits right before it is written. A journal beside the input "
               "(INPUT.journal) records each acknowledged line; --resume continues after the last "
               "one. See docs/link.md.");
-  p.Positionals(&o.inputs, "INPUT", 0, 1);
-  AddPortFlags(p, &o.port);
-  p.Flag("--dry-run", &o.dry_run, "print every line with its planned time; open no port");
-  p.Flag("--resume", &o.resume, "continue after the last line the journal shows acknowledged");
-  p.Flag("--restart", &o.restart,
+  p.Positionals(&o->inputs, "INPUT", 0, 1);
+  AddPortFlags(p, &o->port);
+  p.Flag("--dry-run", &o->dry_run, "print every line with its planned time; open no port");
+  p.Flag("--resume", &o->resume, "continue after the last line the journal shows acknowledged");
+  p.Flag("--restart", &o->restart,
          "start over from the first line even though the journal shows an unfinished send");
-  p.Int("--resume-at", &o.resume_at, "LINE",
+  p.Int("--resume-at", &o->resume_at, "LINE",
         "continue from this file line (after checking the arm yourself)", 1);
-  p.Flag("--list-ports", &o.list_ports, "list the serial ports found and exit");
-  p.String("--profile", &o.profile_path, "FILE", "controller profile (docs/profiles/)");
-  p.Double("--timeout", &o.timeout_s, "S",
+  p.Flag("--list-ports", &o->list_ports, "list the serial ports found and exit");
+  p.String("--profile", &o->profile_path, "FILE", "controller profile (docs/profiles/)");
+  p.Double("--timeout", &o->timeout_s, "S",
            "seconds to wait for the prompt after a non-motion line (profile: prompt_timeout_s)");
-  p.Double("--motion-timeout", &o.motion_timeout_s, "S",
+  p.Double("--motion-timeout", &o->motion_timeout_s, "S",
            "seconds to wait for the prompt after a motion line (profile: motion_timeout_s)");
   p.Custom("--limits", "J2=-200:20,...", "override joint limits (degrees)",
-           [&](const std::string& v) { return robot::ParseLimitsOverride(v, &o.limits); });
+           [&](const std::string& v) { return robot::ParseLimitsOverride(v, &o->limits); });
   p.Custom("--speed-limit", "DEG_S", "joint speed limits, one value or six",
-           [&](const std::string& v) { return robot::ParseSpeedLimits(v, &o.limits); });
-  if (auto code = p.Parse(args)) return *code;
-  if (o.list_ports) return ListPorts();
-  if (o.inputs.empty()) return p.UsageError("missing the angle file or VAL program to send");
-  if (!o.dry_run && o.port.port.empty()) {
+           [&](const std::string& v) { return robot::ParseSpeedLimits(v, &o->limits); });
+  if (auto code = p.Parse(args)) return code;
+  if (o->list_ports) return ListPorts();
+  if (o->inputs.empty()) return p.UsageError("missing the angle file or VAL program to send");
+  if (!o->dry_run && o->port.port.empty()) {
     return p.UsageError("--port is required (or --dry-run; --list-ports lists the ports)");
   }
-  if (o.resume && o.restart) return p.UsageError("--resume and --restart exclude each other");
-  if (p.Given("--timeout") && !(o.timeout_s > 0)) return p.UsageError("--timeout must be > 0");
-  if (p.Given("--motion-timeout") && !(o.motion_timeout_s > 0)) {
+  if (o->resume && o->restart) return p.UsageError("--resume and --restart exclude each other");
+  if (p.Given("--timeout") && !(o->timeout_s > 0)) return p.UsageError("--timeout must be > 0");
+  if (p.Given("--motion-timeout") && !(o->motion_timeout_s > 0)) {
     return p.UsageError("--motion-timeout must be > 0");
   }
   {
-    const Status s = o.port.Check();
-    if (!o.dry_run && !s.ok()) return p.UsageError(s.message());
-    const Status l = o.limits.Check();
+    const Status s = o->port.Check();
+    if (!o->dry_run && !s.ok()) return p.UsageError(s.message());
+    const Status l = o->limits.Check();
     if (!l.ok()) return p.UsageError("--limits: " + l.message());
   }
+  return std::nullopt;
+}
+
+// The profile with the timeout flags, the program (planned from an angle file), and where the
+// session starts (the journal, --resume, --restart).
+Status PrepareSend(const SendOptions& o, robot::ControllerProfile* profile,
+                   robot::SendSession* session) {
   const std::string& input = o.inputs[0];
 
-  robot::ControllerProfile profile = robot::ControllerProfile::Default();
+  *profile = robot::ControllerProfile::Default();
   if (!o.profile_path.empty()) {
-    const Status s = robot::ReadProfile(o.profile_path, &profile);
-    if (!s.ok()) return Fail(s.message());
+    const Status s = robot::ReadProfile(o.profile_path, profile);
+    if (!s.ok()) return s;
   }
-  if (o.timeout_s > 0) profile.prompt_timeout_s = o.timeout_s;
-  if (o.motion_timeout_s > 0) profile.motion_timeout_s = o.motion_timeout_s;
+  if (o.timeout_s > 0) profile->prompt_timeout_s = o.timeout_s;
+  if (o.motion_timeout_s > 0) profile->motion_timeout_s = o.motion_timeout_s;
 
   robot::ValProgram program;
   {
-    const Status s = robot::LoadProgramToSend(input, profile, o.limits, &program);
-    if (!s.ok()) return Fail(s.message());
+    const Status s = robot::LoadProgramToSend(input, *profile, o.limits, &program);
+    if (!s.ok()) return s;
   }
   robot::SendStart start;
   start.mode = o.resume    ? robot::SendStart::Mode::kResume
@@ -132,32 +173,14 @@ int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
                            : robot::SendStart::Mode::kFresh;
   start.resume_at_line = o.resume_at;
   start.dry_run = o.dry_run;
-  robot::SendSession session;
-  {
-    const Status s = session.Prepare(std::move(program), profile, o.limits, input, start);
-    if (!s.ok()) return Fail(s.message());
-  }
-  if (session.nothing_to_do()) {
-    if (!global.quiet) std::cout << input << ": already sent completely; nothing to resume\n";
-    return kExitOk;
-  }
+  return session->Prepare(std::move(program), *profile, o.limits, input, start);
+}
+
+// Opens the port and streams the session's lines; the journal and the messages on the way.
+int StreamToPort(const SendOptions& o, const robot::ControllerProfile& profile,
+                 robot::SendSession& session, const GlobalOptions& global) {
+  const std::string& input = o.inputs[0];
   const std::string& source = session.program().source_name;
-
-  if (o.dry_run) {
-    int moves = 0;
-    for (const robot::LinkLine& l : session.lines()) {
-      std::cout << (std::isnan(l.time_s) ? std::string("       -") : "t=" + Num(l.time_s, 3))
-                << "\t" << source << ":" << l.line_no << "\t" << l.text << "\n";
-      if (robot::IsMotionLine(l.text)) ++moves;
-    }
-    if (!global.quiet) {
-      std::cerr << "send --dry-run: " << session.lines().size() << " lines (" << moves
-                << " motion), planned duration " << Num(session.duration_s(), 2)
-                << " s; no port opened, nothing sent\n";
-    }
-    return kExitOk;
-  }
-
   int argc = 1;
   char name[] = "armmimic-cli";
   char* argv[] = {name, nullptr};
@@ -171,22 +194,7 @@ int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
     if (!s.ok()) return Fail(s.message());
   }
 
-  // A line written before the link died but never acknowledged: did it run? Ask the arm.
-  {
-    bool ask = false;
-    robot::LinkLine query;
-    Status s = session.UncertainQuery(&ask, &query);
-    if (!s.ok()) return Fail(s.message());
-    if (ask) {
-      if (!serial::RunToEnd(link, {query}, source, Interrupted)) {
-        return Fail(link.protocol().error_message() + " (while asking WHERE)");
-      }
-      std::string note;
-      s = session.ResolveUncertain(link.protocol().last_replies(), &note);
-      if (!s.ok()) return Fail(s.message());
-      if (!global.quiet) std::cerr << note << "\n";
-    }
-  }
+  if (const Status s = AskUncertain(session, link, global); !s.ok()) return Fail(s.message());
   {
     const Status s = session.Attach(&link.protocol());
     if (!s.ok()) return Fail(s.message());
@@ -222,6 +230,20 @@ int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
               << (resumed.empty() ? std::string() : " (resumed at " + resumed + ")") << "\n";
   }
   return kExitOk;
+}
+
+int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
+  SendOptions o;
+  if (auto code = ParseSend(args, &o)) return *code;
+  robot::ControllerProfile profile;
+  robot::SendSession session;
+  if (const Status s = PrepareSend(o, &profile, &session); !s.ok()) return Fail(s.message());
+  if (session.nothing_to_do()) {
+    if (!global.quiet) std::cout << o.inputs[0] << ": already sent completely; nothing to resume\n";
+    return kExitOk;
+  }
+  if (o.dry_run) return PrintDryRun(session, global);
+  return StreamToPort(o, profile, session, global);
 }
 
 }  // namespace
