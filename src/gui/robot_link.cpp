@@ -55,7 +55,11 @@ bool RobotLink::connectPort(const QString& device, int baud) {
 }
 
 void RobotLink::disconnectPort() {
-  if (sending_) link_->Cancel("the port was closed");
+  // A send, or another stream on the link (Mimic live), ends: nothing more is written.
+  const robot::LinkState state = link_->protocol().state();
+  if (sending_ || (state != robot::LinkState::kIdle && !link_->protocol().finished())) {
+    link_->Cancel("the port was closed");
+  }
   if (link_->is_open()) {
     link_->Close();
     emit connectedChanged(false, device_);

@@ -6,12 +6,20 @@
 
 namespace armmimic::live {
 
-MimicRun::MimicRun(serial::SerialLink* link, QObject* parent) : QObject(parent), link_(link) {}
+MimicRun::MimicRun(serial::SerialLink* link, QObject* parent)
+    : QObject(parent), link_(link), dry_run_(link == nullptr) {}
 
 MimicRun::~MimicRun() {
   cancel_.store(true);
   if (thread_.joinable()) thread_.join();
-  if (link_ && started_ && !link_done_) link_->Cancel("the live run was closed");
+  if (link_ && !dry_run_ && started_) {
+    // Nothing of this run may be called once it is gone: no signal, no protocol callback.
+    disconnect(link_, nullptr, this, nullptr);
+    if (!link_done_) link_->Cancel("the live run was closed");
+    link_->protocol().SetGate(nullptr);
+    link_->protocol().SetSentCallback(nullptr);
+    link_->protocol().SetAckCallback(nullptr);
+  }
   stream_.Close();
 }
 
@@ -42,9 +50,19 @@ Status MimicRun::Start(const MimicOptions& options) {
   stream_.SetCommandCallback(
       [this](const robot::JointArray& target, int frame) { emit commandWritten(target, frame); });
   started_ = true;
-  if (link_) {
-    stream_.Attach(&link_->protocol(), [this](const robot::LinkLine& l) { link_->Append(l); });
+  if (!dry_run_) {
+    if (!link_) return Status::Error("the serial link is gone");
+    stream_.Attach(&link_->protocol(), [this](const robot::LinkLine& l) {
+      if (link_) link_->Append(l);
+    });
     connect(link_, &serial::SerialLink::finished, this, &MimicRun::OnLinkFinished);
+    // The port's owner deleting it mid-run ends the run as a lost link.
+    connect(link_, &QObject::destroyed, this, [this] {
+      if (!link_done_) {
+        failure_ = failure_.empty() ? "the serial link was closed" : failure_;
+        OnLinkGone();
+      }
+    });
     link_->StartStream("mimic");
   } else {
     link_done_ = true;  // a dry run has no link to wait for
@@ -108,7 +126,7 @@ void MimicRun::Stop(const std::string& reason) {
   if (failure_.empty()) failure_ = reason;
   stream_.Stop(reason);
   cancel_.store(true);
-  if (link_ && !link_done_) {
+  if (link_ && !dry_run_ && !link_done_) {
     if (stops_ > 1) {
       link_->Cancel(reason);
     } else {
@@ -125,12 +143,20 @@ void MimicRun::OnAnalysisDone(const Status& status, const AnalysisSummary& summa
   if (!status && failure_.empty()) failure_ = status.message();
   if (status && !summary.cancelled && failure_.empty()) ended_normally_ = true;
   stream_.Stop(failure_);
-  if (link_ && !link_done_) link_->EndStream();
+  if (link_ && !dry_run_ && !link_done_) link_->EndStream();
+  MaybeFinish();
+}
+
+void MimicRun::OnLinkGone() {
+  link_done_ = true;
+  ended_normally_ = false;
+  stream_.Stop(failure_);
+  cancel_.store(true);
   MaybeFinish();
 }
 
 void MimicRun::OnLinkFinished(bool ok) {
-  if (link_done_) return;
+  if (link_done_ || !link_) return;
   link_done_ = true;
   if (!ok) {
     const std::string message = link_->protocol().error_message();
@@ -148,7 +174,7 @@ void MimicRun::OnLinkFinished(bool ok) {
 void MimicRun::MaybeFinish() {
   if (finished_ || !analysis_done_ || !link_done_) return;
   finished_ = true;
-  if (link_) disconnect(link_, &serial::SerialLink::finished, this, &MimicRun::OnLinkFinished);
+  if (link_) disconnect(link_, nullptr, this, nullptr);
   const Status closed = stream_.Close();
   if (!closed && failure_.empty()) failure_ = closed.message();
   const bool ok = ended_normally_ && failure_.empty();

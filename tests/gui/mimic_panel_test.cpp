@@ -9,6 +9,7 @@
 #include <QTest>
 
 #include "armmimic/robot/live_log.h"
+#include "armmimic/sim/pty_server.h"
 #include "armmimic/synth/arm_scene.h"
 #include "engine_settings_panel.h"
 #include "gui_fixture.h"
@@ -183,6 +184,38 @@ TEST_F(MimicPanelTest, ChangingTheLimitsClearsTheConfirmation) {
   ASSERT_TRUE(WaitUntil([&] { return panel->shownSettings().contains("J1 [-160, 90]"); }));
   EXPECT_FALSE(confirm->isChecked());
   EXPECT_FALSE(Child<QPushButton>(panel, "mimicStart")->isEnabled());
+}
+
+TEST_F(MimicPanelTest, ClosingTheWindowMidRunStopsTheRobot) {
+  // A controller outside the window, so what reaches it can be read after the window is gone.
+  sim::EmulatorOptions eo;
+  eo.time_scale = 0.05;
+  sim::PtyServer server(eo);
+  ASSERT_TRUE(server.Start(tmp_.file("puma")).ok());
+  {
+    MainWindow w;
+    w.show();
+    const GuiScenes& s = LongScene();
+    w.openInputs({QString::fromStdString(s.video())});
+    ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen(); }));
+    AnalysisOptions o;
+    o.background_path = s.background();
+    o.arm_length_path = s.arm_length();
+    o.start = s.background_frames;
+    o.engine.bgsub.standstill_frames = s.standstill_frames;
+    w.settingsPanel()->setOptions(o);
+    ASSERT_TRUE(w.robotPanel()->connectTo(QString::fromStdString(tmp_.file("puma"))));
+    MimicPanel* panel = w.mimicPanel();
+    ASSERT_TRUE(WaitUntil([&] { return !panel->shownSettings().isEmpty(); }));
+    Child<QCheckBox>(panel, "mimicConfirm")->setChecked(true);
+    ASSERT_TRUE(panel->startMimicking()) << w.log()->text().toStdString();
+    ASSERT_TRUE(WaitUntil([&] { return server.log().size() >= 2; }, 30000))
+        << w.log()->text().toStdString();
+  }  // the window closes while the robot follows
+  const std::size_t moves = server.log().size();
+  QTest::qWait(500);
+  EXPECT_EQ(server.log().size(), moves) << "a move reached the robot after the window closed";
+  server.Stop();
 }
 
 }  // namespace

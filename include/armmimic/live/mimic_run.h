@@ -19,15 +19,14 @@
 #include <thread>
 
 #include <QObject>
+#include <QPointer>
 #include <QString>
 
 #include "armmimic/core/status.h"
 #include "armmimic/engines/analysis.h"
 #include "armmimic/robot/live_stream.h"
 
-namespace armmimic::serial {
-class SerialLink;
-}
+#include "armmimic/serial/serial_link.h"
 
 namespace armmimic::live {
 
@@ -42,7 +41,8 @@ struct MimicOptions {
 class MimicRun : public QObject {
   Q_OBJECT
  public:
-  // `link`: an open port (not owned), or nullptr for a dry run (lines go to the dry writer).
+  // `link`: an open port (not owned; it may be deleted first, which ends the run), or nullptr for
+  // a dry run (lines go to the dry writer).
   explicit MimicRun(serial::SerialLink* link, QObject* parent = nullptr);
   ~MimicRun() override;  // cancels and joins the analysis thread
 
@@ -77,10 +77,11 @@ class MimicRun : public QObject {
   void OnRow(const AngleRow& row, double capture_s, double analysed_s);
   void OnAnalysisDone(const Status& status, const AnalysisSummary& summary);
   void OnLinkFinished(bool ok);
+  void OnLinkGone();
   void MaybeFinish();
   double Seconds(std::chrono::steady_clock::time_point t) const;
 
-  serial::SerialLink* link_;
+  QPointer<serial::SerialLink> link_;  // null once the port's owner has deleted it
   MimicOptions options_;
   robot::LiveStream stream_;
   std::function<void(const robot::LinkLine&)> dry_writer_;
@@ -88,6 +89,7 @@ class MimicRun : public QObject {
   std::thread thread_;
   std::atomic<bool> cancel_{false};
   std::chrono::steady_clock::time_point epoch_;
+  bool dry_run_ = false;
   bool started_ = false;
   bool stream_begun_ = false;
   bool analysis_done_ = false;
