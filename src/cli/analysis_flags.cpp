@@ -14,13 +14,16 @@ const std::map<std::string, std::set<EngineKind>>& EngineFlags() {
       {"--background", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--background-frames", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--arm-length", {EngineKind::kBgsub}},
-      {"--start", {EngineKind::kBgsub, EngineKind::kLk}},
+      {"--start", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kPose}},
       {"--standstill-frames", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--threshold", {EngineKind::kBgsub}},
       {"--shoulder", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--elbow", {EngineKind::kLk}},
       {"--wrist", {EngineKind::kLk}},
-      {"--roi", {EngineKind::kBgsub, EngineKind::kLk}},
+      {"--roi", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kPose}},
+      {"--side", {EngineKind::kPose, EngineKind::kLk}},
+      {"--model", {EngineKind::kPose, EngineKind::kLk}},
+      {"--auto-calibrate", {EngineKind::kLk}},
       {"--initial-upper", {EngineKind::kLk}},
       {"--initial-fore", {EngineKind::kLk}},
       {"--reference", {EngineKind::kMarker}},
@@ -48,14 +51,16 @@ std::string AnalysisFlags::ParamList() {
 }
 
 void AnalysisFlags::Register(ArgParser& p) {
-  p.String("--engine", &engine_name_, "NAME", "bgsub, lk or marker (required)");
+  p.String("--engine", &engine_name_, "NAME", "bgsub, lk, marker or pose (required)");
   p.String("--background", &o_->background_path, "BG.png", "bgsub/lk: the empty scene image");
   p.Int("--background-frames", &o_->background_frames, "K",
         "bgsub/lk: estimate the background from frames [0, K) of the video", 1, 1000000);
   p.String("--arm-length", &o_->arm_length_path, "ARM.png",
            "bgsub: straight horizontal arm at zero yaw (gives b)");
   p.Int("--start", &o_->start, "F",
-        "bgsub/lk: first standstill frame (default 0; a camera or stream drops F frames)", 0);
+        "bgsub/lk: first standstill frame; pose: first frame (default 0; a camera or stream "
+        "drops F frames)",
+        0);
   p.Int("--standstill-frames", &standstill_, "N", "bgsub/lk: standstill length (default 60)", 1,
         100000);
   p.Int("--threshold", &threshold_, "T", "bgsub: grey-level difference threshold (default 45)", 1,
@@ -93,6 +98,12 @@ void AnalysisFlags::Register(ArgParser& p) {
         "marker: lower grey level of the markers (default 20)", 0, 255);
   p.Int("--high", &o_->engine.marker.high, "H",
         "marker: upper grey level of the markers (default 80)", 0, 255);
+  p.String("--side", &side_name_, "left|right",
+           "pose, lk --auto-calibrate: the person's own arm (default: the better seen)");
+  p.String("--model", &o_->model_dir, "DIR",
+           "pose, lk --auto-calibrate: the folder holding movenet-lightning.json and .bin");
+  p.Flag("--auto-calibrate", &o_->auto_calibrate,
+         "lk: the shoulder, elbow and wrist in frame F from the pose network");
   p.Flag("--thesis", &thesis_, "run the thesis method only, without the improvements");
   p.Custom("--param", "ENGINE.KEY=VALUE",
            "any engine parameter listed above; repeatable, applied after the other flags",
@@ -105,9 +116,10 @@ void AnalysisFlags::Register(ArgParser& p) {
 }
 
 std::optional<int> AnalysisFlags::CheckEngine(const ArgParser& p) const {
-  if (engine_name_.empty()) return p.UsageError("missing --engine (bgsub, lk or marker)");
+  if (engine_name_.empty()) return p.UsageError("missing --engine (bgsub, lk, marker or pose)");
   if (!ParseEngineKind(engine_name_, &o_->engine.kind)) {
-    return p.UsageError("--engine: unknown engine '" + engine_name_ + "' (bgsub, lk or marker)");
+    return p.UsageError("--engine: unknown engine '" + engine_name_ +
+                        "' (bgsub, lk, marker or pose)");
   }
   return std::nullopt;
 }
@@ -123,7 +135,20 @@ std::optional<int> AnalysisFlags::Finish(const ArgParser& p) {
       return p.UsageError("--param " + assignment + " is not used by --engine " + engine_name_);
     }
   }
-  if (o_->engine.kind == EngineKind::kLk && p.Given("--shoulder") &&
+  if (p.Given("--side")) {
+    PoseSide side = PoseSide::kAuto;
+    if (!ParsePoseSide(side_name_, &side)) {
+      return p.UsageError("--side '" + side_name_ + "': expected left or right (the person's own)");
+    }
+    o_->engine.pose.side = side;
+    o_->calibrate_side = side;
+  }
+  if (o_->engine.kind != EngineKind::kPose && !o_->auto_calibrate &&
+      (p.Given("--side") || p.Given("--model"))) {
+    return p.UsageError(std::string(p.Given("--side") ? "--side" : "--model") +
+                        " is used by --engine " + engine_name_ + " only with --auto-calibrate");
+  }
+  if (o_->engine.kind == EngineKind::kLk && (p.Given("--shoulder") || o_->auto_calibrate) &&
       p.Given("--standstill-frames")) {
     return p.UsageError(
         "--standstill-frames is not used by --engine lk with --shoulder: frame F is the starting "

@@ -39,6 +39,7 @@ class AnalysisFlags {
   bool thesis_ = false;
   cv::Point2d shoulder_, elbow_, wrist_;
   cv::Rect roi_;
+  std::string side_name_;
 };
 
 }  // namespace armmimic::cli

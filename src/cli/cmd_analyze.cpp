@@ -1,4 +1,4 @@
-// armmimic-cli analyze INPUT... -o ANGLES.tsv --engine bgsub|lk|marker: video or images in, an
+// armmimic-cli analyze INPUT... -o ANGLES.tsv --engine bgsub|lk|marker|pose: video or images in, an
 // angle file v1 out (docs/cli.md). Ctrl-C keeps the rows so far in a file marked complete=no.
 #include <signal.h>
 
@@ -54,8 +54,12 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
       "          [--standstill-frames 60] [--initial-upper -90] [--initial-fore -90]\n"
       "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine lk\n"
       "          --shoulder X,Y --elbow X,Y --wrist X,Y [--start F]\n"
+      "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine lk --auto-calibrate\n"
+      "          [--side left|right] [--start F] [--model DIR]\n"
       "  armmimic-cli analyze INPUT... -o ANGLES.tsv --engine marker --reference REF.png\n"
       "          [--low 20] [--high 80]\n"
+      "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine pose [--side left|right] [--start F]\n"
+      "          [--model DIR]\n"
       "  Arm engines also take [--roi X,Y,W,H] [--shoulder X,Y] [--thesis].",
       "Turns a video (or images) into an angle file v1, one row per analysed frame.\n"
       "bgsub, and lk without --shoulder: frames [F, F+standstill) are the standstill (no rows);\n"
@@ -63,8 +67,15 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
       "starting posture and already gets a row (--standstill-frames is then refused). With\n"
       "--elbow and --wrist too, the three clicked joints give the starting directions and the\n"
       "segment lengths; otherwise the arm length is estimated and the estimate is printed.\n"
-      "marker: one row per input image, in input order. Ctrl-C keeps the rows so far in a valid\n"
-      "file marked complete=no (exit 1).\n" +
+      "lk --auto-calibrate: the pose network finds the shoulder, elbow and wrist in frame F, as\n"
+      "if clicked (--side names the person's own arm; default: the better seen).\n"
+      "marker: one row per input image, in input order.\n"
+      "pose: a pose network (MoveNet) finds the person's arm in every frame from F on, with no\n"
+      "background or calibration; a row is lost where the arm is not seen or a segment points at\n"
+      "the camera, and a confidence column (0-1) follows the angles. --side names the person's\n"
+      "own arm (default: the better seen over the first second). The model is fetched by\n"
+      "scripts/deps.sh --with-model and found without flags (docs/pose.md).\n"
+      "Ctrl-C keeps the rows so far in a valid file marked complete=no (exit 1).\n" +
           AnalysisFlags::ParamList());
   p.Positionals(&o.inputs, "INPUT", 1, -1);
   p.String("-o,--output", &output, "ANGLES.tsv", "the angle file to write (required)");

@@ -11,7 +11,8 @@ namespace armmimic {
 namespace {
 
 const char* kHeader =
-    "frame\ttime_s\tstatus\tupper_deg\tfore_deg\tyaw_deg\tbend_deg\tupper_cx\tupper_cy\tfore_cx\tfore_cy";
+    "frame\ttime_s\tstatus\tupper_deg\tfore_deg\tyaw_deg\tbend_deg\tupper_cx\tupper_cy\tfore_"
+    "cx\tfore_cy";
 
 Status Parse(const std::string& text, AngleFile* f) {
   std::istringstream in(text);
@@ -22,7 +23,8 @@ TEST(AngleFile, RoundTripKeepsEveryValue) {
   test::TempDir dir;
   const std::string path = dir.file("angles.tsv");
   AngleFileWriter w;
-  ASSERT_TRUE(w.Open(path, {{"engine", "bgsub"}, {"source", "my scene.avi"}, {"fps", "30"}}, false).ok());
+  ASSERT_TRUE(
+      w.Open(path, {{"engine", "bgsub"}, {"source", "my scene.avi"}, {"fps", "30"}}, false).ok());
   AngleRow r1;
   r1.frame = 105;
   r1.time_s = 3.5;
@@ -43,7 +45,8 @@ TEST(AngleFile, RoundTripKeepsEveryValue) {
   ASSERT_TRUE(w.Commit().ok());
 
   const std::string text = test::ReadFile(path);
-  EXPECT_EQ(text.rfind("# armmimic angles v1\n# engine=bgsub source=my%20scene.avi fps=30\n", 0), 0u);
+  EXPECT_EQ(text.rfind("# armmimic angles v1\n# engine=bgsub source=my%20scene.avi fps=30\n", 0),
+            0u);
   EXPECT_NE(text.find(std::string(kHeader) + "\n"), std::string::npos);
 
   AngleFile f;
@@ -85,12 +88,42 @@ TEST(AngleFile, MarkerFileColumnRoundTrips) {
 }
 
 TEST(AngleFile, UnknownTrailingColumnsAreIgnored) {
-  std::string text = std::string(kHeader) + "\textra\n" +
-                     "3\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t7\twhatever\n";
+  std::string text =
+      std::string(kHeader) + "\textra\n" + "3\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t7\twhatever\n";
   AngleFile f;
   ASSERT_TRUE(Parse(text, &f).ok()) << Parse(text, &f).message();
   EXPECT_EQ(f.rows.size(), 1u);
   EXPECT_FALSE(f.has_file_column);
+}
+
+TEST(AngleFile, ConfidenceColumnRoundTrips) {
+  test::TempDir dir;
+  AngleFileWriter w;
+  ASSERT_TRUE(w.Open(dir.file("a.tsv"), {{"engine", "pose"}}, false, true).ok());
+  AngleRow ok;
+  ok.frame = 0;
+  ok.status = RowStatus::kOk;
+  ok.upper_deg = -90;
+  ok.fore_deg = -45;
+  ok.confidence = 0.8126;
+  AngleRow lost;
+  lost.frame = 1;
+  lost.confidence = 0.125;
+  ASSERT_TRUE(w.Write(ok).ok());
+  ASSERT_TRUE(w.Write(lost).ok());
+  ASSERT_TRUE(w.Commit().ok());
+  EXPECT_NE(test::ReadFile(dir.file("a.tsv")).find("\tfore_cy\tconfidence\n"), std::string::npos);
+  AngleFile f;
+  ASSERT_TRUE(ReadAngleFile(dir.file("a.tsv"), &f).ok());
+  ASSERT_TRUE(f.has_confidence_column);
+  ASSERT_EQ(f.rows.size(), 2u);
+  EXPECT_DOUBLE_EQ(f.rows[0].confidence, 0.813);  // three decimals
+  EXPECT_DOUBLE_EQ(f.rows[1].confidence, 0.125);  // lost rows keep theirs
+  // A confidence outside 0..1 is refused, naming the line.
+  const std::string bad =
+      std::string(kHeader) + "\tconfidence\n" + "0\t0\tok\t1\t2\tnan\t1\t4\t5\t6\t7\t1.5\n";
+  const Status st = Parse(bad, &f);
+  EXPECT_EQ(st.message(), "a.tsv:2: confidence \"1.5\" is not a number in [0, 1] (or nan)");
 }
 
 struct BadCase {
@@ -102,22 +135,29 @@ struct BadCase {
 TEST(AngleFile, MalformedFilesNameTheLine) {
   const std::string h = std::string("# armmimic angles v1\n") + kHeader + "\n";
   const std::vector<BadCase> cases = {
-      {"bad number", h + "0\t0\tok\t1,5\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: upper_deg \"1,5\""},
+      {"bad number", h + "0\t0\tok\t1,5\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:3: upper_deg \"1,5\""},
       {"wrong header", "# armmimic angles v1\nframe\ttime\tstatus\n", "a.tsv:2: bad column header"},
       {"short row", h + "0\t0\tok\t1\n", "a.tsv:3: row has 4 fields"},
       {"huge line", h + std::string(70000, '1') + "\n", "a.tsv:3: line is longer"},
-      {"bad status", h + "0\t0\tmaybe\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: status"},
+      {"bad status", h + "0\t0\tmaybe\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:3: status"},
       {"inf", h + "0\t0\tok\tinf\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: upper_deg"},
       {"nan time", h + "0\tnan\tok\t1\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: time_s"},
-      {"duplicate frame", h + "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n" +
-                              "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+      {"duplicate frame",
+       h + "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n" +
+           "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
        "a.tsv:4: frame 4 is repeated"},
-      {"out of order", h + "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n" +
-                           "2\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+      {"out of order",
+       h + "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n" +
+           "2\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
        "a.tsv:4: frame 2 is out of order"},
-      {"lost with angle", h + "0\t0\tlost\t5\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: status is lost"},
-      {"negative frame", h + "-1\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: frame"},
-      {"out of range", h + "0\t0\tok\t270\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: upper_deg 270"},
+      {"lost with angle", h + "0\t0\tlost\t5\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:3: status is lost"},
+      {"negative frame", h + "-1\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:3: frame"},
+      {"out of range", h + "0\t0\tok\t270\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:3: upper_deg 270"},
       {"negative yaw", h + "0\t0\tok\tnan\tnan\t-3\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: yaw_deg"},
       {"version 2", "# armmimic angles v2\n" + std::string(kHeader) + "\n", "a.tsv:1: unsupported"},
       {"empty", "", "a.tsv: no column header"},

@@ -18,6 +18,7 @@
 #include "armmimic/core/video_source.h"
 #include "armmimic/engines/engine_options.h"
 #include "armmimic/engines/measurement.h"
+#include "armmimic/engines/pose_options.h"
 
 namespace armmimic {
 
@@ -33,6 +34,11 @@ struct AnalysisOptions {
   std::optional<cv::Point2d> elbow_px;     // --elbow X,Y (lk, with --shoulder and --wrist)
   std::optional<cv::Point2d> wrist_px;     // --wrist X,Y
   std::optional<cv::Rect> roi;             // --roi X,Y,W,H
+  std::string model_dir;                   // --model DIR: the pose model's folder
+  // --auto-calibrate: the shoulder, elbow and wrist in frame `start` come from the pose network
+  // (tracking engines), as if given with --shoulder/--elbow/--wrist.
+  bool auto_calibrate = false;
+  PoseSide calibrate_side = PoseSide::kAuto;  // --side with --auto-calibrate: the person's arm
   // A video file is read at its own frame rate (FramePacer), as a camera delivers frames
   // (`mimic --realtime`). Cameras and streams are live anyway; images have no rate.
   bool realtime = false;
