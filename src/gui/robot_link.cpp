@@ -67,14 +67,16 @@ void RobotLink::disconnectPort() {
 }
 
 bool RobotLink::send(const robot::ValProgram& program, const robot::ControllerProfile& profile,
-                     const robot::JointLimits& limits, const robot::SendStart& start) {
+                     const robot::JointLimits& limits, const robot::SendStart& start,
+                     const std::string& input) {
   if (!link_->is_open()) {
     emit error(tr("not connected: choose a port and connect first"));
     return false;
   }
   if (sending_) return false;
   auto session = std::make_unique<robot::SendSession>();
-  Status st = session->Prepare(program, profile, limits, program.source_name, start);
+  Status st = session->Prepare(program, profile, limits,
+                               input.empty() ? program.source_name : input, start);
   if (st && session->nothing_to_do()) {
     emit finished(true, tr("%1: already sent completely; nothing to resume")
                             .arg(QString::fromStdString(program.source_name)));

@@ -33,9 +33,12 @@ class RobotLink : public QObject {
 
   // Sends `program` with `profile` and `limits` (tightened by the program's header limits),
   // as `armmimic-cli send` does. `start` chooses the journal and resume behaviour (default:
-  // from the first line, no journal).
+  // from the first line, no journal); the journal is INPUT.journal, `input` defaulting to the
+  // program's source name. A resume whose last line is uncertain needs the WHERE step first
+  // (robot::SendSession::UncertainQuery / ResolveUncertain), as the CLI does.
   bool send(const robot::ValProgram& program, const robot::ControllerProfile& profile,
-            const robot::JointLimits& limits, const robot::SendStart& start = NoJournal());
+            const robot::JointLimits& limits, const robot::SendStart& start = NoJournal(),
+            const std::string& input = "");
   static robot::SendStart NoJournal() {
     robot::SendStart s;
     s.journal = false;
