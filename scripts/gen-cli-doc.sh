@@ -47,6 +47,8 @@ armmimic-cli score scene/truth.tsv angles.tsv --plot err.png
 armmimic-cli plan angles.tsv -o arm.val
 armmimic-cli puma-sim --link /tmp/puma &
 armmimic-cli send arm.val --port /tmp/puma
+armmimic-cli mimic scene/scene.avi --realtime --engine bgsub --background bg.png \
+    --arm-length scene/armlength.png --start 45 --port /tmp/puma -o live.tsv
 ```
 
 ## Commands
@@ -55,7 +57,7 @@ HEAD
   echo '```'
   "$CLI" --help
   echo '```'
-  for cmd in background analyze synth "synth arm" "synth marker" score plan send puma-sim; do
+  for cmd in background analyze synth "synth arm" "synth marker" score plan send mimic puma-sim; do
     echo
     echo "### $cmd"
     echo

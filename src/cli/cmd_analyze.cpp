@@ -5,12 +5,10 @@
 #include <atomic>
 #include <cstdio>
 #include <iostream>
-#include <map>
-#include <set>
 
+#include "analysis_flags.h"
 #include "args.h"
 #include "armmimic/engines/analysis.h"
-#include "armmimic/engines/option_fields.h"
 #include "command.h"
 #include "progress.h"
 
@@ -42,58 +40,10 @@ std::string BaseName(const std::string& path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-// The flags each engine uses; any other engine flag given is a usage error.
-const std::map<std::string, std::set<EngineKind>>& EngineFlags() {
-  static const std::map<std::string, std::set<EngineKind>> flags = {
-      {"--background", {EngineKind::kBgsub, EngineKind::kLk}},
-      {"--background-frames", {EngineKind::kBgsub, EngineKind::kLk}},
-      {"--arm-length", {EngineKind::kBgsub}},
-      {"--start", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kPose}},
-      {"--standstill-frames", {EngineKind::kBgsub, EngineKind::kLk}},
-      {"--threshold", {EngineKind::kBgsub}},
-      {"--shoulder", {EngineKind::kBgsub, EngineKind::kLk}},
-      {"--elbow", {EngineKind::kLk}},
-      {"--wrist", {EngineKind::kLk}},
-      {"--roi", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kPose}},
-      {"--side", {EngineKind::kPose, EngineKind::kLk}},
-      {"--model", {EngineKind::kPose, EngineKind::kLk}},
-      {"--auto-calibrate", {EngineKind::kLk}},
-      {"--initial-upper", {EngineKind::kLk}},
-      {"--initial-fore", {EngineKind::kLk}},
-      {"--reference", {EngineKind::kMarker}},
-      {"--low", {EngineKind::kMarker}},
-      {"--high", {EngineKind::kMarker}},
-  };
-  return flags;
-}
-
-// The --param keys with their defaults, indented, for the help text.
-std::string ParamList() {
-  std::string out = "\nEvery engine parameter, for --param, with its default:\n";
-  std::string line;
-  for (char c : DescribeEngineOptions(76)) {
-    if (c == '\n') {
-      out += (line.empty() ? "" : "  " + line) + "\n";
-      line.clear();
-    } else {
-      line += c;
-    }
-  }
-  out.pop_back();  // the help text adds the paragraph's last newline
-  return out;
-}
-
 int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global) {
   AnalysisOptions o;
-  std::vector<std::string> params;
+  AnalysisFlags flags(&o);
   std::string output;
-  std::string engine_name;
-  int standstill = 60;
-  int threshold = o.engine.bgsub.threshold;
-  bool thesis = false;
-  cv::Point2d shoulder, elbow, wrist;
-  cv::Rect roi;
-  std::string side_name;
   ArgParser p(
       "analyze",
       "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine bgsub\n"
@@ -126,126 +76,15 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
       "own arm (default: the better seen over the first second). The model is fetched by\n"
       "scripts/deps.sh --with-model and found without flags (docs/pose.md).\n"
       "Ctrl-C keeps the rows so far in a valid file marked complete=no (exit 1).\n" +
-          ParamList());
+          AnalysisFlags::ParamList());
   p.Positionals(&o.inputs, "INPUT", 1, -1);
   p.String("-o,--output", &output, "ANGLES.tsv", "the angle file to write (required)");
-  p.String("--engine", &engine_name, "NAME", "bgsub, lk, marker or pose (required)");
-  p.String("--background", &o.background_path, "BG.png", "bgsub/lk: the empty scene image");
-  p.Int("--background-frames", &o.background_frames, "K",
-        "bgsub/lk: estimate the background from frames [0, K) of the video", 1, 1000000);
-  p.String("--arm-length", &o.arm_length_path, "ARM.png",
-           "bgsub: straight horizontal arm at zero yaw (gives b)");
-  p.Int("--start", &o.start, "F",
-        "bgsub/lk: first standstill frame; pose: first frame (default 0; a camera or stream "
-        "drops F frames)",
-        0);
-  p.Int("--standstill-frames", &standstill, "N", "bgsub/lk: standstill length (default 60)", 1,
-        100000);
-  p.Int("--threshold", &threshold, "T", "bgsub: grey-level difference threshold (default 45)", 1,
-        254);
-  p.Custom("--shoulder", "X,Y", "bgsub/lk: fixed shoulder position in pixels",
-           [&](const std::string& v) {
-             const std::string e = ParsePointArg(v, &shoulder);
-             if (e.empty()) o.shoulder_px = shoulder;
-             return e;
-           });
-  p.Custom("--elbow", "X,Y", "lk: the elbow in frame F (with --shoulder and --wrist)",
-           [&](const std::string& v) {
-             const std::string e = ParsePointArg(v, &elbow);
-             if (e.empty()) o.elbow_px = elbow;
-             return e;
-           });
-  p.Custom("--wrist", "X,Y", "lk: the wrist in frame F (with --shoulder and --elbow)",
-           [&](const std::string& v) {
-             const std::string e = ParsePointArg(v, &wrist);
-             if (e.empty()) o.wrist_px = wrist;
-             return e;
-           });
-  p.Custom("--roi", "X,Y,W,H", "bgsub/lk: analyse only this rectangle", [&](const std::string& v) {
-    const std::string e = ParseRectArg(v, &roi);
-    if (e.empty()) o.roi = roi;
-    return e;
-  });
-  p.Double("--initial-upper", &o.engine.lk.initial_upper_deg, "DEG",
-           "lk: upper-arm direction at the start (default -90)");
-  p.Double("--initial-fore", &o.engine.lk.initial_fore_deg, "DEG",
-           "lk: forearm direction at the start (default -90)");
-  p.String("--reference", &o.reference_path, "REF.png",
-           "marker: joint at zero yaw and zero bend (gives N)");
-  p.Int("--low", &o.engine.marker.low, "L", "marker: lower grey level of the markers (default 20)",
-        0, 255);
-  p.Int("--high", &o.engine.marker.high, "H",
-        "marker: upper grey level of the markers (default 80)", 0, 255);
-  p.String("--side", &side_name, "left|right",
-           "pose, lk --auto-calibrate: the person's own arm (default: the better seen)");
-  p.String("--model", &o.model_dir, "DIR",
-           "pose, lk --auto-calibrate: the folder holding movenet-lightning.json and .bin");
-  p.Flag("--auto-calibrate", &o.auto_calibrate,
-         "lk: the shoulder, elbow and wrist in frame F from the pose network");
-  p.Flag("--thesis", &thesis, "run the thesis method only, without the improvements");
-  p.Custom("--param", "ENGINE.KEY=VALUE",
-           "any engine parameter listed above; repeatable, applied after the other flags",
-           [&](const std::string& v) {
-             EngineOptions probe;
-             const Status st = SetEngineOption(v, &probe);
-             if (st) params.push_back(v);
-             return st ? std::string() : st.message();
-           });
+  flags.Register(p);
   if (auto code = p.Parse(args)) return *code;
 
-  if (engine_name.empty()) return p.UsageError("missing --engine (bgsub, lk, marker or pose)");
-  if (!ParseEngineKind(engine_name, &o.engine.kind)) {
-    return p.UsageError("--engine: unknown engine '" + engine_name +
-                        "' (bgsub, lk, marker or pose)");
-  }
+  if (auto code = flags.CheckEngine(p)) return *code;
   if (output.empty()) return p.UsageError("missing -o ANGLES.tsv (the angle file to write)");
-  for (const auto& [flag, engines] : EngineFlags()) {
-    if (p.Given(flag) && !engines.count(o.engine.kind)) {
-      return p.UsageError(flag + " is not used by --engine " + engine_name);
-    }
-  }
-  for (const std::string& assignment : params) {
-    if (assignment.rfind(engine_name + ".", 0) != 0) {
-      return p.UsageError("--param " + assignment + " is not used by --engine " + engine_name);
-    }
-  }
-  if (p.Given("--side")) {
-    PoseSide side = PoseSide::kAuto;
-    if (!ParsePoseSide(side_name, &side)) {
-      return p.UsageError("--side '" + side_name + "': expected left or right (the person's own)");
-    }
-    o.engine.pose.side = side;
-    o.calibrate_side = side;
-  }
-  if (o.engine.kind != EngineKind::kPose && !o.auto_calibrate &&
-      (p.Given("--side") || p.Given("--model"))) {
-    return p.UsageError(std::string(p.Given("--side") ? "--side" : "--model") +
-                        " is used by --engine " + engine_name + " only with --auto-calibrate");
-  }
-  if (o.engine.kind == EngineKind::kLk && (p.Given("--shoulder") || o.auto_calibrate) &&
-      p.Given("--standstill-frames")) {
-    return p.UsageError(
-        "--standstill-frames is not used by --engine lk with --shoulder: frame F is the starting "
-        "posture and gets a row");
-  }
-  if (p.Given("--elbow") && (p.Given("--initial-upper") || p.Given("--initial-fore"))) {
-    return p.UsageError(
-        std::string(p.Given("--initial-upper") ? "--initial-upper" : "--initial-fore") +
-        " cannot be given with --elbow and --wrist: the clicked joints give the "
-        "starting directions");
-  }
-  o.engine.bgsub.standstill_frames = standstill;
-  o.engine.lk.standstill_frames = standstill;
-  o.engine.bgsub.threshold = threshold;
-  if (o.background_frames > 0) o.engine.bgsub.background_frames = o.background_frames;
-  o.engine.bgsub.thesis_mode = thesis;
-  o.engine.lk.thesis_mode = thesis;
-  o.engine.marker.thesis_mode = thesis;
-  // An explicit grey window is used as given; otherwise the marker engine may shift it when the
-  // reference's markers do not show in 20..80 (other illumination).
-  if (p.Given("--low") || p.Given("--high")) o.engine.marker.auto_window = false;
-  for (const std::string& assignment : params) SetEngineOption(assignment, &o.engine);
-  if (Status st = o.Check(); !st) return p.UsageError(st.message());
+  if (auto code = flags.Finish(p)) return *code;
 
   InterruptGuard guard;
   ProgressBar bar("analyze", -1, global.ShowProgress());

@@ -8,6 +8,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "armmimic/core/frame_pacer.h"
 #include "armmimic/core/image_io.h"
 #include "armmimic/engines/engine.h"
 #include "armmimic/engines/option_fields.h"
@@ -127,6 +128,7 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
   if (!source) return finish(open_status);
   const VideoInfo info = source->info();
   summary->video = info;
+  if (callbacks.on_open) callbacks.on_open(info);
   const EngineKind kind = given.engine.kind;
   const bool arm_engine = kind != EngineKind::kMarker;
 
@@ -240,6 +242,7 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
   const int total =
       info.frame_count >= 0 ? info.frame_count - (arm_engine ? options.start : 0) : -1;
   Phase(callbacks, "analysis");
+  FramePacer pacer(options.realtime && info.kind == SourceKind::kVideo ? info.fps : 0);
   Frame frame;
   int done = 0;
   int setup = 0;
@@ -253,6 +256,8 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
       if (!read_status) return finish(read_status);
       break;
     }
+    const auto captured = pacer.Wait(frame, callbacks.cancel);
+    if (callbacks.on_frame) callbacks.on_frame(frame, captured);
     const ArmMeasurement m = engine->Process(frame);
     summary->last_frame = frame.index;
     ++done;

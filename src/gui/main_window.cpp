@@ -18,6 +18,8 @@
 #include "engine_settings_panel.h"
 #include "icons.h"
 #include "log_view.h"
+#include "mimic_controller.h"
+#include "mimic_panel.h"
 #include "playback_bar.h"
 #include "prompts.h"
 #include "recent_files.h"
@@ -45,6 +47,7 @@ MainWindow::MainWindow(QWidget* parent)
   plot_ = angles_->plot();
   log_ = ui_->logView;
   robot_ = ui_->robotPanel;
+  mimic_ = ui_->mimicPanel;  // the live view scrolls, never making the dock column taller
   status_ = new StatusLine(statusBar());
   log_dock_ = ui_->logDock;
   setWindowIcon(MakeIcon(IconKind::kApp));
@@ -55,9 +58,11 @@ MainWindow::MainWindow(QWidget* parent)
 
   const QList<QAction*> toggles = {
       ui_->analysisDock->toggleViewAction(), ui_->plotDock->toggleViewAction(),
-      ui_->robotDock->toggleViewAction(), ui_->logDock->toggleViewAction()};
+      ui_->robotDock->toggleViewAction(), ui_->mimicDock->toggleViewAction(),
+      ui_->logDock->toggleViewAction()};
   tabifyDockWidget(ui_->plotDock, ui_->logDock);
   tabifyDockWidget(ui_->analysisDock, ui_->robotDock);
+  tabifyDockWidget(ui_->robotDock, ui_->mimicDock);
   ui_->analysisDock->raise();
   resizeDocks({ui_->plotDock}, {260}, Qt::Vertical);
   ui_->plotDock->raise();
@@ -73,6 +78,7 @@ MainWindow::MainWindow(QWidget* parent)
   wireActions();
   wireFileActions();
   wireAnalysis();
+  wireMimic();
   restoreSettings();
   updateStatus();
 }
@@ -233,6 +239,26 @@ void MainWindow::wireAnalysis() {
       ui_->plotDock->raise();  // the angles just measured, not old errors
     }
   });
+}
+
+void MainWindow::wireMimic() {
+  mimic_->setSources(
+      [this] {
+        AnalysisOptions options = settings_->options();
+        options.inputs.clear();
+        for (const QString& s : player_->inputs()) options.inputs.push_back(s.toStdString());
+        if (player_->isLive()) player_->close();  // the live run reads the camera itself
+        return options;
+      },
+      [this] { return robot_->plannerOptions(); }, robot_->link());
+  // The live frames fill the big view too while the robot follows.
+  connect(mimic_->controller(), &MimicController::frameReady, this,
+          [this](const QImage& image, int index, const ArmMeasurement& m) {
+            view_->setFrame(image, index, -1);
+            view_->setMeasurement(m);
+          });
+  connect(mimic_, &MimicPanel::message, log_, &LogView::info);
+  connect(mimic_, &MimicPanel::errorOccurred, log_, &LogView::error);
 }
 
 void MainWindow::setBusy(bool busy) {

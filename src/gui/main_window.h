@@ -27,6 +27,7 @@ class AnglePlot;
 class AppActions;
 class EngineSettingsPanel;
 class LogView;
+class MimicPanel;
 class PlaybackBar;
 class RecentFiles;
 class RobotPanel;
@@ -67,6 +68,7 @@ class MainWindow : public QMainWindow {
   AnglePanel* anglePanel() const { return angles_; }
   LogView* log() const { return log_; }
   RobotPanel* robotPanel() const { return robot_; }
+  MimicPanel* mimicPanel() const { return mimic_; }
   StatusLine* statusLine() const { return status_; }
   AppActions* actions() const { return actions_; }
   const ResultStore& results() const { return results_; }
@@ -86,6 +88,7 @@ class MainWindow : public QMainWindow {
   bool takePendingResults();
   void showResults(const ResultStore& results, const QString& angle_path);
   void wireAnalysis();
+  void wireMimic();
   void refreshViews();
   void updateStatus();
   void setBusy(bool busy);
@@ -104,6 +107,7 @@ class MainWindow : public QMainWindow {
   AnglePlot* plot_;
   LogView* log_;
   RobotPanel* robot_;
+  MimicPanel* mimic_ = nullptr;
   RecentFiles* recent_ = nullptr;
   QDockWidget* log_dock_ = nullptr;
   ResultStore results_;

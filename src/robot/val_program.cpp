@@ -360,6 +360,19 @@ Status FormatValProgram(const Trajectory& trajectory, const ControllerProfile& p
   return Status::Ok();
 }
 
+std::string FormatSpeedLine(int speed, const ControllerProfile& profile) {
+  return Replace(profile.speed_template, "speed", std::to_string(speed));
+}
+
+std::string FormatMoveLine(const JointArray& target_deg, const ControllerProfile& profile) {
+  std::string line = profile.move_template;
+  for (int j = 0; j < kJoints; ++j) {
+    line = Replace(line, "j" + std::to_string(j + 1),
+                   FormatJointDeg(RoundTo(target_deg[j], profile.decimals), profile.decimals));
+  }
+  return line;
+}
+
 SafetyState SafetyState::For(const JointLimits& limits, const ControllerProfile& profile) {
   SafetyState s;
   s.limits = limits;

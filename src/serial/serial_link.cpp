@@ -202,15 +202,33 @@ void SerialLink::SetPaused(bool paused) {
   Flush();
 }
 
-void SerialLink::Start(std::vector<robot::LinkLine> lines, const std::string& source_name) {
+void SerialLink::Begin(const std::function<void(double now_s)>& start_protocol) {
   clock_.start();
   paused_ = false;
   paused_ns_ = 0;
   held_.clear();
   reported_ = 0;
   finished_sent_ = false;
-  protocol_.Start(std::move(lines), source_name, Now());
+  start_protocol(Now());
   timer_->start();
+  Flush();
+}
+
+void SerialLink::Start(std::vector<robot::LinkLine> lines, const std::string& source_name) {
+  Begin([&](double now_s) { protocol_.Start(std::move(lines), source_name, now_s); });
+}
+
+void SerialLink::StartStream(const std::string& source_name) {
+  Begin([&](double now_s) { protocol_.StartStream(source_name, now_s); });
+}
+
+void SerialLink::Append(robot::LinkLine line) {
+  protocol_.Append(std::move(line), Now());
+  Flush();
+}
+
+void SerialLink::EndStream() {
+  protocol_.EndStream();
   Flush();
 }
 

@@ -1,5 +1,6 @@
 #include "test_util.h"
 
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -86,6 +87,72 @@ CliResult RunProgram(std::vector<std::string> argv_s, const std::string& stdin_t
 
 }  // namespace
 
+BackgroundCli::BackgroundCli(const std::vector<std::string>& args, const std::string& out_path,
+                             const std::string& err_path) {
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, 1, out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&fa, 2, err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<std::string> argv_s = {ARMMIMIC_CLI_PATH};
+  argv_s.insert(argv_s.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : argv_s) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  sigset_t defaults, none;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGINT);
+  sigaddset(&defaults, SIGTERM);
+  sigemptyset(&none);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+  pid_t pid = -1;
+  const int rc = posix_spawn(&pid, argv_s[0].c_str(), &fa, &attr, argv.data(), environ);
+  posix_spawnattr_destroy(&attr);
+  posix_spawn_file_actions_destroy(&fa);
+  pid_ = rc == 0 ? pid : -1;
+}
+
+BackgroundCli::~BackgroundCli() {
+  if (pid_ > 0 && !done_) {
+    kill(pid_, SIGKILL);
+    Wait(5);
+  }
+}
+
+bool BackgroundCli::Exited() {
+  if (done_ || pid_ <= 0) return true;
+  int status = 0;
+  if (waitpid(pid_, &status, WNOHANG) == pid_) {
+    done_ = true;
+    status_ = status;
+  }
+  return done_;
+}
+
+int BackgroundCli::Wait(double timeout_s) {
+  if (pid_ <= 0) return -1;
+  for (int waited_ms = 0; !Exited(); waited_ms += 5) {
+    if (waited_ms > timeout_s * 1000) {
+      kill(pid_, SIGKILL);
+      int status = 0;
+      waitpid(pid_, &status, 0);
+      done_ = true;
+      status_ = status;
+      break;
+    }
+    usleep(5000);
+  }
+  return WIFEXITED(status_) ? WEXITSTATUS(status_) : -1;
+}
+
+void BackgroundCli::Signal(int sig) {
+  if (pid_ > 0 && !done_) kill(pid_, sig);
+}
+
 CliResult RunCli(const std::vector<std::string>& args, const std::string& stdin_text) {
   std::vector<std::string> argv = {ARMMIMIC_CLI_PATH};
   argv.insert(argv.end(), args.begin(), args.end());
@@ -96,7 +163,7 @@ bool CanRunUnprivileged() { return geteuid() != 0 || access("/usr/bin/setpriv", 
 
 CliResult RunCliUnprivileged(const std::vector<std::string>& args) {
   if (geteuid() != 0) return RunCli(args);
-  std::vector<std::string> argv = {"/usr/bin/setpriv", "--reuid=65534", "--regid=65534",
+  std::vector<std::string> argv = {"/usr/bin/setpriv", "--reuid=65534",   "--regid=65534",
                                    "--clear-groups",   "--inh-caps=-all", "--",
                                    ARMMIMIC_CLI_PATH};
   argv.insert(argv.end(), args.begin(), args.end());

@@ -36,6 +36,29 @@ CliResult RunCli(const std::vector<std::string>& args, const std::string& stdin_
 bool CanRunUnprivileged();
 CliResult RunCliUnprivileged(const std::vector<std::string>& args);
 
+// armmimic-cli running in the background: stdout and stderr go to files; the child gets the
+// default SIGINT/SIGTERM actions whatever this process inherited. Killed if still running when
+// the object goes.
+class BackgroundCli {
+ public:
+  BackgroundCli(const std::vector<std::string>& args, const std::string& out_path,
+                const std::string& err_path);
+  ~BackgroundCli();
+  BackgroundCli(const BackgroundCli&) = delete;
+  BackgroundCli& operator=(const BackgroundCli&) = delete;
+  bool started() const { return pid_ > 0; }
+  bool Exited();  // reaps it once it has ended
+  // The exit code (-1: killed by a signal or not started), waiting up to `timeout_s` seconds
+  // (then it is killed).
+  int Wait(double timeout_s);
+  void Signal(int sig);
+
+ private:
+  int pid_ = -1;
+  bool done_ = false;
+  int status_ = 0;
+};
+
 std::string ReadFile(const std::string& path);
 void WriteFile(const std::string& path, const std::string& bytes);
 std::string SourcePath(const std::string& relative);  // path inside the source tree
