@@ -11,7 +11,8 @@ namespace armmimic {
 namespace {
 
 const char* kHeader =
-    "frame\ttime_s\tstatus\tupper_deg\tfore_deg\tyaw_deg\tbend_deg\tupper_cx\tupper_cy\tfore_cx\tfore_cy";
+    "frame\ttime_s\tstatus\tupper_deg\tfore_deg\tyaw_deg\tbend_deg\tupper_cx\tupper_cy\tfore_"
+    "cx\tfore_cy";
 
 Status Parse(const std::string& text, AngleFile* f) {
   std::istringstream in(text);
@@ -22,7 +23,8 @@ TEST(AngleFile, RoundTripKeepsEveryValue) {
   test::TempDir dir;
   const std::string path = dir.file("angles.tsv");
   AngleFileWriter w;
-  ASSERT_TRUE(w.Open(path, {{"engine", "bgsub"}, {"source", "my scene.avi"}, {"fps", "30"}}, false).ok());
+  ASSERT_TRUE(
+      w.Open(path, {{"engine", "bgsub"}, {"source", "my scene.avi"}, {"fps", "30"}}, false).ok());
   AngleRow r1;
   r1.frame = 105;
   r1.time_s = 3.5;
@@ -43,7 +45,8 @@ TEST(AngleFile, RoundTripKeepsEveryValue) {
   ASSERT_TRUE(w.Commit().ok());
 
   const std::string text = test::ReadFile(path);
-  EXPECT_EQ(text.rfind("# armmimic angles v1\n# engine=bgsub source=my%20scene.avi fps=30\n", 0), 0u);
+  EXPECT_EQ(text.rfind("# armmimic angles v1\n# engine=bgsub source=my%20scene.avi fps=30\n", 0),
+            0u);
   EXPECT_NE(text.find(std::string(kHeader) + "\n"), std::string::npos);
 
   AngleFile f;
@@ -62,11 +65,35 @@ TEST(AngleFile, RoundTripKeepsEveryValue) {
 }
 
 TEST(AngleFile, WritesDotDecimalsUnderACommaLocale) {
-  const char* old = std::setlocale(LC_ALL, nullptr);
-  const std::string saved = old ? old : "C";
-  if (!std::setlocale(LC_NUMERIC, "de_DE.UTF-8")) GTEST_SKIP() << "no de_DE locale here";
-  EXPECT_EQ(FormatNumber(-12.5, 3), "-12.500");
-  std::setlocale(LC_ALL, saved.c_str());
+  test::TempDir dir;
+  const std::string path = dir.file("angles.tsv");
+  std::string written;
+  AngleFile back;
+  Status read;
+  {
+    const test::CommaDecimalLocale comma;
+    ASSERT_TRUE(comma.active()) << comma.c_error();
+    EXPECT_EQ(FormatNumber(-12.5, 3), "-12.500");
+    AngleFileWriter w;
+    ASSERT_TRUE(w.Open(path, {{"engine", "lk"}, {"fps", "29.97"}}, false).ok());
+    AngleRow r;
+    r.frame = 7;
+    r.time_s = 0.2336;
+    r.status = RowStatus::kOk;
+    r.upper_deg = -12.5;
+    r.fore_deg = 1234.5 / 10;
+    r.upper_cx = 1234.25;
+    ASSERT_TRUE(w.Write(r).ok());
+    ASSERT_TRUE(w.Commit().ok());
+    written = test::ReadFile(path);
+    read = ReadAngleFile(path, &back);
+  }
+  EXPECT_NE(written.find("7\t0.2336\tok\t-12.500\t123.450\tnan\tnan\t1234.25\t"), std::string::npos)
+      << written;
+  ASSERT_TRUE(read.ok()) << read.message();
+  ASSERT_EQ(back.rows.size(), 1u);
+  EXPECT_DOUBLE_EQ(back.rows[0].upper_deg, -12.5);
+  EXPECT_DOUBLE_EQ(back.rows[0].upper_cx, 1234.25);
 }
 
 TEST(AngleFile, FormatNumberNeverWritesNegativeZero) {
@@ -85,8 +112,8 @@ TEST(AngleFile, MarkerFileColumnRoundTrips) {
 }
 
 TEST(AngleFile, UnknownTrailingColumnsAreIgnored) {
-  std::string text = std::string(kHeader) + "\textra\n" +
-                     "3\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t7\twhatever\n";
+  std::string text =
+      std::string(kHeader) + "\textra\n" + "3\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t7\twhatever\n";
   AngleFile f;
   ASSERT_TRUE(Parse(text, &f).ok()) << Parse(text, &f).message();
   EXPECT_EQ(f.rows.size(), 1u);
@@ -102,22 +129,29 @@ struct BadCase {
 TEST(AngleFile, MalformedFilesNameTheLine) {
   const std::string h = std::string("# armmimic angles v1\n") + kHeader + "\n";
   const std::vector<BadCase> cases = {
-      {"bad number", h + "0\t0\tok\t1,5\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: upper_deg \"1,5\""},
+      {"bad number", h + "0\t0\tok\t1,5\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:3: upper_deg \"1,5\""},
       {"wrong header", "# armmimic angles v1\nframe\ttime\tstatus\n", "a.tsv:2: bad column header"},
       {"short row", h + "0\t0\tok\t1\n", "a.tsv:3: row has 4 fields"},
       {"huge line", h + std::string(70000, '1') + "\n", "a.tsv:3: line is longer"},
-      {"bad status", h + "0\t0\tmaybe\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: status"},
+      {"bad status", h + "0\t0\tmaybe\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:3: status"},
       {"inf", h + "0\t0\tok\tinf\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: upper_deg"},
       {"nan time", h + "0\tnan\tok\t1\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: time_s"},
-      {"duplicate frame", h + "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n" +
-                              "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+      {"duplicate frame",
+       h + "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n" +
+           "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
        "a.tsv:4: frame 4 is repeated"},
-      {"out of order", h + "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n" +
-                           "2\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+      {"out of order",
+       h + "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n" +
+           "2\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
        "a.tsv:4: frame 2 is out of order"},
-      {"lost with angle", h + "0\t0\tlost\t5\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: status is lost"},
-      {"negative frame", h + "-1\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: frame"},
-      {"out of range", h + "0\t0\tok\t270\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: upper_deg 270"},
+      {"lost with angle", h + "0\t0\tlost\t5\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:3: status is lost"},
+      {"negative frame", h + "-1\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:3: frame"},
+      {"out of range", h + "0\t0\tok\t270\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:3: upper_deg 270"},
       {"negative yaw", h + "0\t0\tok\tnan\tnan\t-3\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: yaw_deg"},
       {"version 2", "# armmimic angles v2\n" + std::string(kHeader) + "\n", "a.tsv:1: unsupported"},
       {"empty", "", "a.tsv: no column header"},
@@ -173,6 +207,33 @@ TEST(AngleFile, WriterNamesMissingDirectory) {
   const Status st = w.Open("/nonexistent-dir/a.tsv", {}, false);
   ASSERT_FALSE(st.ok());
   EXPECT_NE(st.message().find("/nonexistent-dir"), std::string::npos);
+}
+
+// A spreadsheet saves with a UTF-8 byte order mark and CRLF line ends: both are read.
+TEST(AngleFile, ReadsAByteOrderMarkAndCrlfLineEnds) {
+  const std::string text = "\xEF\xBB\xBF# armmimic angles v1\r\n# engine=lk source=v.avi\r\n" +
+                           std::string(kHeader) + "\r\n" +
+                           "3\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t7\r\n" +
+                           "4\t0.2\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\r\n";
+  AngleFile f;
+  const Status st = Parse(text, &f);
+  ASSERT_TRUE(st.ok()) << st.message();
+  EXPECT_EQ(f.Meta("engine"), "lk");
+  EXPECT_EQ(f.Meta("source"), "v.avi");
+  ASSERT_EQ(f.rows.size(), 2u);
+  EXPECT_DOUBLE_EQ(f.rows[0].fore_cy, 7);
+  EXPECT_FALSE(f.rows[1].ok());
+  // A file without the magic line may start with the header itself, after the mark.
+  ASSERT_TRUE(
+      Parse("\xEF\xBB\xBF" + std::string(kHeader) + "\n3\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t7\n", &f)
+          .ok());
+  // Only at the start of the file: elsewhere the bytes are an error that names the line.
+  const Status late = Parse(std::string(kHeader) +
+                                "\n\xEF\xBB\xBF"
+                                "3\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t7\n",
+                            &f);
+  ASSERT_FALSE(late.ok());
+  EXPECT_NE(late.message().find("a.tsv:2:"), std::string::npos) << late.message();
 }
 
 }  // namespace
