@@ -5,13 +5,13 @@
 #include <QEventLoop>
 #include <QTimer>
 #include <cmath>
-#include <csignal>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "args.h"
 #include "armmimic/core/angle_file.h"
+#include "armmimic/core/text.h"
 #include "armmimic/robot/journal.h"
 #include "armmimic/robot/link_protocol.h"
 #include "armmimic/robot/planner.h"
@@ -19,15 +19,13 @@
 #include "armmimic/robot/val_program.h"
 #include "armmimic/serial/serial_link.h"
 #include "command.h"
+#include "interrupt.h"
 #include "progress.h"
 
 namespace armmimic::cli {
 namespace {
 
 using robot::JointArray;
-
-volatile std::sig_atomic_t g_interrupted = 0;
-void OnSignal(int) { g_interrupted = 1; }
 
 struct SendOptions {
   std::vector<std::string> inputs;
@@ -60,6 +58,7 @@ bool IsAngleFile(const std::string& path) {
   std::ifstream in(path);
   std::string first;
   std::getline(in, first);
+  StripUtf8Bom(&first);
   return first.rfind(kAngleFileMagic, 0) == 0;
 }
 
@@ -142,7 +141,7 @@ bool RunLink(serial::SerialLink& link, std::vector<robot::LinkLine> lines,
   QTimer interrupt;
   interrupt.setInterval(50);
   QObject::connect(&interrupt, &QTimer::timeout, &loop, [&] {
-    if (g_interrupted) link.Cancel("interrupted (Ctrl-C)");
+    if (InterruptGuard::interrupted()) link.Cancel(InterruptGuard::Message());
   });
   interrupt.start();
   link.Start(std::move(lines), source);
@@ -372,8 +371,7 @@ int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
   char name[] = "armmimic-cli";
   char* argv[] = {name, nullptr};
   QCoreApplication app(argc, argv);
-  std::signal(SIGINT, OnSignal);
-  std::signal(SIGTERM, OnSignal);
+  InterruptGuard guard;
 
   serial::SerialLink link(robot::LinkSettings::FromProfile(profile));
   {

@@ -3,6 +3,7 @@
 
 #include "args.h"
 #include "armmimic/synth/arm_scene.h"
+#include "interrupt.h"
 #include "progress.h"
 #include "synth_commands.h"
 
@@ -89,9 +90,16 @@ int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& globa
     return p.UsageError(flag + ": " + m);
   }
 
+  InterruptGuard guard;
   ProgressBar bar("synth arm", o.frame_count(), global.ShowProgress());
-  const Status st = synth::WriteArmScene(o, outdir[0], [&bar](int done, int) { bar.Update(done); });
+  const Status st = synth::WriteArmScene(
+      o, outdir[0], [&bar](int done, int) { bar.Update(done); }, InterruptGuard::flag());
   bar.Finish();
+  if (!st.ok() && InterruptGuard::interrupted()) {
+    std::cerr << "synth arm: " << InterruptGuard::Message() << "; " << outdir[0]
+              << " unchanged (the scene is written whole or not at all)\n";
+    return kExitFailure;
+  }
   if (!st.ok()) {
     std::cerr << "armmimic-cli synth arm: " << st.message() << "\n";
     return kExitFailure;

@@ -32,7 +32,8 @@ class TempGuard {
 }  // namespace
 
 Status WriteArmScene(const ArmSceneOptions& options, const std::string& outdir,
-                     const std::function<void(int, int)>& progress) {
+                     const std::function<void(int, int)>& progress,
+                     const std::atomic<bool>* cancel) {
   Status st = options.Check();
   if (!st.ok()) return st;
   std::error_code ec;
@@ -76,6 +77,10 @@ Status WriteArmScene(const ArmSceneOptions& options, const std::string& outdir,
     }
     const int n = renderer.frame_count();
     for (int f = 0; f < n; ++f) {
+      if (cancel && cancel->load()) {
+        return Status::Error(outdir + ": cancelled after " + std::to_string(f) +
+                             " frames; nothing written");
+      }
       writer.write(renderer.Render(f));
       if (progress) progress(f + 1, n);
     }
