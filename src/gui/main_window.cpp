@@ -8,8 +8,8 @@
 #include <QFileInfo>
 #include <QMenu>
 #include <QMimeData>
-#include <QScrollArea>
 #include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QVBoxLayout>
@@ -24,6 +24,7 @@
 #include "prompts.h"
 #include "recent_files.h"
 #include "robot_panel.h"
+#include "session_inputs.h"
 #include "status_line.h"
 #include "video_player.h"
 #include "video_view.h"
@@ -78,6 +79,7 @@ MainWindow::MainWindow(QWidget* parent)
   connect(&throttle_, &QTimer::timeout, this, &MainWindow::refreshViews);
   wireActions();
   wireAnalysis();
+  robot_->setInputFiles([this] { return sessionInputs(); });
   restoreSettings();
   updateStatus();
 }
@@ -265,7 +267,18 @@ bool MainWindow::startAnalysis() {
   return job_->start(options, live_);
 }
 
+std::vector<NamedPath> MainWindow::sessionInputs() const {
+  return SessionInputs(player_->isOpen() ? player_->inputs() : QStringList(), settings_->options());
+}
+
+bool MainWindow::refuseInput(const QString& what, const QString& path) {
+  const QString refusal = SameFileRefusal(sessionInputs(), what, path);
+  if (!refusal.isEmpty()) log_->error(refusal);
+  return !refusal.isEmpty();
+}
+
 bool MainWindow::exportAngles(const QString& path) {
+  if (refuseInput(tr("the angle file"), path)) return false;
   const QString error = job_->exportResult(path);
   if (!error.isEmpty()) {
     log_->error(error);
@@ -277,6 +290,7 @@ bool MainWindow::exportAngles(const QString& path) {
 }
 
 bool MainWindow::saveFrame(const QString& path) {
+  if (refuseInput(tr("the frame image"), path)) return false;
   const QString error = view_->saveWithOverlay(path);
   if (!error.isEmpty()) {
     log_->error(error);
@@ -290,6 +304,13 @@ bool MainWindow::saveFrame(const QString& path) {
 bool MainWindow::estimateBackground(int frames, const QString& path) {
   if (!player_->isOpen() || player_->isLive()) {
     log_->error(tr("Open a video first: the background is the mean of its first frames"));
+    return false;
+  }
+  // The estimate reads only the video; it may replace the background image chosen before.
+  const QString refusal =
+      SameFileRefusal(SessionInputs(player_->inputs(), {}), tr("the background image"), path);
+  if (!refusal.isEmpty()) {
+    log_->error(refusal);
     return false;
   }
   return job_->startBackground(player_->inputs(), 0, frames, path);

@@ -6,6 +6,7 @@
 #include <QStringList>
 #include <QTimer>
 
+#include "armmimic/core/same_file.h"
 #include "result_store.h"
 
 class QDockWidget;
@@ -64,6 +65,10 @@ class MainWindow : public QMainWindow {
   void showFrame(int index, const QImage& image, double time_s);
   void restoreSettings();
   void saveSettings() const;
+  // The files the session reads, which no export may replace.
+  std::vector<NamedPath> sessionInputs() const;
+  // Logs why `path` may not be written as `what`; true when refused.
+  bool refuseInput(const QString& what, const QString& path);
 
   AppActions* actions_;
   VideoPlayer* player_;
