@@ -6,8 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "armmimic/core/angle_file.h"
-#include "armmimic/synth/arm_scene.h"
-#include "test_util.h"
+#include "small_scene.h"
 
 namespace armmimic {
 namespace {
@@ -16,22 +15,7 @@ bool Contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
-// A small scene: 160x120, 10 empty, 10 standstill and 30 moving frames.
-const std::string& Scene() {
-  static test::TempDir* dir = [] {
-    auto* d = new test::TempDir();
-    synth::ArmSceneOptions so;
-    so.seed = 9;
-    so.size = {160, 120};
-    so.background_frames = 10;
-    so.standstill_frames = 10;
-    so.motion_frames = 30;
-    const Status st = synth::WriteArmScene(so, d->path(), {});
-    if (!st.ok()) ADD_FAILURE() << st.message();
-    return d;
-  }();
-  return dir->path();
-}
+const std::string& Scene() { return test::SmallScene(9, 30); }
 
 std::string Rows(const std::string& path) {
   std::istringstream in(test::ReadFile(path));

@@ -5,8 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "armmimic/synth/arm_scene.h"
-#include "test_util.h"
+#include "small_scene.h"
 
 namespace armmimic {
 namespace {
@@ -15,22 +14,7 @@ bool Contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
-// A small scene: 160x120, 10 empty, 10 standstill and 10 moving frames.
-const std::string& Scene() {
-  static test::TempDir* dir = [] {
-    auto* d = new test::TempDir();
-    synth::ArmSceneOptions so;
-    so.seed = 5;
-    so.size = {160, 120};
-    so.background_frames = 10;
-    so.standstill_frames = 10;
-    so.motion_frames = 10;
-    const Status st = synth::WriteArmScene(so, d->path(), {});
-    if (!st.ok()) ADD_FAILURE() << st.message();
-    return d;
-  }();
-  return dir->path();
-}
+const std::string& Scene() { return test::SmallScene(5, 10); }
 
 // Runs `args`, expects the refusal naming `out` and `in`, and `victim` unchanged.
 void ExpectRefused(const std::vector<std::string>& args, const std::string& out,
