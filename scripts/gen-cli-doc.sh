@@ -39,7 +39,8 @@ own `--help` texts by `scripts/gen-cli-doc.sh`.
   `--background`, `--arm-length`, `--reference`, `--params-from`, `--list`, the images an earlier
   run's header names, `ANGLES.tsv`, `--profile`, `TRUTH.tsv`): exit 2, naming both. Files are
   compared by device and inode, so `./a.tsv` for `a.tsv`, a symlink or a hard link is caught
-  too. `synth` reads no file. The desktop application refuses its exports the same way.
+  too. `send` refuses a journal (`INPUT.journal`) that is its `--profile`; `synth` reads no
+  file. The desktop application refuses its exports the same way.
 - **Signals.** SIGINT (Ctrl-C), SIGTERM (`timeout`, systemd, GNU parallel, Slurm) and SIGHUP (a
   closed terminal) stop every command the same way, and the message names the signal
   (`analyze: interrupted (SIGTERM); 120 rows kept in a.tsv (marked complete=no)`). An angle file

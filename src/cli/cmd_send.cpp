@@ -11,6 +11,7 @@
 
 #include "args.h"
 #include "armmimic/core/angle_file.h"
+#include "armmimic/core/same_file.h"
 #include "armmimic/core/text.h"
 #include "armmimic/robot/journal.h"
 #include "armmimic/robot/link_protocol.h"
@@ -223,6 +224,14 @@ int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
     if (!l.ok()) return p.UsageError("--limits: " + l.message());
   }
   const std::string& input = o.inputs[0];
+  if (!o.dry_run) {
+    // The journal is send's one output: it may not be the program or the profile.
+    std::vector<NamedPath> inputs = {{"INPUT", input}};
+    if (!o.profile_path.empty()) inputs.push_back({"--profile", o.profile_path});
+    const Status s =
+        CheckOutputsAreNotInputs(inputs, {{"the journal", robot::SendJournal::PathFor(input)}});
+    if (!s.ok()) return p.UsageError(s.message());
+  }
 
   robot::ControllerProfile profile = robot::ControllerProfile::Default();
   if (!o.profile_path.empty()) {

@@ -97,6 +97,10 @@ TEST(CliSameFile, BackgroundPlanAndScoreRefuseToo) {
                 "ANGLES.tsv angles.png", dir.file("angles.png"));
   // Another output is fine.
   EXPECT_EQ(test::RunCli({"-q", "plan", "a.tsv", "-o", "a.val"}).exit_code, 0);
+  // send's one output, the journal beside the program, may not be its profile.
+  test::WriteFile(dir.file("a.val.journal"), "mode = stream\n");
+  ExpectRefused({"send", "a.val", "--port", "/dev/null", "--profile", "a.val.journal"},
+                "the journal a.val.journal", "--profile a.val.journal", dir.file("a.val.journal"));
 }
 
 }  // namespace
