@@ -47,13 +47,13 @@ int RunPumaSim(const std::vector<std::string>& args, const GlobalOptions& global
     if (!s.ok()) return p.UsageError("--limits: " + s.message());
   }
 
+  InterruptGuard guard;  // before the device exists: whoever sees it may signal at once
   sim::PtyServer server(options);
   const Status s = server.Start(link_path, log_path);
   if (!s.ok()) {
     std::cerr << "armmimic-cli puma-sim: " << s.message() << "\n";
     return kExitFailure;
   }
-  InterruptGuard guard;
   std::cout << server.device_path() << std::endl;
   if (!global.quiet) {
     std::cerr << "puma-sim: VAL controller emulator on " << server.device_path()

@@ -296,9 +296,11 @@ TEST_F(SendE2E, PermissionDeniedIsNamed) {
   ASSERT_TRUE(test::CanRunUnprivileged()) << "cannot drop root here (no /usr/bin/setpriv)";
   chmod(dir_.path().c_str(), 0777);
   Write(MakeProgram(1));
-  const std::string locked = dir_.file("locked");
-  test::WriteFile(locked, "");
-  chmod(locked.c_str(), 0);
+  // A real terminal device that only its owner (root) may open.
+  sim::PtyServer server(Fast());
+  ASSERT_TRUE(server.Start().ok());
+  const std::string locked = server.device_path();
+  ASSERT_EQ(chmod(locked.c_str(), 0600), 0);
   const test::CliResult r =
       test::RunCliUnprivileged({"--no-progress", "send", val_, "--port", locked});
   EXPECT_EQ(r.exit_code, 1);
