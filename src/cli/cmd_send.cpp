@@ -182,7 +182,8 @@ int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
               "(INPUT.journal) records each acknowledged line; --resume continues after the last "
               "one. See docs/link.md.");
   p.Positionals(&o.inputs, "INPUT", 0, 1);
-  p.String("--port", &o.port.port, "DEVICE", "serial port, e.g. /dev/ttyUSB0 or ttyS0");
+  p.String("--port", &o.port.port, "DEVICE",
+           "serial port, e.g. /dev/ttyUSB0; a bare name is tried as ./NAME, then /dev/NAME");
   p.Int("--baud", &o.port.baud, "N", "baud rate (default 9600)", 1, 4000000);
   p.Int("--data-bits", &o.port.data_bits, "N", "data bits 5..8 (default 8)", 5, 8);
   p.Custom("--parity", "P", "none, even or odd (default none)",
