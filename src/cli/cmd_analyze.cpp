@@ -1,5 +1,5 @@
-// armmimic-cli analyze INPUT... -o ANGLES.tsv --engine bgsub|lk|marker: video or images in, an
-// angle file v1 out (docs/cli.md); or many videos into a folder (--output-dir, --list); or the
+// armmimic-cli analyze INPUT... -o ANGLES.tsv --engine bgsub|lk|marker|pose: video or images in,
+// an angle file v1 out (docs/cli.md); or many videos into a folder (--output-dir, --list); or the
 // run recorded in an earlier angle file again (--params-from). Ctrl-C, SIGTERM and SIGHUP keep
 // the rows so far in a file marked complete=no.
 #include <filesystem>
@@ -25,13 +25,16 @@ const std::map<std::string, std::set<EngineKind>>& EngineFlags() {
       {"--background", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--background-frames", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--arm-length", {EngineKind::kBgsub}},
-      {"--start", {EngineKind::kBgsub, EngineKind::kLk}},
+      {"--start", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kPose}},
       {"--standstill-frames", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--threshold", {EngineKind::kBgsub}},
       {"--shoulder", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--elbow", {EngineKind::kLk}},
       {"--wrist", {EngineKind::kLk}},
-      {"--roi", {EngineKind::kBgsub, EngineKind::kLk}},
+      {"--roi", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kPose}},
+      {"--side", {EngineKind::kPose, EngineKind::kLk}},
+      {"--model", {EngineKind::kPose, EngineKind::kLk}},
+      {"--auto-calibrate", {EngineKind::kLk}},
       {"--initial-upper", {EngineKind::kLk}},
       {"--initial-fore", {EngineKind::kLk}},
       {"--reference", {EngineKind::kMarker}},
@@ -62,7 +65,7 @@ std::string ParamList() {
 struct AnalyzeFlags {
   AnalysisOptions f;  // flag values (inputs, images, points, engine fields with their own flag)
   std::vector<std::string> params;
-  std::string output, output_dir, list, summary, params_from, engine_name;
+  std::string output, output_dir, list, summary, params_from, engine_name, side_name;
   int standstill = 60;
   int threshold = BgsubOptions().threshold;
   bool thesis = false;
@@ -77,8 +80,12 @@ constexpr const char* kSynopsis =
     "          [--standstill-frames 60] [--initial-upper -90] [--initial-fore -90]\n"
     "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine lk\n"
     "          --shoulder X,Y --elbow X,Y --wrist X,Y [--start F]\n"
+    "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine lk --auto-calibrate\n"
+    "          [--side left|right] [--start F] [--model DIR]\n"
     "  armmimic-cli analyze INPUT... -o ANGLES.tsv --engine marker --reference REF.png\n"
     "          [--low 20] [--high 80]\n"
+    "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine pose [--side left|right] [--start F]\n"
+    "          [--model DIR]\n"
     "  armmimic-cli analyze VIDEO -o NEW.tsv --params-from OLD.tsv [flags]\n"
     "  armmimic-cli analyze (VIDEO... | --list FILE) --output-dir DIR [--summary FILE]\n"
     "          (--engine E [engine flags] | --params-from OLD.tsv [flags])\n"
@@ -91,7 +98,14 @@ constexpr const char* kDescription =
     "starting posture and already gets a row (--standstill-frames is then refused). With\n"
     "--elbow and --wrist too, the three clicked joints give the starting directions and the\n"
     "segment lengths; otherwise the arm length is estimated and the estimate is printed.\n"
+    "lk --auto-calibrate: the pose network finds the shoulder, elbow and wrist in frame F, as\n"
+    "if clicked (--side names the person's own arm; default: the better seen).\n"
     "marker: one row per input image, in input order.\n"
+    "pose: a pose network (MoveNet) finds the person's arm in every frame from F on, with no\n"
+    "background or calibration; a row is lost where the arm is not seen or a segment points at\n"
+    "the camera, and a confidence column (0-1) follows the angles. --side names the person's\n"
+    "own arm (default: the better seen over the first second). The model is fetched by\n"
+    "scripts/deps.sh --with-model and found without flags (docs/pose.md).\n"
     "The header records the run: the engine, every ENGINE.KEY setting and the input images.\n"
     "--params-from OLD.tsv repeats that run on VIDEO; flags given as well override it.\n"
     "Batch: with --output-dir, each VIDEO (or each line of the --list file) is analysed on its\n"
@@ -113,14 +127,16 @@ void DefineFlags(ArgParser& p, AnalyzeFlags& a) {
   p.String("--summary", &a.summary, "FILE", "batch: the summary table (default DIR/summary.tsv)");
   p.String("--params-from", &a.params_from, "OLD.tsv",
            "repeat the run recorded in OLD.tsv's header (engine, settings, input images)");
-  p.String("--engine", &a.engine_name, "NAME", "bgsub, lk or marker (required)");
+  p.String("--engine", &a.engine_name, "NAME", "bgsub, lk, marker or pose (required)");
   p.String("--background", &f.background_path, "BG.png", "bgsub/lk: the empty scene image");
   p.Int("--background-frames", &f.background_frames, "K",
         "bgsub/lk: estimate the background from frames [0, K) of the video", 1, 1000000);
   p.String("--arm-length", &f.arm_length_path, "ARM.png",
            "bgsub: straight horizontal arm at zero yaw (gives b)");
   p.Int("--start", &f.start, "F",
-        "bgsub/lk: first standstill frame (default 0; a camera or stream drops F frames)", 0);
+        "bgsub/lk: first standstill frame; pose: first frame (default 0; a camera or stream "
+        "drops F frames)",
+        0);
   p.Int("--standstill-frames", &a.standstill, "N", "bgsub/lk: standstill length (default 60)", 1,
         100000);
   p.Int("--threshold", &a.threshold, "T", "bgsub: grey-level difference threshold (default 45)", 1,
@@ -155,6 +171,12 @@ void DefineFlags(ArgParser& p, AnalyzeFlags& a) {
         0, 255);
   p.Int("--high", &f.engine.marker.high, "H",
         "marker: upper grey level of the markers (default 80)", 0, 255);
+  p.String("--side", &a.side_name, "left|right",
+           "pose, lk --auto-calibrate: the person's own arm (default: the better seen)");
+  p.String("--model", &f.model_dir, "DIR",
+           "pose, lk --auto-calibrate: the folder holding movenet-lightning.json and .bin");
+  p.Flag("--auto-calibrate", &f.auto_calibrate,
+         "lk: the shoulder, elbow and wrist in frame F from the pose network");
   p.Flag("--thesis", &a.thesis, "run the thesis method only, without the improvements");
   p.Custom("--param", "ENGINE.KEY=VALUE",
            "any engine parameter listed below; repeatable, applied after the other flags",
@@ -185,6 +207,12 @@ void ApplyGivenFlags(const ArgParser& p, const AnalyzeFlags& a, AnalysisOptions*
   if (p.Given("--elbow")) o->elbow_px = f.elbow_px;
   if (p.Given("--wrist")) o->wrist_px = f.wrist_px;
   if (p.Given("--roi")) o->roi = f.roi;
+  if (p.Given("--model")) o->model_dir = f.model_dir;
+  if (f.auto_calibrate) o->auto_calibrate = true;
+  if (p.Given("--side")) {
+    ParsePoseSide(a.side_name, &o->engine.pose.side);  // checked in CheckEngine
+    o->calibrate_side = o->engine.pose.side;
+  }
   if (p.Given("--standstill-frames")) {
     o->engine.bgsub.standstill_frames = a.standstill;
     o->engine.lk.standstill_frames = a.standstill;
@@ -214,6 +242,7 @@ std::vector<NamedPath> InputsOf(const AnalysisOptions& o, const AnalyzeFlags& a,
        {std::pair<const char*, const std::string*>{"--background", &o.background_path},
         {"--arm-length", &o.arm_length_path},
         {"--reference", &o.reference_path},
+        {"--model", &o.model_dir},
         {"--params-from", &a.params_from},
         {"--list", &a.list}}) {
     if (!path->empty()) in.push_back({flag, *path});
@@ -251,7 +280,18 @@ std::string CheckEngine(const ArgParser& p, const AnalyzeFlags& a, const Analysi
       return "--param " + assignment + " is not used by --engine " + engine;
     }
   }
-  if (o.engine.kind == EngineKind::kLk && p.Given("--shoulder") && p.Given("--standstill-frames")) {
+  PoseSide side = PoseSide::kAuto;
+  if (p.Given("--side") && !ParsePoseSide(a.side_name, &side)) {
+    return "--side '" + a.side_name + "': expected left or right (the person's own)";
+  }
+  const bool auto_calibrate = o.auto_calibrate || a.f.auto_calibrate;
+  if (o.engine.kind != EngineKind::kPose && !auto_calibrate &&
+      (p.Given("--side") || p.Given("--model"))) {
+    return std::string(p.Given("--side") ? "--side" : "--model") + " is used by --engine " +
+           engine + " only with --auto-calibrate";
+  }
+  if (o.engine.kind == EngineKind::kLk && (p.Given("--shoulder") || auto_calibrate) &&
+      p.Given("--standstill-frames")) {
     return "--standstill-frames is not used by --engine lk with --shoulder: frame F is the "
            "starting posture and gets a row";
   }
@@ -284,10 +324,11 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
                           EngineName(o.engine.kind) + " run; drop --engine or --params-from");
     }
   } else if (a.engine_name.empty()) {
-    return p.UsageError("missing --engine (bgsub, lk or marker)");
+    return p.UsageError("missing --engine (bgsub, lk, marker or pose)");
   }
   if (!a.engine_name.empty() && !ParseEngineKind(a.engine_name, &o.engine.kind)) {
-    return p.UsageError("--engine: unknown engine '" + a.engine_name + "' (bgsub, lk or marker)");
+    return p.UsageError("--engine: unknown engine '" + a.engine_name +
+                        "' (bgsub, lk, marker or pose)");
   }
   if (const std::string e = CheckEngine(p, a, o); !e.empty()) return p.UsageError(e);
   ApplyGivenFlags(p, a, &o);

@@ -47,7 +47,7 @@ std::string FormatMetaLine(const AngleMeta& meta) {
   return line;
 }
 
-std::string FormatAngleRow(const AngleRow& row, bool file_column) {
+std::string FormatAngleRow(const AngleRow& row, bool file_column, bool confidence_column) {
   const bool ok = row.ok();
   auto ang = [&](double v) { return FormatNumber(ok ? v : kNaN, 3); };
   auto px = [&](double v) { return FormatNumber(ok ? v : kNaN, 2); };
@@ -65,6 +65,10 @@ std::string FormatAngleRow(const AngleRow& row, bool file_column) {
     s += '\t';
     s += px(v);
   }
+  if (confidence_column) {
+    s += '\t';
+    s += FormatNumber(std::isnan(row.confidence) ? kNaN : row.confidence, 3);
+  }
   if (file_column) {
     s += '\t';
     s += row.file;
@@ -81,6 +85,8 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
   int line_no = 0;
   bool have_header = false;
   std::size_t header_columns = 0;
+  std::size_t file_index = 0;  // trailing columns, 0: absent
+  std::size_t confidence_index = 0;
   int last_frame = -1;
   bool seen_meta = false;
   while (true) {
@@ -142,7 +148,12 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
         }
       }
       header_columns = cols.size();
-      out->has_file_column = cols.size() > 11 && cols[11] == "file";
+      for (std::size_t i = 11; i < cols.size(); ++i) {
+        if (cols[i] == "file") file_index = i;
+        if (cols[i] == "confidence") confidence_index = i;
+      }
+      out->has_file_column = file_index > 0;
+      out->has_confidence_column = confidence_index > 0;
       have_header = true;
       continue;
     }
@@ -193,7 +204,14 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
     if (!std::isnan(row.yaw_deg) && row.yaw_deg < 0) {
       return err(line_no, "yaw_deg " + f[5] + " is negative (yaw is always >= 0)");
     }
-    if (out->has_file_column) row.file = f[11];
+    if (out->has_file_column) row.file = f[file_index];
+    if (confidence_index > 0) {
+      if (!ParseTableNumber(f[confidence_index], true, &row.confidence) ||
+          (!std::isnan(row.confidence) && (row.confidence < 0 || row.confidence > 1))) {
+        return err(line_no,
+                   "confidence \"" + f[confidence_index] + "\" is not a number in [0, 1] (or nan)");
+      }
+    }
     out->rows.push_back(std::move(row));
   }
   if (!have_header) {
@@ -214,6 +232,7 @@ struct AngleFileWriter::Impl {
   std::string path;
   AngleMeta meta;
   bool file_column = false;
+  bool confidence_column = false;
   bool open = false;
   int rows = 0;
 };
@@ -224,23 +243,26 @@ AngleFileWriter::~AngleFileWriter() = default;
 int AngleFileWriter::rows_written() const { return impl_->rows; }
 
 namespace {
-std::string HeaderText(const AngleMeta& meta, bool file_column) {
+std::string HeaderText(const AngleMeta& meta, bool file_column, bool confidence_column) {
   std::string s =
       std::string(kAngleFileMagic) + "\n" + FormatMetaLine(meta) + "\n" + kAngleFileUnits + "\n";
   for (int i = 0; i < 11; ++i) s += (i ? "\t" : "") + std::string(kAngleColumns[i]);
+  if (confidence_column) s += "\tconfidence";
   if (file_column) s += "\tfile";
   return s + "\n";
 }
 }  // namespace
 
-Status AngleFileWriter::Open(const std::string& path, const AngleMeta& meta, bool file_column) {
+Status AngleFileWriter::Open(const std::string& path, const AngleMeta& meta, bool file_column,
+                             bool confidence_column) {
   impl_ = std::make_unique<Impl>();
   Status st = impl_->file.Open(path);
   if (!st) return st;
   impl_->path = path;
   impl_->meta = meta;
   impl_->file_column = file_column;
-  const std::string header = HeaderText(meta, file_column);
+  impl_->confidence_column = confidence_column;
+  const std::string header = HeaderText(meta, file_column, confidence_column);
   if (std::fputs(header.c_str(), impl_->file.file()) < 0) {
     return Status::Error(path + ": write failed (" + std::strerror(errno) + ")");
   }
@@ -254,7 +276,7 @@ Status AngleFileWriter::Write(const AngleRow& row) {
     return Status::Error(impl_->path + ": file name \"" + row.file +
                          "\" contains a tab or newline");
   }
-  const std::string s = FormatAngleRow(row, impl_->file_column) + "\n";
+  const std::string s = FormatAngleRow(row, impl_->file_column, impl_->confidence_column) + "\n";
   if (std::fputs(s.c_str(), impl_->file.file()) < 0) {
     return Status::Error(impl_->path + ": write failed (" + std::strerror(errno) + ")");
   }
@@ -273,7 +295,7 @@ Status AngleFileWriter::Commit(bool complete) {
   if (!st) return st;
   AngleMeta meta = impl_->meta;
   meta.emplace_back("complete", "no");
-  const std::string header = HeaderText(meta, impl_->file_column);
+  const std::string header = HeaderText(meta, impl_->file_column, impl_->confidence_column);
   std::fputs(header.c_str(), marked.file());
   std::ifstream rows(impl_->file.temp_path(), std::ios::binary);
   std::string line;

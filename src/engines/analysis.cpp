@@ -11,7 +11,9 @@
 #include "armmimic/core/image_io.h"
 #include "armmimic/engines/engine.h"
 #include "armmimic/engines/option_fields.h"
+#include "armmimic/engines/pose.h"
 #include "armmimic/engines/run_record.h"
+#include "pose_prepare.h"
 
 namespace armmimic {
 namespace {
@@ -59,10 +61,44 @@ Status LoadSized(const std::string& path, const std::string& flag, const VideoIn
   return Status::Ok();
 }
 
+// The pose network's part before the engine starts: --auto-calibrate's joints, and the pose
+// engine's arm when --side is auto. Decisions go to on_estimate.
+Status PreparePose(const AnalysisOptions& options, const VideoInfo& info,
+                   const AnalysisCallbacks& callbacks, AnalysisOptions* resolved) {
+  auto tell = [&](const std::string& text) {
+    if (callbacks.on_estimate && !text.empty()) callbacks.on_estimate(text);
+  };
+  if (options.auto_calibrate) {
+    Phase(callbacks, "auto-calibrate");
+    PoseArm arm;
+    PoseSide side = options.calibrate_side;
+    Status st = DetectArmJoints(options.inputs, options.start, options.calibrate_side,
+                                options.model_dir, options.engine.pose.min_score, &arm, &side);
+    if (!st) return Status::Error("--auto-calibrate: " + st.message());
+    resolved->shoulder_px = arm.shoulder;
+    resolved->elbow_px = arm.elbow;
+    resolved->wrist_px = arm.wrist;
+    auto xy = [](const cv::Point2d& p) {
+      return ShortNumber(std::round(p.x)) + "," + ShortNumber(std::round(p.y));
+    };
+    tell("auto-calibrate: the person's " + std::string(PoseSideName(side)) + " arm in frame " +
+         std::to_string(options.start) + ": --shoulder " + xy(arm.shoulder) + " --elbow " +
+         xy(arm.elbow) + " --wrist " + xy(arm.wrist));
+  }
+  if (options.engine.kind == EngineKind::kPose && options.engine.pose.side == PoseSide::kAuto) {
+    std::string why;
+    Status st = internal::ChoosePoseSide(options.inputs, options.start, info.fps, options.model_dir,
+                                         &resolved->engine.pose.side, &why);
+    if (!st) return st;
+    tell(why);
+  }
+  return Status::Ok();
+}
+
 using RowSink = std::function<Status(const ArmMeasurement&)>;
 using ReadySink = std::function<Status(const AngleMeta&)>;
 
-Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
+Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
            const ReadySink& on_ready, const RowSink& on_row, AnalysisSummary* summary) {
   const auto t0 = std::chrono::steady_clock::now();
   *summary = AnalysisSummary();
@@ -70,24 +106,30 @@ Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
     summary->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return st;
   };
-  Status st = options.Check();
+  Status st = given.Check();
   if (!st) return finish(st);
 
   Status open_status;
-  std::unique_ptr<VideoSource> source = VideoSource::Open(options.inputs, &open_status);
+  std::unique_ptr<VideoSource> source = VideoSource::Open(given.inputs, &open_status);
   if (!source) return finish(open_status);
   const VideoInfo info = source->info();
   summary->video = info;
-  const EngineKind kind = options.engine.kind;
+  const EngineKind kind = given.engine.kind;
   const bool arm_engine = kind != EngineKind::kMarker;
 
-  if (arm_engine && info.frame_count >= 0 && options.start >= info.frame_count) {
-    return finish(Status::Error("--start " + std::to_string(options.start) +
-                                " is past the end of " + info.path + " (" +
-                                std::to_string(info.frame_count) + " frames)"));
+  if (arm_engine && info.frame_count >= 0 && given.start >= info.frame_count) {
+    return finish(Status::Error("--start " + std::to_string(given.start) + " is past the end of " +
+                                info.path + " (" + std::to_string(info.frame_count) + " frames)"));
+  }
+
+  AnalysisOptions options = given;  // with what the pose network decided
+  if (arm_engine) {
+    st = PreparePose(given, info, callbacks, &options);
+    if (!st) return finish(st);
   }
 
   EngineContext context;
+  context.model_dir = options.model_dir;
   context.frame_size = info.size;
   context.fps = info.fps;
   context.shoulder_px = options.shoulder_px;
@@ -225,6 +267,19 @@ Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
 }  // namespace
 
 Status AnalysisOptions::Check() const {
+  if (auto_calibrate) {
+    if (engine.kind == EngineKind::kBgsub || engine.kind == EngineKind::kMarker ||
+        engine.kind == EngineKind::kPose) {
+      return Status::Error(
+          std::string("--auto-calibrate is for the tracking engines, not --engine ") +
+          EngineName(engine.kind));
+    }
+    if (shoulder_px || elbow_px || wrist_px) {
+      return Status::Error(
+          "--auto-calibrate finds the joints itself: give it or --shoulder/--elbow/--wrist, not "
+          "both");
+    }
+  }
   if (engine.kind != EngineKind::kLk && (elbow_px || wrist_px)) {
     return Status::Error(std::string(elbow_px ? "--elbow" : "--wrist") +
                          " is used by --engine lk only");
@@ -268,9 +323,10 @@ Status AnalysisOptions::Check() const {
                                ": the segment has no direction");
         }
       }
-      if (!has_bg && !has_frames && !shoulder_px) {
+      if (!has_bg && !has_frames && !shoulder_px && !auto_calibrate) {
         return Status::Error(
-            "--engine lk needs one of --background, --background-frames or --shoulder");
+            "--engine lk needs one of --background, --background-frames, --shoulder or "
+            "--auto-calibrate");
       }
       if (has_bg && has_frames) {
         return Status::Error("--background and --background-frames cannot both be given");
@@ -281,6 +337,8 @@ Status AnalysisOptions::Check() const {
         return Status::Error("--engine marker needs --reference REF.png");
       }
       break;
+    case EngineKind::kPose:
+      break;  // needs nothing but the model
   }
   return engine.Check();
 }
@@ -334,9 +392,12 @@ Status AnalyzeToFile(const AnalysisOptions& options, const std::string& output_p
                      const AnalysisCallbacks& callbacks, AnalysisSummary* summary) {
   AngleFileWriter writer;
   const bool file_column = options.engine.kind == EngineKind::kMarker;
+  const bool confidence_column = options.engine.kind == EngineKind::kPose;
   Status st = Run(
       options, callbacks,
-      [&](const AngleMeta& meta) { return writer.Open(output_path, meta, file_column); },
+      [&](const AngleMeta& meta) {
+        return writer.Open(output_path, meta, file_column, confidence_column);
+      },
       [&](const ArmMeasurement& m) { return writer.Write(m.ToRow()); }, summary);
   if (!st) return st;
   if (summary->meta.empty()) return Status::Ok();  // cancelled before the file was opened

@@ -4,15 +4,21 @@ namespace armmimic {
 
 const char* EngineName(EngineKind kind) {
   switch (kind) {
-    case EngineKind::kBgsub: return "bgsub";
-    case EngineKind::kLk: return "lk";
-    case EngineKind::kMarker: return "marker";
+    case EngineKind::kBgsub:
+      return "bgsub";
+    case EngineKind::kLk:
+      return "lk";
+    case EngineKind::kMarker:
+      return "marker";
+    case EngineKind::kPose:
+      return "pose";
   }
   return "?";
 }
 
 bool ParseEngineKind(const std::string& name, EngineKind* out) {
-  for (EngineKind k : {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kMarker}) {
+  for (EngineKind k :
+       {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kMarker, EngineKind::kPose}) {
     if (name == EngineName(k)) {
       *out = k;
       return true;
@@ -23,9 +29,14 @@ bool ParseEngineKind(const std::string& name, EngineKind* out) {
 
 Status EngineOptions::Check() const {
   switch (kind) {
-    case EngineKind::kBgsub: return bgsub.Check();
-    case EngineKind::kLk: return lk.Check();
-    case EngineKind::kMarker: return marker.Check();
+    case EngineKind::kBgsub:
+      return bgsub.Check();
+    case EngineKind::kLk:
+      return lk.Check();
+    case EngineKind::kMarker:
+      return marker.Check();
+    case EngineKind::kPose:
+      return pose.Check();
   }
   return Status::Ok();
 }

@@ -8,6 +8,7 @@ AngleRow ArmMeasurement::ToRow() const {
   row.time_s = time_s;
   row.status = phase == MeasurementPhase::kOk ? RowStatus::kOk : RowStatus::kLost;
   row.file = file;
+  row.confidence = confidence;
   if (row.ok()) {
     row.upper_deg = upper_deg;
     row.fore_deg = fore_deg;

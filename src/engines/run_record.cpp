@@ -46,6 +46,11 @@ AngleMeta RunRecordMeta(const AnalysisOptions& o) {
   if (o.shoulder_px) meta.emplace_back("shoulder", PointText(*o.shoulder_px));
   if (o.elbow_px) meta.emplace_back("elbow", PointText(*o.elbow_px));
   if (o.wrist_px) meta.emplace_back("wrist", PointText(*o.wrist_px));
+  if (!o.model_dir.empty()) meta.emplace_back("model", o.model_dir);
+  if (o.auto_calibrate) meta.emplace_back("auto_calibrate", "yes");
+  if (o.calibrate_side != PoseSide::kAuto) {
+    meta.emplace_back("calibrate_side", PoseSideName(o.calibrate_side));
+  }
   if (o.roi) {
     meta.emplace_back("roi", std::to_string(o.roi->x) + "," + std::to_string(o.roi->y) + "," +
                                  std::to_string(o.roi->width) + "," +
@@ -65,7 +70,8 @@ Status RunFromMeta(const AngleMeta& meta, const std::string& source_name, Analys
   AnalysisOptions run;
   run.inputs = o->inputs;
   if (!ParseEngineKind(engine, &run.engine.kind)) {
-    return err("engine=" + engine + " is not an engine this version knows (bgsub, lk or marker)");
+    return err("engine=" + engine +
+               " is not an engine this version knows (bgsub, lk, marker or pose)");
   }
   std::vector<double> n;
   for (const auto& [k, v] : meta) {
@@ -81,6 +87,15 @@ Status RunFromMeta(const AngleMeta& meta, const std::string& source_name, Analys
       run.arm_length_path = v;
     } else if (k == "reference") {
       run.reference_path = v;
+    } else if (k == "model") {
+      run.model_dir = v;
+    } else if (k == "auto_calibrate") {
+      if (v != "yes" && v != "no") return err("auto_calibrate=" + v + " is not yes or no");
+      run.auto_calibrate = v == "yes";
+    } else if (k == "calibrate_side") {
+      if (!ParsePoseSide(v, &run.calibrate_side)) {
+        return err("calibrate_side=" + v + " is not left, right or auto");
+      }
     } else if (k == "background_frames" || k == "start") {
       int value = 0;
       if (!ParseFrameIndex(v, &value)) return err(k + "=" + v + " is not a frame count");

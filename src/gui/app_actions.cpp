@@ -78,7 +78,10 @@ AppActions::AppActions(QObject* parent) : QObject(parent) {
   toolRoi->setIcon(MakeIcon(IconKind::kRoi));
   toolShoulder = make(tr("Click the &shoulder"), QKeySequence(Qt::Key_S), "actionToolShoulder");
   toolShoulder->setIcon(MakeIcon(IconKind::kShoulder));
-  for (QAction* a : {toolPan, toolRoi, toolShoulder}) {
+  toolJoints = make(tr("Click shoulder, elbow and wrist (start frame)"), QKeySequence(Qt::Key_J),
+                    "actionToolJoints");
+  toolJoints->setIcon(MakeIcon(IconKind::kShoulder));
+  for (QAction* a : {toolPan, toolRoi, toolShoulder, toolJoints}) {
     a->setCheckable(true);
     tools->addAction(a);
   }
@@ -136,7 +139,7 @@ void AppActions::populate(QMainWindow* w, const QList<QAction*>& dock_toggles) {
   QMenu* analysis = bar->addMenu(tr("&Analysis"));
   analysis->addActions({analyze, cancel, estimateBackground});
   analysis->addSeparator();
-  analysis->addActions({toolPan, toolRoi, toolShoulder, clearRoi, clearShoulder});
+  analysis->addActions({toolPan, toolRoi, toolShoulder, toolJoints, clearRoi, clearShoulder});
 
   QMenu* view = bar->addMenu(tr("&View"));
   view->addActions({zoomIn, zoomOut, zoomFit});

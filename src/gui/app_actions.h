@@ -55,6 +55,7 @@ class AppActions : public QObject {
   QAction* toolPan;
   QAction* toolRoi;
   QAction* toolShoulder;
+  QAction* toolJoints;  // shoulder, elbow and wrist in the start frame, in turn
   QAction* clearRoi;
   QAction* clearShoulder;
   // Analysis.

@@ -145,6 +145,8 @@ void MainWindow::wireActions() {
   connect(a->toolRoi, &QAction::triggered, this, [this] { view_->setTool(VideoView::Tool::kRoi); });
   connect(a->toolShoulder, &QAction::triggered, this,
           [this] { view_->setTool(VideoView::Tool::kShoulder); });
+  connect(a->toolJoints, &QAction::triggered, this,
+          [this] { view_->setTool(VideoView::Tool::kJoints); });
   connect(a->clearRoi, &QAction::triggered, this, [this] { settings_->setRoi(std::nullopt); });
   connect(a->clearShoulder, &QAction::triggered, this,
           [this] { settings_->setShoulder(std::nullopt); });
@@ -192,6 +194,19 @@ void MainWindow::wireActions() {
   });
   connect(view_, &VideoView::shoulderPicked, this,
           [this](const QPointF& p) { settings_->setShoulder(cv::Point2d(p.x(), p.y())); });
+  connect(view_, &VideoView::jointPicked, this, [this](int joint, const QPointF& p) {
+    settings_->setJoint(joint, cv::Point2d(p.x(), p.y()));
+  });
+  connect(settings_, &EngineSettingsPanel::autoCalibrateRequested, this, [this] {
+    std::vector<std::string> inputs;
+    for (const QString& s : player_->inputs()) inputs.push_back(s.toStdString());
+    const Status st = settings_->autoCalibrate(inputs);
+    if (st) {
+      log_->info(tr("Auto-calibrated the arm's joints from the pose network"));
+    } else {
+      log_->error(QString::fromStdString(st.message()));
+    }
+  });
   connect(settings_, &EngineSettingsPanel::roiChanged, this,
           [this](const std::optional<cv::Rect>& r) {
             view_->setRoi(r ? std::optional<QRect>(QRect(r->x, r->y, r->width, r->height))

@@ -120,6 +120,36 @@ TEST(AngleFile, UnknownTrailingColumnsAreIgnored) {
   EXPECT_FALSE(f.has_file_column);
 }
 
+TEST(AngleFile, ConfidenceColumnRoundTrips) {
+  test::TempDir dir;
+  AngleFileWriter w;
+  ASSERT_TRUE(w.Open(dir.file("a.tsv"), {{"engine", "pose"}}, false, true).ok());
+  AngleRow ok;
+  ok.frame = 0;
+  ok.status = RowStatus::kOk;
+  ok.upper_deg = -90;
+  ok.fore_deg = -45;
+  ok.confidence = 0.8126;
+  AngleRow lost;
+  lost.frame = 1;
+  lost.confidence = 0.125;
+  ASSERT_TRUE(w.Write(ok).ok());
+  ASSERT_TRUE(w.Write(lost).ok());
+  ASSERT_TRUE(w.Commit().ok());
+  EXPECT_NE(test::ReadFile(dir.file("a.tsv")).find("\tfore_cy\tconfidence\n"), std::string::npos);
+  AngleFile f;
+  ASSERT_TRUE(ReadAngleFile(dir.file("a.tsv"), &f).ok());
+  ASSERT_TRUE(f.has_confidence_column);
+  ASSERT_EQ(f.rows.size(), 2u);
+  EXPECT_DOUBLE_EQ(f.rows[0].confidence, 0.813);  // three decimals
+  EXPECT_DOUBLE_EQ(f.rows[1].confidence, 0.125);  // lost rows keep theirs
+  // A confidence outside 0..1 is refused, naming the line.
+  const std::string bad =
+      std::string(kHeader) + "\tconfidence\n" + "0\t0\tok\t1\t2\tnan\t1\t4\t5\t6\t7\t1.5\n";
+  const Status st = Parse(bad, &f);
+  EXPECT_EQ(st.message(), "a.tsv:2: confidence \"1.5\" is not a number in [0, 1] (or nan)");
+}
+
 struct BadCase {
   const char* name;
   std::string body;

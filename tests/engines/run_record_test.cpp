@@ -19,14 +19,16 @@ std::string Value(const AngleMeta& meta, const std::string& key) {
 }
 
 TEST(RunRecord, WritesEverySettingOfTheEngineChangedOrNot) {
-  for (EngineKind kind : {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kMarker}) {
+  for (EngineKind kind :
+       {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kMarker, EngineKind::kPose}) {
     AnalysisOptions o;
     o.engine.kind = kind;
     const AngleMeta meta = RunRecordMeta(o);
     const std::string engine = EngineName(kind);
-    std::size_t fields = kind == EngineKind::kBgsub ? BgsubOptionFields().size()
-                         : kind == EngineKind::kLk  ? LkOptionFields().size()
-                                                    : MarkerOptionFields().size();
+    std::size_t fields = kind == EngineKind::kBgsub    ? BgsubOptionFields().size()
+                         : kind == EngineKind::kLk     ? LkOptionFields().size()
+                         : kind == EngineKind::kMarker ? MarkerOptionFields().size()
+                                                       : PoseOptionFields().size();
     std::size_t found = 0;
     for (const auto& [k, v] : meta) {
       if (k.rfind(engine + ".", 0) == 0) ++found;
@@ -54,6 +56,9 @@ TEST(RunRecord, ReadingTheRecordBackGivesTheSameRun) {
   o.engine.lk.side = LkArmSide::kLeft;
   o.engine.lk.use_bar = false;
   o.engine.lk.initial_upper_deg = -45.5;
+  o.model_dir = "/opt/models";
+  o.auto_calibrate = true;
+  o.calibrate_side = PoseSide::kLeft;
   AngleMeta meta = {{"engine", "lk"}, {"source", "v.avi"}, {"start", "12"}};
   for (auto& kv : RunRecordMeta(o)) meta.push_back(kv);
   // Through the text of a header line, as a file stores it.
@@ -76,6 +81,9 @@ TEST(RunRecord, ReadingTheRecordBackGivesTheSameRun) {
   EXPECT_EQ(*back.elbow_px, *o.elbow_px);
   EXPECT_EQ(*back.wrist_px, *o.wrist_px);
   EXPECT_EQ(*back.roi, *o.roi);
+  EXPECT_EQ(back.model_dir, "/opt/models");
+  EXPECT_TRUE(back.auto_calibrate);
+  EXPECT_EQ(back.calibrate_side, PoseSide::kLeft);
   EXPECT_EQ(back.background_frames, 0);
   EXPECT_TRUE(back.arm_length_path.empty());
   // Every setting, to the last bit.

@@ -27,7 +27,8 @@ struct AngleRow {
   double upper_cy = kNaN;
   double fore_cx = kNaN;
   double fore_cy = kNaN;
-  std::string file;  // marker engine only: the image's file name
+  std::string file;          // marker engine only: the image's file name
+  double confidence = kNaN;  // optional trailing column, 0..1 (pose engine)
   bool ok() const { return status == RowStatus::kOk; }
 };
 
@@ -37,6 +38,7 @@ using AngleMeta = std::vector<std::pair<std::string, std::string>>;
 struct AngleFile {
   AngleMeta meta;
   bool has_file_column = false;
+  bool has_confidence_column = false;
   bool complete = true;  // false when the header says complete=no (an interrupted run)
   std::vector<AngleRow> rows;
 
@@ -58,7 +60,7 @@ Status ReadAngleFile(const std::string& path, AngleFile* out);
 // Formats a number the way the file stores it: '.' decimals whatever the locale, "nan" for NaN.
 std::string FormatNumber(double value, int decimals);
 // Formats one data row (no trailing newline).
-std::string FormatAngleRow(const AngleRow& row, bool file_column);
+std::string FormatAngleRow(const AngleRow& row, bool file_column, bool confidence_column = false);
 // The "# k=v k=v" meta line; spaces and '%' in values are percent-encoded.
 std::string FormatMetaLine(const AngleMeta& meta);
 
@@ -71,7 +73,9 @@ class AngleFileWriter {
   AngleFileWriter(const AngleFileWriter&) = delete;
   AngleFileWriter& operator=(const AngleFileWriter&) = delete;
 
-  Status Open(const std::string& path, const AngleMeta& meta, bool file_column);
+  // confidence_column: the optional trailing confidence column after the contract's columns.
+  Status Open(const std::string& path, const AngleMeta& meta, bool file_column,
+              bool confidence_column = false);
   Status Write(const AngleRow& row);
   // complete=false rewrites the header with complete=no (rows so far are kept).
   Status Commit(bool complete = true);

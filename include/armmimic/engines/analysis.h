@@ -17,6 +17,7 @@
 #include "armmimic/core/video_source.h"
 #include "armmimic/engines/engine_options.h"
 #include "armmimic/engines/measurement.h"
+#include "armmimic/engines/pose_options.h"
 
 namespace armmimic {
 
@@ -32,7 +33,12 @@ struct AnalysisOptions {
   std::optional<cv::Point2d> elbow_px;     // --elbow X,Y (lk, with --shoulder and --wrist)
   std::optional<cv::Point2d> wrist_px;     // --wrist X,Y
   std::optional<cv::Rect> roi;             // --roi X,Y,W,H
-  Status Check() const;                    // messages name the flag
+  std::string model_dir;                   // --model DIR: the pose model's folder
+  // --auto-calibrate: the shoulder, elbow and wrist in frame `start` come from the pose network
+  // (tracking engines), as if given with --shoulder/--elbow/--wrist.
+  bool auto_calibrate = false;
+  PoseSide calibrate_side = PoseSide::kAuto;  // --side with --auto-calibrate: the person's arm
+  Status Check() const;                       // messages name the flag
 };
 
 struct AnalysisCallbacks {

@@ -8,12 +8,13 @@
 #include "armmimic/engines/bgsub_options.h"
 #include "armmimic/engines/lk_options.h"
 #include "armmimic/engines/marker_options.h"
+#include "armmimic/engines/pose_options.h"
 
 namespace armmimic {
 
-enum class EngineKind { kBgsub, kLk, kMarker };
+enum class EngineKind { kBgsub, kLk, kMarker, kPose };
 
-const char* EngineName(EngineKind kind);                        // "bgsub", "lk", "marker"
+const char* EngineName(EngineKind kind);  // "bgsub", "lk", "marker", "pose"
 bool ParseEngineKind(const std::string& name, EngineKind* out);
 
 struct EngineOptions {
@@ -21,6 +22,7 @@ struct EngineOptions {
   BgsubOptions bgsub;
   LkOptions lk;
   MarkerOptions marker;
+  PoseOptions pose;
   Status Check() const;  // checks the chosen engine's options
 };
 

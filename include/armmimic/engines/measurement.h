@@ -22,8 +22,8 @@ struct ArmMeasurement {
   int frame = 0;
   double time_s = 0;
   MeasurementPhase phase = MeasurementPhase::kLost;
-  std::string file;        // marker engine: input image name
-  std::string note;        // why lost, or which rule decided (shown in the GUI)
+  std::string file;  // marker engine: input image name
+  std::string note;  // why lost, or which rule decided (shown in the GUI)
   // A value estimated rather than measured, decided on this frame ("arm length 96 px from the
   // region of interest's height"): reported once through AnalysisCallbacks::on_estimate.
   std::string estimate;
@@ -34,6 +34,7 @@ struct ArmMeasurement {
   double bend_deg = kNaN;
   cv::Point2d upper_com_px{kNaN, kNaN};
   cv::Point2d fore_com_px{kNaN, kNaN};
+  double confidence = kNaN;  // pose: 0..1, the angle file's confidence column
 
   // Overlay (all in full-image pixels).
   std::optional<cv::Point2d> shoulder_px;
@@ -43,10 +44,12 @@ struct ArmMeasurement {
   std::vector<cv::Point> arm_contour;
   std::vector<cv::Point> arm_hull;
   std::optional<cv::Rect> body_box;
-  std::vector<cv::Point2f> upper_features;   // LK
-  std::vector<cv::Point2f> fore_features;    // LK
-  std::vector<cv::Rect> candidate_boxes;     // marker: components that passed the threshold
-  std::vector<cv::Point2d> marker_centres;   // marker: upper first, then the two lower ones
+  std::vector<cv::Point2f> upper_features;  // LK
+  std::vector<cv::Point2f> fore_features;   // LK
+  std::vector<cv::Rect> candidate_boxes;    // marker: components that passed the threshold
+  std::vector<cv::Point2d> marker_centres;  // marker: upper first, then the two lower ones
+  std::vector<cv::Point2d> pose_keypoints;  // pose: the 17 keypoints (pose.h order)
+  std::vector<double> pose_scores;          // pose: their scores, 0..1
 
   bool row() const { return phase != MeasurementPhase::kSetup; }
   AngleRow ToRow() const;

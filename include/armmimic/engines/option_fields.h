@@ -14,6 +14,7 @@
 #include "armmimic/engines/engine_options.h"
 #include "armmimic/engines/lk_options.h"
 #include "armmimic/engines/marker_options.h"
+#include "armmimic/engines/pose_options.h"
 
 namespace armmimic {
 
@@ -47,6 +48,7 @@ struct OptionField {
 const std::vector<OptionField<BgsubOptions>>& BgsubOptionFields();
 const std::vector<OptionField<LkOptions>>& LkOptionFields();
 const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields();
+const std::vector<OptionField<PoseOptions>>& PoseOptionFields();
 
 // The field named `key` in `fields`, or nullptr.
 template <typename Options>

@@ -13,7 +13,8 @@
 namespace armmimic {
 
 // The recorded inputs (each only when used: background, background_frames, arm_length,
-// reference, shoulder, elbow, wrist, roi) followed by every ENGINE.KEY=VALUE of the engine.
+// reference, shoulder, elbow, wrist, model, auto_calibrate, calibrate_side, roi) followed by
+// every ENGINE.KEY=VALUE of the engine.
 AngleMeta RunRecordMeta(const AnalysisOptions& options);
 
 // Reads a recorded run from `meta` into `options`: the engine, each ENGINE.KEY setting over the
