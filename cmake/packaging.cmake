@@ -54,10 +54,10 @@ set(CPACK_PACKAGE_VENDOR armmimic)
 set(CPACK_PACKAGE_CONTACT "armmimic maintainers")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${PROJECT_DESCRIPTION}")
 set(CPACK_PACKAGE_DESCRIPTION
-    "armmimic turns video of a human arm into arm angles with one of three classical vision\n"
-    "engines (marker, background subtraction, Lucas-Kanade) and turns those angles into safe\n"
-    "VAL II commands for a Unimation PUMA 760, streamed over RS-232 or to the built-in\n"
-    "controller emulator. It contains the Qt desktop application armmimic and its\n"
+    "armmimic turns video of a human arm into arm angles with classical vision engines\n"
+    "(marker, background subtraction, Lucas-Kanade) or a pose network, and turns those angles\n"
+    "into safe VAL II commands for a Unimation PUMA 760, streamed over RS-232 or to the\n"
+    "built-in controller emulator. It contains the Qt desktop application armmimic and its\n"
     "command-line twin armmimic-cli.")
 string(REPLACE ";" "" CPACK_PACKAGE_DESCRIPTION "${CPACK_PACKAGE_DESCRIPTION}")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
