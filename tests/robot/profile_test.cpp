@@ -106,7 +106,9 @@ TEST(Profile, ReadsAByteOrderMarkAndCrlfLineEnds) {
     ASSERT_TRUE(st.ok()) << st.message();
     EXPECT_EQ(p.motion_timeout_s, 40);
     EXPECT_EQ(p.mode, SendMode::kProgram);
-    if (first[0] == 'p') EXPECT_EQ(p.prompt_timeout_s, 2.5);
+    if (first[0] == 'p') {
+      EXPECT_EQ(p.prompt_timeout_s, 2.5);
+    }
   }
 }
 

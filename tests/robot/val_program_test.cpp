@@ -326,7 +326,9 @@ TEST(ValProgram, ReadsAByteOrderMarkAndCrlfLineEnds) {
     ASSERT_TRUE(st.ok()) << st.message();
     EXPECT_EQ(p.lines.back().text, "DO MOVE #PPOINT(0,-90,0,0,0,0)");
     EXPECT_DOUBLE_EQ(p.lines.back().time_s, 0.5);
-    if (first[0] == 'S') EXPECT_EQ(p.lines[0].text, "SPEED 50");
+    if (first[0] == 'S') {
+      EXPECT_EQ(p.lines[0].text, "SPEED 50");
+    }
   }
 }
 
