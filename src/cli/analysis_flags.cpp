@@ -6,10 +6,8 @@
 #include "armmimic/engines/option_fields.h"
 
 namespace armmimic::cli {
-namespace {
 
-// The flags each engine uses; any other engine flag given is a usage error.
-const std::map<std::string, std::set<EngineKind>>& EngineFlags() {
+const std::map<std::string, std::set<EngineKind>>& AnalysisFlags::EngineFlags() {
   static const std::map<std::string, std::set<EngineKind>> flags = {
       {"--background", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--background-frames", {EngineKind::kBgsub, EngineKind::kLk}},
@@ -32,8 +30,6 @@ const std::map<std::string, std::set<EngineKind>>& EngineFlags() {
   };
   return flags;
 }
-
-}  // namespace
 
 std::string AnalysisFlags::ParamList() {
   std::string out = "\nEvery engine parameter, for --param, with its default:\n";

@@ -3,7 +3,9 @@
 // and the same messages, so both commands analyse a video the same way.
 #pragma once
 
+#include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,8 @@ class AnalysisFlags {
 
   // The --param keys with their defaults, indented, for a help text.
   static std::string ParamList();
+  // The flags each engine uses; any other engine flag given is a usage error.
+  static const std::map<std::string, std::set<EngineKind>>& EngineFlags();
 
  private:
   AnalysisOptions* o_;

@@ -5,10 +5,12 @@
 #include "args.h"
 #include "armmimic/core/angle_file.h"
 #include "armmimic/core/atomic_file.h"
+#include "armmimic/core/same_file.h"
 #include "armmimic/robot/planner.h"
 #include "armmimic/robot/profile.h"
 #include "armmimic/robot/val_program.h"
 #include "command.h"
+#include "interrupt.h"
 #include "planner_flags.h"
 
 namespace armmimic::cli {
@@ -63,6 +65,14 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   if (auto code = p.Parse(args)) return *code;
 
   if (output.empty()) return p.UsageError("-o/--output: the VAL program to write is required");
+  {
+    std::vector<NamedPath> inputs = {{"ANGLES.tsv", input[0]}};
+    if (!profile_path.empty()) inputs.push_back({"--profile", profile_path});
+    if (Status s = CheckOutputsAreNotInputs(inputs, {{"-o", output}}); !s.ok()) {
+      return p.UsageError(s.message());
+    }
+  }
+  InterruptGuard guard;
   if (auto code = flags.ParseTexts(p)) return *code;
   if (gap == "hold") {
     o.gap = robot::GapMode::kHold;
@@ -122,6 +132,10 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   std::string text;
   if (Status s = robot::FormatValProgram(trajectory, profile, o.limits, header, &text); !s.ok()) {
     std::cerr << "armmimic-cli plan: " << output << ": " << s.message() << "\n";
+    return kExitFailure;
+  }
+  if (InterruptGuard::interrupted()) {
+    std::cerr << "plan: " << InterruptGuard::Message() << "; " << output << " not written\n";
     return kExitFailure;
   }
   if (Status s = WriteFileAtomically(output, text); !s.ok()) {

@@ -1,18 +1,15 @@
 // armmimic-cli puma-sim [--link PATH]: the VAL controller emulator on a pseudo-terminal.
 #include <chrono>
-#include <csignal>
 #include <iostream>
 #include <thread>
 
 #include "args.h"
 #include "armmimic/sim/pty_server.h"
 #include "command.h"
+#include "interrupt.h"
 
 namespace armmimic::cli {
 namespace {
-
-volatile std::sig_atomic_t g_stop = 0;
-void OnStopSignal(int) { g_stop = 1; }
 
 int RunPumaSim(const std::vector<std::string>& args, const GlobalOptions& global) {
   sim::EmulatorOptions options;
@@ -27,8 +24,8 @@ int RunPumaSim(const std::vector<std::string>& args, const GlobalOptions& global
       "path to connect to (first line of standard output). It echoes, prompts with '.', "
       "takes CR-ended lines of at most 80 characters and interprets SPEED, DO MOVE "
       "#PPOINT(...), DO DRIVE, HERE, WHERE, EDIT/E, EXECUTE and ABORT within the joint "
-      "limits (docs/val-dialect.md). Runs until SIGINT/SIGTERM, then prints the final "
-      "joint angles.");
+      "limits (docs/val-dialect.md). Runs until SIGINT, SIGTERM or SIGHUP, then prints "
+      "the final joint angles.");
   p.String("--link", &link_path, "PATH", "also make PATH a symlink to the device");
   p.String("--log", &log_path, "FILE", "write one line per executed move (seq, joints, command)");
   p.Double("--time-scale", &options.time_scale, "X",
@@ -55,20 +52,19 @@ int RunPumaSim(const std::vector<std::string>& args, const GlobalOptions& global
     if (!s.ok()) return p.UsageError("--limits: " + s.message());
   }
 
+  InterruptGuard guard;  // before the device exists: whoever sees it may signal at once
   sim::PtyServer server(options);
   const Status s = server.Start(link_path, log_path);
   if (!s.ok()) {
     std::cerr << "armmimic-cli puma-sim: " << s.message() << "\n";
     return kExitFailure;
   }
-  std::signal(SIGINT, OnStopSignal);
-  std::signal(SIGTERM, OnStopSignal);
   std::cout << server.device_path() << std::endl;
   if (!global.quiet) {
     std::cerr << "puma-sim: VAL controller emulator on " << server.device_path()
               << (link_path.empty() ? "" : " (" + link_path + ")") << "; Ctrl-C to stop\n";
   }
-  while (!g_stop) {
+  while (!InterruptGuard::interrupted()) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     if (exit_after_idle_s > 0 && server.idle_s() > exit_after_idle_s) break;
   }

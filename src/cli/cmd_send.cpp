@@ -9,20 +9,20 @@
 
 #include "args.h"
 #include "armmimic/core/angle_file.h"
+#include "armmimic/core/same_file.h"
+#include "armmimic/robot/journal.h"
 #include "armmimic/robot/link_protocol.h"
 #include "armmimic/robot/profile.h"
 #include "armmimic/robot/send_session.h"
 #include "armmimic/serial/link_runner.h"
 #include "armmimic/serial/serial_link.h"
 #include "command.h"
+#include "interrupt.h"
 #include "port_flags.h"
 #include "progress.h"
 
 namespace armmimic::cli {
 namespace {
-
-volatile std::sig_atomic_t g_interrupted = 0;
-void OnSignal(int) { g_interrupted = 1; }
 
 struct SendOptions {
   std::vector<std::string> inputs;
@@ -45,7 +45,7 @@ int Fail(const std::string& message) {
 
 std::string Num(double v, int decimals) { return FormatNumber(v, decimals); }
 
-std::string Interrupted() { return g_interrupted ? "interrupted (Ctrl-C)" : ""; }
+std::string Interrupted() { return InterruptGuard::Message(); }
 
 // --dry-run: every line that would be sent, with its planned time; no port.
 int PrintDryRun(const robot::SendSession& session, const GlobalOptions& global) {
@@ -145,6 +145,14 @@ std::optional<int> ParseSend(const std::vector<std::string>& args, SendOptions* 
     const Status l = o->limits.Check();
     if (!l.ok()) return p.UsageError("--limits: " + l.message());
   }
+  if (!o->dry_run) {
+    // The journal is send's one output: it may not be the program or the profile.
+    std::vector<NamedPath> inputs = {{"INPUT", o->inputs[0]}};
+    if (!o->profile_path.empty()) inputs.push_back({"--profile", o->profile_path});
+    const Status s = CheckOutputsAreNotInputs(
+        inputs, {{"the journal", robot::SendJournal::PathFor(o->inputs[0])}});
+    if (!s.ok()) return p.UsageError(s.message());
+  }
   return std::nullopt;
 }
 
@@ -185,8 +193,7 @@ int StreamToPort(const SendOptions& o, const robot::ControllerProfile& profile,
   char name[] = "armmimic-cli";
   char* argv[] = {name, nullptr};
   QCoreApplication app(argc, argv);
-  std::signal(SIGINT, OnSignal);
-  std::signal(SIGTERM, OnSignal);
+  InterruptGuard guard;
 
   serial::SerialLink link(robot::LinkSettings::FromProfile(profile));
   {

@@ -3,7 +3,8 @@
 namespace armmimic::cli {
 
 void AddPortFlags(ArgParser& p, serial::PortSettings* port) {
-  p.String("--port", &port->port, "DEVICE", "serial port, e.g. /dev/ttyUSB0 or ttyS0");
+  p.String("--port", &port->port, "DEVICE",
+           "serial port, e.g. /dev/ttyUSB0; a bare name is tried as ./NAME, then /dev/NAME");
   p.Int("--baud", &port->baud, "N", "baud rate (default 9600)", 1, 4000000);
   p.Int("--data-bits", &port->data_bits, "N", "data bits 5..8 (default 8)", 5, 8);
   p.Custom("--parity", "P", "none, even or odd (default none)",

@@ -13,6 +13,7 @@
 #include "armmimic/engines/engine.h"
 #include "armmimic/engines/option_fields.h"
 #include "armmimic/engines/pose.h"
+#include "armmimic/engines/run_record.h"
 #include "pose_prepare.h"
 
 namespace armmimic {
@@ -209,9 +210,9 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
                     {"height", std::to_string(info.size.height)}};
   if (arm_engine) meta.emplace_back("start", std::to_string(options.start));
   for (auto& kv : engine->Describe()) meta.push_back(std::move(kv));
-  // Every parameter changed from its default, under the name `analyze --param` takes, so the
-  // file says how to make it again.
-  for (auto& kv : ChangedEngineOptions(options.engine)) meta.push_back(std::move(kv));
+  // The inputs besides the video and every engine parameter, under the name `analyze --param`
+  // takes, so the file says how to make it again (`analyze --params-from`).
+  for (auto& kv : RunRecordMeta(options)) meta.push_back(std::move(kv));
   summary->meta = meta;
   if (on_ready) {
     st = on_ready(meta);

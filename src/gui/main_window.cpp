@@ -25,6 +25,7 @@
 #include "recent_files.h"
 #include "robot_link.h"
 #include "robot_panel.h"
+#include "session_inputs.h"
 #include "shortcut_guard.h"
 #include "status_line.h"
 #include "ui_main_window.h"
@@ -79,6 +80,7 @@ MainWindow::MainWindow(QWidget* parent)
   wireFileActions();
   wireAnalysis();
   wireMimic();
+  robot_->setInputFiles([this] { return sessionInputs(); });
   restoreSettings();
   updateStatus();
 }
@@ -293,7 +295,18 @@ bool MainWindow::startAnalysis() {
   return job_->start(options, live_);
 }
 
+std::vector<NamedPath> MainWindow::sessionInputs() const {
+  return SessionInputs(player_->isOpen() ? player_->inputs() : QStringList(), settings_->options());
+}
+
+bool MainWindow::refuseInput(const QString& what, const QString& path) {
+  const QString refusal = SameFileRefusal(sessionInputs(), what, path);
+  if (!refusal.isEmpty()) log_->error(refusal);
+  return !refusal.isEmpty();
+}
+
 bool MainWindow::exportAngles(const QString& path) {
+  if (refuseInput(tr("the angle file"), path)) return false;
   const QString error = job_->exportResult(path);
   if (!error.isEmpty()) {
     log_->error(error);
@@ -306,6 +319,7 @@ bool MainWindow::exportAngles(const QString& path) {
 }
 
 bool MainWindow::saveFrame(const QString& path) {
+  if (refuseInput(tr("the frame image"), path)) return false;
   const QString error = view_->saveWithOverlay(path);
   if (!error.isEmpty()) {
     log_->error(error);
@@ -319,6 +333,13 @@ bool MainWindow::saveFrame(const QString& path) {
 bool MainWindow::estimateBackground(int frames, const QString& path) {
   if (!player_->isOpen() || player_->isLive()) {
     log_->error(tr("Open a video first: the background is the mean of its first frames"));
+    return false;
+  }
+  // The estimate reads only the video; it may replace the background image chosen before.
+  const QString refusal =
+      SameFileRefusal(SessionInputs(player_->inputs(), {}), tr("the background image"), path);
+  if (!refusal.isEmpty()) {
+    log_->error(refusal);
     return false;
   }
   return job_->startBackground(player_->inputs(), 0, frames, path);

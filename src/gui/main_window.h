@@ -12,6 +12,7 @@
 #include <QTimer>
 
 #include "armmimic/core/angle_csv.h"
+#include "armmimic/core/same_file.h"
 #include "result_store.h"
 
 class QDockWidget;
@@ -95,6 +96,10 @@ class MainWindow : public QMainWindow {
   void showFrame(int index, const QImage& image, double time_s);
   void restoreSettings();
   void saveSettings() const;
+  // The files the session reads, which no export may replace.
+  std::vector<NamedPath> sessionInputs() const;
+  // Logs why `path` may not be written as `what`; true when refused.
+  bool refuseInput(const QString& what, const QString& path);
 
   std::unique_ptr<Ui::MainWindowForm> ui_;
   AppActions* actions_;

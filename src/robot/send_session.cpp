@@ -25,6 +25,7 @@ bool IsAngleFile(const std::string& path) {
   std::ifstream in(path);
   std::string first;
   std::getline(in, first);
+  StripUtf8Bom(&first);
   return first.rfind(kAngleFileMagic, 0) == 0;
 }
 

@@ -200,6 +200,7 @@ Status ParseValProgram(std::istream& in, const std::string& source_name, int max
   int pending_line = 0;
   while (std::getline(in, raw)) {
     ++line_no;
+    if (line_no == 1) StripUtf8Bom(&raw);
     const std::string where = source_name + ":" + std::to_string(line_no) + ": ";
     if (!raw.empty() && raw.back() == '\r') raw.pop_back();
     for (unsigned char c : raw) {
