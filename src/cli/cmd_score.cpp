@@ -5,8 +5,10 @@
 #include "args.h"
 #include "armmimic/core/angle_file.h"
 #include "armmimic/core/image_io.h"
+#include "armmimic/core/same_file.h"
 #include "armmimic/synth/score.h"
 #include "command.h"
+#include "interrupt.h"
 
 namespace armmimic::cli {
 namespace {
@@ -45,6 +47,12 @@ int RunScore(const std::vector<std::string>& args, const GlobalOptions& global) 
     }
     size = {w, h};
   }
+  if (!plot.empty()) {
+    const Status same = CheckOutputsAreNotInputs(
+        {{"TRUTH.tsv", files[0]}, {"ANGLES.tsv", files[1]}}, {{"--plot", plot}});
+    if (!same) return p.UsageError(same.message());
+  }
+  InterruptGuard guard;
   synth::TruthFile truth;
   Status st = synth::ReadTruthFile(files[0], &truth);
   if (!st.ok()) {
@@ -63,6 +71,10 @@ int RunScore(const std::vector<std::string>& args, const GlobalOptions& global) 
   if (report.summary.matched_frames == 0 && !global.quiet) {
     std::cerr << "armmimic-cli score: warning: no frame of " << files[1]
               << " matches a truth frame with angles in " << files[0] << "\n";
+  }
+  if (!plot.empty() && InterruptGuard::interrupted()) {
+    std::cerr << "score: " << InterruptGuard::Message() << "; " << plot << " not written\n";
+    return kExitFailure;
   }
   if (!plot.empty()) {
     st = WriteImageAtomically(plot, synth::PlotScore(report, size));

@@ -4,6 +4,7 @@
 #include "args.h"
 #include "armmimic/synth/arm_scene.h"
 #include "armmimic/synth/random_arm_scene.h"
+#include "interrupt.h"
 #include "progress.h"
 #include "synth_commands.h"
 
@@ -28,11 +29,17 @@ const char* const kDrawnFlags[] = {"--fps",
 int WriteRandom(const synth::RandomArmSceneOptions& o, const std::string& outdir,
                 const GlobalOptions& global) {
   const synth::RandomArmScene scene(o);
+  InterruptGuard guard;
   ProgressBar bar("synth arm", scene.frame_count(), global.ShowProgress());
-  const Status st = synth::WriteSceneFolder(scene, {"MJPG", scene.params().jpeg_quality},
-                                            synth::RandomSceneMeta(scene), outdir,
-                                            [&bar](int done, int) { bar.Update(done); });
+  const Status st = synth::WriteSceneFolder(
+      scene, {"MJPG", scene.params().jpeg_quality}, synth::RandomSceneMeta(scene), outdir,
+      [&bar](int done, int) { bar.Update(done); }, InterruptGuard::flag());
   bar.Finish();
+  if (!st.ok() && InterruptGuard::interrupted()) {
+    std::cerr << "synth arm: " << InterruptGuard::Message() << "; " << outdir
+              << " unchanged (the scene is written whole or not at all)\n";
+    return kExitFailure;
+  }
   if (!st.ok()) {
     std::cerr << "armmimic-cli synth arm: " << st.message() << "\n";
     return kExitFailure;
@@ -162,9 +169,16 @@ int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& globa
     return p.UsageError(flag + ": " + m);
   }
 
+  InterruptGuard guard;
   ProgressBar bar("synth arm", o.frame_count(), global.ShowProgress());
-  const Status st = synth::WriteArmScene(o, outdir[0], [&bar](int done, int) { bar.Update(done); });
+  const Status st = synth::WriteArmScene(
+      o, outdir[0], [&bar](int done, int) { bar.Update(done); }, InterruptGuard::flag());
   bar.Finish();
+  if (!st.ok() && InterruptGuard::interrupted()) {
+    std::cerr << "synth arm: " << InterruptGuard::Message() << "; " << outdir[0]
+              << " unchanged (the scene is written whole or not at all)\n";
+    return kExitFailure;
+  }
   if (!st.ok()) {
     std::cerr << "armmimic-cli synth arm: " << st.message() << "\n";
     return kExitFailure;

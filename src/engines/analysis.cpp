@@ -8,10 +8,12 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "armmimic/core/frame_pacer.h"
 #include "armmimic/core/image_io.h"
 #include "armmimic/engines/engine.h"
 #include "armmimic/engines/option_fields.h"
 #include "armmimic/engines/pose.h"
+#include "armmimic/engines/run_record.h"
 #include "pose_prepare.h"
 
 namespace armmimic {
@@ -127,6 +129,7 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
   if (!source) return finish(open_status);
   const VideoInfo info = source->info();
   summary->video = info;
+  if (callbacks.on_open) callbacks.on_open(info);
   const EngineKind kind = given.engine.kind;
   const bool arm_engine = kind != EngineKind::kMarker;
 
@@ -207,9 +210,9 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
                     {"height", std::to_string(info.size.height)}};
   if (arm_engine) meta.emplace_back("start", std::to_string(options.start));
   for (auto& kv : engine->Describe()) meta.push_back(std::move(kv));
-  // Every parameter changed from its default, under the name `analyze --param` takes, so the
-  // file says how to make it again.
-  for (auto& kv : ChangedEngineOptions(options.engine)) meta.push_back(std::move(kv));
+  // The inputs besides the video and every engine parameter, under the name `analyze --param`
+  // takes, so the file says how to make it again (`analyze --params-from`).
+  for (auto& kv : RunRecordMeta(options)) meta.push_back(std::move(kv));
   summary->meta = meta;
   if (on_ready) {
     st = on_ready(meta);
@@ -240,6 +243,7 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
   const int total =
       info.frame_count >= 0 ? info.frame_count - (arm_engine ? options.start : 0) : -1;
   Phase(callbacks, "analysis");
+  FramePacer pacer(options.realtime && info.kind == SourceKind::kVideo ? info.fps : 0);
   Frame frame;
   int done = 0;
   int setup = 0;
@@ -253,6 +257,8 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
       if (!read_status) return finish(read_status);
       break;
     }
+    const auto captured = pacer.Wait(frame, callbacks.cancel);
+    if (callbacks.on_frame) callbacks.on_frame(frame, captured);
     const ArmMeasurement m = engine->Process(frame);
     summary->last_frame = frame.index;
     ++done;

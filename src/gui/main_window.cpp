@@ -18,11 +18,14 @@
 #include "engine_settings_panel.h"
 #include "icons.h"
 #include "log_view.h"
+#include "mimic_controller.h"
+#include "mimic_panel.h"
 #include "playback_bar.h"
 #include "prompts.h"
 #include "recent_files.h"
 #include "robot_link.h"
 #include "robot_panel.h"
+#include "session_inputs.h"
 #include "shortcut_guard.h"
 #include "status_line.h"
 #include "ui_main_window.h"
@@ -45,6 +48,7 @@ MainWindow::MainWindow(QWidget* parent)
   plot_ = angles_->plot();
   log_ = ui_->logView;
   robot_ = ui_->robotPanel;
+  mimic_ = ui_->mimicPanel;  // the live view scrolls, never making the dock column taller
   status_ = new StatusLine(statusBar());
   log_dock_ = ui_->logDock;
   setWindowIcon(MakeIcon(IconKind::kApp));
@@ -55,9 +59,11 @@ MainWindow::MainWindow(QWidget* parent)
 
   const QList<QAction*> toggles = {
       ui_->analysisDock->toggleViewAction(), ui_->plotDock->toggleViewAction(),
-      ui_->robotDock->toggleViewAction(), ui_->logDock->toggleViewAction()};
+      ui_->robotDock->toggleViewAction(), ui_->mimicDock->toggleViewAction(),
+      ui_->logDock->toggleViewAction()};
   tabifyDockWidget(ui_->plotDock, ui_->logDock);
   tabifyDockWidget(ui_->analysisDock, ui_->robotDock);
+  tabifyDockWidget(ui_->robotDock, ui_->mimicDock);
   ui_->analysisDock->raise();
   resizeDocks({ui_->plotDock}, {260}, Qt::Vertical);
   ui_->plotDock->raise();
@@ -73,6 +79,8 @@ MainWindow::MainWindow(QWidget* parent)
   wireActions();
   wireFileActions();
   wireAnalysis();
+  wireMimic();
+  robot_->setInputFiles([this] { return sessionInputs(); });
   restoreSettings();
   updateStatus();
 }
@@ -235,6 +243,26 @@ void MainWindow::wireAnalysis() {
   });
 }
 
+void MainWindow::wireMimic() {
+  mimic_->setSources(
+      [this] {
+        AnalysisOptions options = settings_->options();
+        options.inputs.clear();
+        for (const QString& s : player_->inputs()) options.inputs.push_back(s.toStdString());
+        if (player_->isLive()) player_->close();  // the live run reads the camera itself
+        return options;
+      },
+      [this] { return robot_->plannerOptions(); }, robot_->link());
+  // The live frames fill the big view too while the robot follows.
+  connect(mimic_->controller(), &MimicController::frameReady, this,
+          [this](const QImage& image, int index, const ArmMeasurement& m) {
+            view_->setFrame(image, index, -1);
+            view_->setMeasurement(m);
+          });
+  connect(mimic_, &MimicPanel::message, log_, &LogView::info);
+  connect(mimic_, &MimicPanel::errorOccurred, log_, &LogView::error);
+}
+
 void MainWindow::setBusy(bool busy) {
   status_->setBusy(busy);
   actions_->analyze->setEnabled(!busy);
@@ -267,7 +295,18 @@ bool MainWindow::startAnalysis() {
   return job_->start(options, live_);
 }
 
+std::vector<NamedPath> MainWindow::sessionInputs() const {
+  return SessionInputs(player_->isOpen() ? player_->inputs() : QStringList(), settings_->options());
+}
+
+bool MainWindow::refuseInput(const QString& what, const QString& path) {
+  const QString refusal = SameFileRefusal(sessionInputs(), what, path);
+  if (!refusal.isEmpty()) log_->error(refusal);
+  return !refusal.isEmpty();
+}
+
 bool MainWindow::exportAngles(const QString& path) {
+  if (refuseInput(tr("the angle file"), path)) return false;
   const QString error = job_->exportResult(path);
   if (!error.isEmpty()) {
     log_->error(error);
@@ -280,6 +319,7 @@ bool MainWindow::exportAngles(const QString& path) {
 }
 
 bool MainWindow::saveFrame(const QString& path) {
+  if (refuseInput(tr("the frame image"), path)) return false;
   const QString error = view_->saveWithOverlay(path);
   if (!error.isEmpty()) {
     log_->error(error);
@@ -293,6 +333,13 @@ bool MainWindow::saveFrame(const QString& path) {
 bool MainWindow::estimateBackground(int frames, const QString& path) {
   if (!player_->isOpen() || player_->isLive()) {
     log_->error(tr("Open a video first: the background is the mean of its first frames"));
+    return false;
+  }
+  // The estimate reads only the video; it may replace the background image chosen before.
+  const QString refusal =
+      SameFileRefusal(SessionInputs(player_->inputs(), {}), tr("the background image"), path);
+  if (!refusal.isEmpty()) {
+    log_->error(refusal);
     return false;
   }
   return job_->startBackground(player_->inputs(), 0, frames, path);

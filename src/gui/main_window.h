@@ -12,6 +12,7 @@
 #include <QTimer>
 
 #include "armmimic/core/angle_csv.h"
+#include "armmimic/core/same_file.h"
 #include "result_store.h"
 
 class QDockWidget;
@@ -27,6 +28,7 @@ class AnglePlot;
 class AppActions;
 class EngineSettingsPanel;
 class LogView;
+class MimicPanel;
 class PlaybackBar;
 class RecentFiles;
 class RobotPanel;
@@ -67,6 +69,7 @@ class MainWindow : public QMainWindow {
   AnglePanel* anglePanel() const { return angles_; }
   LogView* log() const { return log_; }
   RobotPanel* robotPanel() const { return robot_; }
+  MimicPanel* mimicPanel() const { return mimic_; }
   StatusLine* statusLine() const { return status_; }
   AppActions* actions() const { return actions_; }
   const ResultStore& results() const { return results_; }
@@ -86,12 +89,17 @@ class MainWindow : public QMainWindow {
   bool takePendingResults();
   void showResults(const ResultStore& results, const QString& angle_path);
   void wireAnalysis();
+  void wireMimic();
   void refreshViews();
   void updateStatus();
   void setBusy(bool busy);
   void showFrame(int index, const QImage& image, double time_s);
   void restoreSettings();
   void saveSettings() const;
+  // The files the session reads, which no export may replace.
+  std::vector<NamedPath> sessionInputs() const;
+  // Logs why `path` may not be written as `what`; true when refused.
+  bool refuseInput(const QString& what, const QString& path);
 
   std::unique_ptr<Ui::MainWindowForm> ui_;
   AppActions* actions_;
@@ -104,6 +112,7 @@ class MainWindow : public QMainWindow {
   AnglePlot* plot_;
   LogView* log_;
   RobotPanel* robot_;
+  MimicPanel* mimic_ = nullptr;
   RecentFiles* recent_ = nullptr;
   QDockWidget* log_dock_ = nullptr;
   ResultStore results_;

@@ -200,6 +200,7 @@ bool MainWindow::openSession(const QString& path) {
 }
 
 bool MainWindow::saveSession(const QString& path) {
+  if (refuseInput(tr("the session file"), path)) return false;
   Session s;
   if (player_->isOpen() && !player_->isLive()) s.inputs = player_->inputs();
   s.options = settings_->options();
@@ -220,6 +221,7 @@ bool MainWindow::saveSession(const QString& path) {
 }
 
 bool MainWindow::exportCsv(const QString& path, CsvStyle style, bool visible_only) {
+  if (refuseInput(tr("the CSV file"), path)) return false;
   std::vector<AngleRow> rows;
   if (visible_only) {
     rows = plot_->visibleRows();

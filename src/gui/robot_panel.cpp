@@ -462,8 +462,15 @@ void RobotPanel::showPose() {
 }
 
 bool RobotPanel::exportVal(const QString& path) {
+  std::vector<NamedPath> inputs = inputs_ ? inputs_() : std::vector<NamedPath>();
+  if (!plan_.angle_path().empty()) inputs.push_back({"the angle file", plan_.angle_path()});
+  Status st = CheckOutputsAreNotInputs(inputs, {{"the VAL program", path.toStdString()}});
+  if (!st) {
+    emit errorOccurred(QString::fromStdString(st.message()));
+    return false;
+  }
   std::string text;
-  Status st = plan_.ValText(profile_, &text);
+  st = plan_.ValText(profile_, &text);
   if (st) st = WriteFileAtomically(path.toStdString(), text);
   if (!st) {
     emit errorOccurred(QString::fromStdString(st.message()));

@@ -9,7 +9,10 @@
 
 #include <QTimer>
 #include <QWidget>
+#include <functional>
+#include <vector>
 
+#include "armmimic/core/same_file.h"
 #include "armmimic/robot/planner.h"
 #include "armmimic/robot/profile.h"
 #include "robot_plan.h"
@@ -52,7 +55,12 @@ class RobotPanel : public QWidget {
   void load(QSettings& settings);
 
   bool replan();
+  // Refuses (errorOccurred) a path that is the angle file or one of `inputs_` files.
   bool exportVal(const QString& path);
+  // The session's files (video, images), which exportVal never replaces.
+  void setInputFiles(std::function<std::vector<NamedPath>()> inputs) {
+    inputs_ = std::move(inputs);
+  }
   bool startSimulator(double time_scale);
   bool connectTo(const QString& device);
   // Sends the plan. `confirmed` false asks the operator first (showing the joint ranges).
@@ -90,6 +98,7 @@ class RobotPanel : public QWidget {
 
   std::unique_ptr<Ui::RobotPanelForm> ui_;  // ui/robot_panel.ui
   RobotPlan plan_;
+  std::function<std::vector<NamedPath>()> inputs_;
   robot::ControllerProfile profile_;
   RobotLink* link_;
   SimController* sim_;

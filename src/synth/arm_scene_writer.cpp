@@ -33,7 +33,8 @@ class TempGuard {
 }  // namespace
 
 Status WriteSceneFolder(const ArmSceneSource& scene, const SceneVideo& video, const AngleMeta& meta,
-                        const std::string& outdir, const std::function<void(int, int)>& progress) {
+                        const std::string& outdir, const std::function<void(int, int)>& progress,
+                        const std::atomic<bool>* cancel) {
   std::error_code ec;
   std::filesystem::create_directories(outdir, ec);
   if (ec || !std::filesystem::is_directory(outdir)) {
@@ -75,6 +76,10 @@ Status WriteSceneFolder(const ArmSceneSource& scene, const SceneVideo& video, co
     }
     const int n = scene.frame_count();
     for (int f = 0; f < n; ++f) {
+      if (cancel && cancel->load()) {
+        return Status::Error(outdir + ": cancelled after " + std::to_string(f) +
+                             " frames; nothing written");
+      }
       writer.write(scene.Render(f));
       if (progress) progress(f + 1, n);
     }
@@ -103,7 +108,8 @@ Status WriteSceneFolder(const ArmSceneSource& scene, const SceneVideo& video, co
 }
 
 Status WriteArmScene(const ArmSceneOptions& options, const std::string& outdir,
-                     const std::function<void(int, int)>& progress) {
+                     const std::function<void(int, int)>& progress,
+                     const std::atomic<bool>* cancel) {
   const Status st = options.Check();
   if (!st.ok()) return st;
   const ArmSceneRenderer renderer(options);
@@ -125,7 +131,8 @@ Status WriteArmScene(const ArmSceneOptions& options, const std::string& outdir,
                           {"head_motion", options.head_motion ? "yes" : "no"},
                           {"upper_length_px", Num(renderer.upper_length_px(), 2)},
                           {"fore_length_px", Num(renderer.fore_length_px(), 2)}};
-  return WriteSceneFolder(renderer, {options.codec, options.jpeg_quality}, meta, outdir, progress);
+  return WriteSceneFolder(renderer, {options.codec, options.jpeg_quality}, meta, outdir, progress,
+                          cancel);
 }
 
 }  // namespace armmimic::synth

@@ -73,12 +73,13 @@ AngleMeta RandomSceneMeta(const RandomArmScene& scene) {
 }
 
 Status WriteRandomArmScene(const RandomArmSceneOptions& options, const std::string& outdir,
-                           const std::function<void(int, int)>& progress) {
+                           const std::function<void(int, int)>& progress,
+                           const std::atomic<bool>* cancel) {
   const Status st = options.Check();
   if (!st.ok()) return st;
   const RandomArmScene scene(options);
   return WriteSceneFolder(scene, {"MJPG", scene.params().jpeg_quality}, RandomSceneMeta(scene),
-                          outdir, progress);
+                          outdir, progress, cancel);
 }
 
 }  // namespace armmimic::synth

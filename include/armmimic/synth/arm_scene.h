@@ -4,6 +4,7 @@
 // without writing a video; WriteArmScene() also writes the scene to a folder.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -85,8 +86,10 @@ class ArmSceneRenderer : public ArmSceneSource {
 
 // Writes scene.avi, armlength.png, background.png (the empty scene) and truth.tsv into `outdir`
 // (created if missing). Every file appears complete or not at all. `progress(done, total)` is
-// called after each video frame (may be empty).
+// called after each video frame (may be empty). When `cancel` becomes true the video is
+// dropped and nothing in `outdir` changes (the result is an error saying so).
 Status WriteArmScene(const ArmSceneOptions& options, const std::string& outdir,
-                     const std::function<void(int, int)>& progress);
+                     const std::function<void(int, int)>& progress,
+                     const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace armmimic::synth

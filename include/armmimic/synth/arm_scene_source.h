@@ -6,6 +6,8 @@
 // the person standing with both arms hanging, and the N frames after that one arm moving.
 #pragma once
 
+#include <atomic>
+
 #include <functional>
 #include <string>
 
@@ -76,8 +78,10 @@ struct SceneVideo {
 // Writes scene.avi, armlength.png, background.png (the empty scene) and truth.tsv (with `meta`
 // as its meta line) into `outdir` (created if missing). Every file appears complete or not at
 // all; the video is renamed into place last. `progress(done, total)` is called after each video
-// frame (may be empty).
+// frame (may be empty). When `cancel` becomes true the video is dropped and nothing in `outdir`
+// changes (the result is an error saying so).
 Status WriteSceneFolder(const ArmSceneSource& scene, const SceneVideo& video, const AngleMeta& meta,
-                        const std::string& outdir, const std::function<void(int, int)>& progress);
+                        const std::string& outdir, const std::function<void(int, int)>& progress,
+                        const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace armmimic::synth

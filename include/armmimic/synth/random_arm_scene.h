@@ -9,6 +9,8 @@
 // draws; docs/accuracy.md the seed ranges for tuning and for held-out measurements.
 #pragma once
 
+#include <atomic>
+
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -140,6 +142,7 @@ AngleMeta RandomSceneMeta(const RandomArmScene& scene);
 
 // Writes the scene folder (see WriteSceneFolder): scene.avi is MJPG at params().jpeg_quality.
 Status WriteRandomArmScene(const RandomArmSceneOptions& options, const std::string& outdir,
-                           const std::function<void(int, int)>& progress);
+                           const std::function<void(int, int)>& progress,
+                           const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace armmimic::synth

@@ -6,6 +6,7 @@
 
 #include <QApplication>
 #include <QChart>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
@@ -31,6 +32,8 @@
 #include "csv_export_dialog.h"
 #include "engine_settings_panel.h"
 #include "main_window.h"
+#include "mimic_controller.h"
+#include "mimic_panel.h"
 #include "robot_panel.h"
 #include "sim_controller.h"
 #include "video_player.h"
@@ -201,6 +204,23 @@ int main(int argc, char** argv) {
   Wait([&] { return sent; }, 300000);
   w.player()->seek(200);
   Shot("09-sent");
+
+  // Mimic live (docs/live.md): the sample video paced at its frame rate, the robot following.
+  w.findChild<QDockWidget*>("mimicDock")->raise();
+  w.resizeDocks({w.findChild<QDockWidget*>("mimicDock")}, {760}, Qt::Horizontal);
+  w.resizeDocks({w.findChild<QDockWidget*>("plotDock")}, {200}, Qt::Vertical);
+  armmimic::gui::MimicPanel* mimic = w.mimicPanel();
+  mimic->findChild<QCheckBox*>("mimicConfirm")->setChecked(true);
+  int mimic_commands = 0;
+  QObject::connect(mimic->controller(), &armmimic::gui::MimicController::commandWritten,
+                   [&](const armmimic::robot::JointArray&) { ++mimic_commands; });
+  if (mimic->startMimicking()) {
+    Wait([&] { return mimic_commands >= 8; }, 60000);
+    Shot("13-mimic-live");
+    mimic->stopMimicking();
+    Wait([&] { return !mimic->controller()->running(); }, 60000);
+  }
+  w.findChild<QDockWidget*>("robotDock")->raise();
 
   // File > Capture from camera: a camera number or a stream URL. With no camera 7 attached,
   // the failure is one line in Messages, not a dialog.
