@@ -15,8 +15,12 @@ constexpr int kSeedInterval = 5;      // frames between seedings
 constexpr int kMinPartFeatures = 8;   // fewer on a part: seed at once
 constexpr int kMaxPartFeatures = 40;  // per arm part
 constexpr int kMaxBodyFeatures = 30;
-constexpr double kBodyRadiusShare = 0.8;  // of the upper arm: the body's ring around the shoulder
-constexpr double kOffArmPx = 2;           // beyond the half-width: off the arm
+// The body's features: part of a ring around the shoulder (shares of the upper arm), below the
+// shoulder's height, so clear of the sleeve's cap that rises with the arm and of the head (which
+// nods on its own): the torso, which sways with the shoulder.
+constexpr double kBodyInner = 0.3, kBodyOuter = 1.2;
+constexpr double kBelowShoulder = 0.25;  // of the upper arm: the ring's top, below the shoulder
+constexpr double kOffArmPx = 2;          // beyond the half-width: off the arm
 constexpr int kMinBodyFeatures = 4;
 
 double Median(std::vector<double> v) {
@@ -38,6 +42,12 @@ double DistanceToSegment(const cv::Point2d& p, const cv::Point2d& a, const cv::P
 cv::Point2d HandEnd(const arm::ArmJoints& j, const arm::ArmShape& shape) {
   const double fl = cv::norm(j.wrist - j.elbow);
   return fl > 0 ? j.wrist + shape.hand_px / fl * (j.wrist - j.elbow) : j.wrist;
+}
+
+bool OnBody(const cv::Point2d& p, const cv::Point2d& shoulder, double upper_px) {
+  const double r = cv::norm(p - shoulder);
+  return r >= kBodyInner * upper_px && r <= kBodyOuter * upper_px &&
+         p.y >= shoulder.y + kBelowShoulder * upper_px;
 }
 
 }  // namespace
@@ -103,7 +113,6 @@ FlowCue ArmFlow::Track(const cv::Mat& gray, const arm::ArmPose& pose, const arm:
 void ArmFlow::Refresh(const cv::Mat& gray, const arm::ArmPose& pose, const arm::ArmShape& shape) {
   const arm::ArmJoints j = arm::JointsOf(pose, shape);
   const cv::Point2d hand = HandEnd(j, shape);
-  const double body_r = kBodyRadiusShare * shape.upper_px;
   int count[3] = {0, 0, 0};
   std::size_t w = 0;
   for (Feature f : feats_) {
@@ -113,7 +122,7 @@ void ArmFlow::Refresh(const cv::Mat& gray, const arm::ArmPose& pose, const arm::
     if (f.part == 0) {
       // The body's features stay near the shoulder and off the arm.
       const bool on_arm = du < shape.upper_hw + kOffArmPx || df < shape.fore_hw + kOffArmPx;
-      if (on_arm || cv::norm(p - j.shoulder) > 1.5 * body_r) continue;
+      if (on_arm || !OnBody(p, j.shoulder, shape.upper_px)) continue;
     } else {
       if (du < shape.upper_hw + kOffArmPx && du <= df) {
         f.part = 1;
@@ -157,8 +166,12 @@ void ArmFlow::Seed(const cv::Mat& gray, const arm::ArmPose& pose, const arm::Arm
   cv::line(mask[1], pt(j.shoulder - o), pt(j.elbow - o), cv::Scalar(255), tu);
   cv::line(mask[2], pt(j.elbow - o), pt(hand - o), cv::Scalar(255), tf);
   // The body: a ring around the shoulder, clear of the arm.
-  cv::circle(mask[0], pt(j.shoulder - o), cvRound(kBodyRadiusShare * shape.upper_px),
-             cv::Scalar(255), cv::FILLED);
+  cv::circle(mask[0], pt(j.shoulder - o), cvRound(kBodyOuter * shape.upper_px), cv::Scalar(255),
+             cv::FILLED);
+  cv::circle(mask[0], pt(j.shoulder - o), cvRound(kBodyInner * shape.upper_px), cv::Scalar(0),
+             cv::FILLED);
+  const int top = cvRound(j.shoulder.y - o.y + kBelowShoulder * shape.upper_px);
+  if (top > 0) mask[0].rowRange(0, std::min(top, mask[0].rows)).setTo(0);
   arm::ArmJoints local = j;
   local.shoulder -= o;
   local.elbow -= o;

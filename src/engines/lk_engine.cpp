@@ -110,6 +110,7 @@ class LkEngine : public Engine {
     const cv::Mat view = frame.image(roi_);
     cv::Mat gray;
     cv::cvtColor(view, gray, cv::COLOR_BGR2GRAY);
+    tracker_->SetTime(frame.time_s);
     switch (state_) {
       case State::kStandstill:
         return Standstill(view, gray, m);

@@ -33,7 +33,11 @@ constexpr double kBackgroundRate = 0.2;
 constexpr double kVelocityGain = 0.5;
 constexpr int kMinTurnFeatures = 3;
 constexpr double kMaxShoulderShiftShare = 0.1;  // of the upper arm, per frame
-constexpr double kReachMargin = 1.15;           // evidence region around the shoulder
+// A body that sways moves the shoulder a little; farther from where it was clicked than this
+// share of the upper arm, the features that say so follow something else (the sleeve's cap
+// rising with the arm): the shoulder stays at the edge.
+constexpr double kMaxSwayShare = 0.15;
+constexpr double kReachMargin = 1.15;  // evidence region around the shoulder
 
 class ModelTracker : public Tracker {
  public:
@@ -43,6 +47,7 @@ class ModelTracker : public Tracker {
     size_ = start.gray.size();
     background_ = arm::LearntBackground();
     pose_.shoulder = start.shoulders.front();
+    start_shoulder_ = pose_.shoulder;
     pose_.upper_deg = Wrap180(o_.initial_upper_deg);
     pose_.fore_deg = Wrap180(o_.initial_fore_deg);
     arm::ArmShape lengths;
@@ -63,6 +68,10 @@ class ModelTracker : public Tracker {
     flow_.Refresh(start.gray, pose_, shape_);
     typical_ = -1;
     frame_ = 0;
+    anchor_ = pose_;
+    weak_ = false;
+    reach_deg_ = 0;
+    last_time_s_ = time_s_;
     upper_velocity_ = fore_velocity_ = 0;
     return MakePose(true, 1, "start: the calibrated posture");
   }
@@ -74,6 +83,9 @@ class ModelTracker : public Tracker {
     if (cue.body_count > 0 &&
         cv::norm(cue.shoulder_shift) < kMaxShoulderShiftShare * shape_.upper_px) {
       held.shoulder += cue.shoulder_shift;
+      const cv::Point2d off = held.shoulder - start_shoulder_;
+      const double far = cv::norm(off), limit = kMaxSwayShare * shape_.upper_px;
+      if (far > limit) held.shoulder = start_shoulder_ + (limit / far) * off;
     }
     arm::ArmPose moved = held;
     moved.upper_deg =
@@ -94,13 +106,24 @@ class ModelTracker : public Tracker {
       if (near_held.score.total > best.score.total) best = near_held;
     }
     if (typical_ < 0) typical_ = std::max(kMinTypical, best.score.total);
+    // Where the arm can be: within what it can turn since the last confident frame. The reach
+    // grows only while the pose being tracked is itself weak (the arm is not where it was
+    // followed); a far pose that merely explains the frame better is a rival, not a new lock.
+    const double dt = time_s_ > last_time_s_ ? time_s_ - last_time_s_ : kDefaultFrameS;
+    last_time_s_ = time_s_;
+    const double step = o_.max_speed_deg_s * dt;
+    reach_deg_ = weak_ ? reach_deg_ + step : step;
     const std::vector<arm::FitResult> anywhere =
         arm::FitAnywhere(evidence_, shape_, held.shoulder, kGlobalCandidates);
     std::string note = "model";
-    if (!anywhere.empty() && arm::PoseDistanceDeg(anywhere[0].pose, best.pose) > kDistinctDeg &&
-        anywhere[0].score.total > best.score.total + kRedetectMargin * typical_) {
-      best = anywhere[0];
-      note = "model: found again away from the prediction";
+    for (const arm::FitResult& f : anywhere) {
+      if (arm::PoseDistanceDeg(f.pose, anchor_) > reach_deg_) continue;
+      if (arm::PoseDistanceDeg(f.pose, best.pose) > kDistinctDeg &&
+          f.score.total > best.score.total + kRedetectMargin * typical_) {
+        best = f;
+        note = "model: found again away from the prediction";
+      }
+      break;  // best first: the best reachable pose
     }
     double rival = -2;
     for (const arm::FitResult& f : anywhere) {
@@ -109,6 +132,7 @@ class ModelTracker : public Tracker {
     }
     const double ratio = best.score.total / typical_;
     double support = std::clamp(ratio, 0.0, 1.0);
+    weak_ = support < o_.min_support;
     const bool ambiguous = rival > kAmbiguousShare * best.score.total;
     if (ambiguous) {
       support = 0;
@@ -121,6 +145,7 @@ class ModelTracker : public Tracker {
     const double du = AngleDiff(best.pose.upper_deg, pose_.upper_deg);
     const double df = AngleDiff(best.pose.fore_deg, pose_.fore_deg);
     pose_ = best.pose;
+    if (!weak_) anchor_ = pose_;
     if (confident) {
       const double rate = frame_ <= kTypicalStartFrames ? kTypicalStartRate : kTypicalRate;
       typical_ = std::max(kMinTypical, (1 - rate) * typical_ + rate * best.score.total);
@@ -138,6 +163,7 @@ class ModelTracker : public Tracker {
 
  private:
   static constexpr double kMinTypical = 0.1;
+  static constexpr double kDefaultFrameS = 1.0 / 30;  // still images: one frame at 30 fps
 
   static double Reach(const arm::ArmShape& s) { return s.upper_px + s.fore_px + s.hand_px; }
 
@@ -163,11 +189,16 @@ class ModelTracker : public Tracker {
   ArmFlow flow_;
   cv::Size size_;
   arm::ArmPose pose_;
+  cv::Point2d start_shoulder_;  // the calibrated shoulder
   arm::ArmShape shape_;
   arm::ColourModel colour_;
   arm::LearntBackground background_;
   arm::EvidenceMap evidence_;
-  double typical_ = -1;  // the arm's usual score (confident frames)
+  double typical_ = -1;   // the arm's usual score (confident frames)
+  arm::ArmPose anchor_;   // the last well-supported pose
+  bool weak_ = false;     // the last frame's pose was weakly supported
+  double reach_deg_ = 0;  // how far the arm may have turned from anchor_
+  double last_time_s_ = 0;
   int frame_ = 0;
   double upper_velocity_ = 0, fore_velocity_ = 0;  // degrees a frame
 };

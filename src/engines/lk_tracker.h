@@ -48,6 +48,11 @@ class Tracker {
   virtual ~Tracker() = default;
   virtual TrackerPose Start(const TrackerStart& start) = 0;
   virtual TrackerPose Track(const cv::Mat& gray, const cv::Mat& bgr) = 0;
+  // The time stamp of the frame given to the next Start() or Track(), seconds.
+  void SetTime(double time_s) { time_s_ = time_s; }
+
+ protected:
+  double time_s_ = 0;
 };
 
 std::unique_ptr<Tracker> CreateThesisTracker(const LkOptions& options);
