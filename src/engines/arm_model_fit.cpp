@@ -20,14 +20,6 @@ constexpr double kWideUpperStep = 4, kWideBendStep = 5;
 constexpr double kDistinctDeg = 12;
 constexpr double kRefineDeg = 4;
 
-double DistanceToSegment(const cv::Point2d& p, const cv::Point2d& a, const cv::Point2d& b) {
-  const cv::Point2d ab = b - a;
-  const double len2 = ab.dot(ab);
-  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  const cv::Point2d d = p - (a + t * ab);
-  return std::sqrt(d.dot(d));
-}
-
 double ForeTo(const ArmShape& shape) {
   return shape.fore_px > 0 ? 1 + kHandShare * shape.hand_px / shape.fore_px : 1;
 }
@@ -39,6 +31,14 @@ double ParabolaPeak(double a, double b, double c) {
 }
 
 }  // namespace
+
+double DistanceToSegment(const cv::Point2d& p, const cv::Point2d& a, const cv::Point2d& b) {
+  const cv::Point2d ab = b - a;
+  const double len2 = ab.dot(ab);
+  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  const cv::Point2d d = p - (a + t * ab);
+  return std::sqrt(d.dot(d));
+}
 
 ArmJoints JointsOf(const ArmPose& pose, const ArmShape& shape) {
   ArmJoints j;

@@ -21,6 +21,9 @@ struct ArmPose {
 
 ArmJoints JointsOf(const ArmPose& pose, const ArmShape& shape);
 
+// The distance from `p` to the segment `a`-`b`, pixels.
+double DistanceToSegment(const cv::Point2d& p, const cv::Point2d& a, const cv::Point2d& b);
+
 struct SegmentScore {
   double inside = 0;  // mean evidence in the strip, 0..1
   double score = 0;   // inside minus the flanks' mean, -1..1

@@ -30,14 +30,6 @@ double Median(std::vector<double> v) {
   return v[mid];
 }
 
-double DistanceToSegment(const cv::Point2d& p, const cv::Point2d& a, const cv::Point2d& b) {
-  const cv::Point2d ab = b - a;
-  const double len2 = ab.dot(ab);
-  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  const cv::Point2d d = p - (a + t * ab);
-  return std::sqrt(d.dot(d));
-}
-
 // The hand's end: the forearm's features reach over the hand.
 cv::Point2d HandEnd(const arm::ArmJoints& j, const arm::ArmShape& shape) {
   const double fl = cv::norm(j.wrist - j.elbow);
@@ -117,8 +109,8 @@ void ArmFlow::Refresh(const cv::Mat& gray, const arm::ArmPose& pose, const arm::
   std::size_t w = 0;
   for (Feature f : feats_) {
     const cv::Point2d p(f.p);
-    const double du = DistanceToSegment(p, j.shoulder, j.elbow);
-    const double df = DistanceToSegment(p, j.elbow, hand);
+    const double du = arm::DistanceToSegment(p, j.shoulder, j.elbow);
+    const double df = arm::DistanceToSegment(p, j.elbow, hand);
     if (f.part == 0) {
       // The body's features stay near the shoulder and off the arm.
       const bool on_arm = du < shape.upper_hw + kOffArmPx || df < shape.fore_hw + kOffArmPx;
