@@ -47,7 +47,7 @@ std::string FormatMetaLine(const AngleMeta& meta) {
   return line;
 }
 
-std::string FormatAngleRow(const AngleRow& row, bool file_column) {
+std::string FormatAngleRow(const AngleRow& row, bool file_column, bool signed_yaw_column) {
   const bool ok = row.ok();
   auto ang = [&](double v) { return FormatNumber(ok ? v : kNaN, 3); };
   auto px = [&](double v) { return FormatNumber(ok ? v : kNaN, 2); };
@@ -69,6 +69,10 @@ std::string FormatAngleRow(const AngleRow& row, bool file_column) {
     s += '\t';
     s += row.file;
   }
+  if (signed_yaw_column) {
+    s += '\t';
+    s += ang(row.yaw_signed_deg);
+  }
   return s;
 }
 
@@ -83,6 +87,7 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
   std::size_t header_columns = 0;
   int last_frame = -1;
   bool seen_meta = false;
+  std::size_t signed_yaw_index = 0;
   while (true) {
     line.clear();
     // Bounded getline: never holds more than kMaxAngleLineLength + 1 characters of one line.
@@ -142,6 +147,10 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
       }
       header_columns = cols.size();
       out->has_file_column = cols.size() > 11 && cols[11] == "file";
+      for (std::size_t i = 11; i < cols.size(); ++i) {
+        if (cols[i] == kSignedYawColumn) signed_yaw_index = i;
+      }
+      out->has_signed_yaw_column = signed_yaw_index > 0;
       have_header = true;
       continue;
     }
@@ -193,6 +202,21 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
       return err(line_no, "yaw_deg " + f[5] + " is negative (yaw is always >= 0)");
     }
     if (out->has_file_column) row.file = f[11];
+    if (signed_yaw_index > 0) {
+      const std::string& v = f[signed_yaw_index];
+      if (!ParseTableNumber(v, true, &row.yaw_signed_deg)) {
+        return err(line_no, std::string(kSignedYawColumn) + " \"" + v +
+                                "\" is not a number (use '.' decimals, or nan)");
+      }
+      if (row.status == RowStatus::kLost && !std::isnan(row.yaw_signed_deg)) {
+        return err(line_no, std::string("status is lost but ") + kSignedYawColumn +
+                                " is a number (lost rows carry nan angles)");
+      }
+      if (!std::isnan(row.yaw_signed_deg) &&
+          (row.yaw_signed_deg <= -180.0 - 1e-9 || row.yaw_signed_deg > 180.0 + 1e-9)) {
+        return err(line_no, std::string(kSignedYawColumn) + " " + v + " is outside (-180, 180]");
+      }
+    }
     out->rows.push_back(std::move(row));
   }
   if (!have_header) {
@@ -213,6 +237,7 @@ struct AngleFileWriter::Impl {
   std::string path;
   AngleMeta meta;
   bool file_column = false;
+  bool signed_yaw_column = false;
   bool open = false;
   int rows = 0;
 };
@@ -223,23 +248,26 @@ AngleFileWriter::~AngleFileWriter() = default;
 int AngleFileWriter::rows_written() const { return impl_->rows; }
 
 namespace {
-std::string HeaderText(const AngleMeta& meta, bool file_column) {
+std::string HeaderText(const AngleMeta& meta, bool file_column, bool signed_yaw_column) {
   std::string s =
       std::string(kAngleFileMagic) + "\n" + FormatMetaLine(meta) + "\n" + kAngleFileUnits + "\n";
   for (int i = 0; i < 11; ++i) s += (i ? "\t" : "") + std::string(kAngleColumns[i]);
   if (file_column) s += "\tfile";
+  if (signed_yaw_column) s += std::string("\t") + kSignedYawColumn;
   return s + "\n";
 }
 }  // namespace
 
-Status AngleFileWriter::Open(const std::string& path, const AngleMeta& meta, bool file_column) {
+Status AngleFileWriter::Open(const std::string& path, const AngleMeta& meta, bool file_column,
+                             bool signed_yaw_column) {
   impl_ = std::make_unique<Impl>();
   Status st = impl_->file.Open(path);
   if (!st) return st;
   impl_->path = path;
   impl_->meta = meta;
   impl_->file_column = file_column;
-  const std::string header = HeaderText(meta, file_column);
+  impl_->signed_yaw_column = signed_yaw_column;
+  const std::string header = HeaderText(meta, file_column, signed_yaw_column);
   if (std::fputs(header.c_str(), impl_->file.file()) < 0) {
     return Status::Error(path + ": write failed (" + std::strerror(errno) + ")");
   }
@@ -253,7 +281,7 @@ Status AngleFileWriter::Write(const AngleRow& row) {
     return Status::Error(impl_->path + ": file name \"" + row.file +
                          "\" contains a tab or newline");
   }
-  const std::string s = FormatAngleRow(row, impl_->file_column) + "\n";
+  const std::string s = FormatAngleRow(row, impl_->file_column, impl_->signed_yaw_column) + "\n";
   if (std::fputs(s.c_str(), impl_->file.file()) < 0) {
     return Status::Error(impl_->path + ": write failed (" + std::strerror(errno) + ")");
   }
@@ -272,7 +300,7 @@ Status AngleFileWriter::Commit(bool complete) {
   if (!st) return st;
   AngleMeta meta = impl_->meta;
   meta.emplace_back("complete", "no");
-  const std::string header = HeaderText(meta, impl_->file_column);
+  const std::string header = HeaderText(meta, impl_->file_column, impl_->signed_yaw_column);
   std::fputs(header.c_str(), marked.file());
   std::ifstream rows(impl_->file.temp_path(), std::ios::binary);
   std::string line;

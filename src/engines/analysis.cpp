@@ -335,7 +335,9 @@ Status AnalyzeToFile(const AnalysisOptions& options, const std::string& output_p
   const bool file_column = options.engine.kind == EngineKind::kMarker;
   Status st = Run(
       options, callbacks,
-      [&](const AngleMeta& meta) { return writer.Open(output_path, meta, file_column); },
+      [&](const AngleMeta& meta) {
+        return writer.Open(output_path, meta, file_column, /*signed_yaw_column=*/file_column);
+      },
       [&](const ArmMeasurement& m) { return writer.Write(m.ToRow()); }, summary);
   if (!st) return st;
   if (summary->meta.empty()) return Status::Ok();  // cancelled before the file was opened

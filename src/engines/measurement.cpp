@@ -13,6 +13,7 @@ AngleRow ArmMeasurement::ToRow() const {
     row.fore_deg = fore_deg;
     row.yaw_deg = yaw_deg;
     row.bend_deg = bend_deg;
+    row.yaw_signed_deg = yaw_signed_deg;
     row.upper_cx = upper_com_px.x;
     row.upper_cy = upper_com_px.y;
     row.fore_cx = fore_com_px.x;

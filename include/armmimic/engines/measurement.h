@@ -22,8 +22,8 @@ struct ArmMeasurement {
   int frame = 0;
   double time_s = 0;
   MeasurementPhase phase = MeasurementPhase::kLost;
-  std::string file;        // marker engine: input image name
-  std::string note;        // why lost, or which rule decided (shown in the GUI)
+  std::string file;  // marker engine: input image name
+  std::string note;  // why lost, or which rule decided (shown in the GUI)
   // A value estimated rather than measured, decided on this frame ("arm length 96 px from the
   // region of interest's height"): reported once through AnalysisCallbacks::on_estimate.
   std::string estimate;
@@ -32,6 +32,8 @@ struct ArmMeasurement {
   double fore_deg = kNaN;
   double yaw_deg = kNaN;
   double bend_deg = kNaN;
+  double yaw_signed_deg =
+      kNaN;  // marker engine: positive turns the joint's right side to the camera
   cv::Point2d upper_com_px{kNaN, kNaN};
   cv::Point2d fore_com_px{kNaN, kNaN};
 
@@ -43,10 +45,13 @@ struct ArmMeasurement {
   std::vector<cv::Point> arm_contour;
   std::vector<cv::Point> arm_hull;
   std::optional<cv::Rect> body_box;
-  std::vector<cv::Point2f> upper_features;   // LK
-  std::vector<cv::Point2f> fore_features;    // LK
-  std::vector<cv::Rect> candidate_boxes;     // marker: components that passed the threshold
-  std::vector<cv::Point2d> marker_centres;   // marker: upper first, then the two lower ones
+  std::vector<cv::Point2f> upper_features;  // LK
+  std::vector<cv::Point2f> fore_features;   // LK
+  std::vector<cv::Rect> candidate_boxes;    // marker: components that passed the threshold
+  // marker: upper first, then the left and right lower ones; (nan, nan) for one not measured.
+  std::vector<cv::Point2d> marker_centres;
+  std::vector<cv::Point2d> cylinder_axis_px;   // marker: the lower part's axis, bottom to pivot
+  std::vector<cv::Point2d> cylinder_edges_px;  // marker: silhouette, left top/bottom, right ...
 
   bool row() const { return phase != MeasurementPhase::kSetup; }
   AngleRow ToRow() const;
