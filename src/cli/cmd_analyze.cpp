@@ -60,6 +60,7 @@ const std::map<std::string, std::set<EngineKind>>& EngineFlags() {
       {"--reference", {EngineKind::kMarker}},
       {"--low", {EngineKind::kMarker}},
       {"--high", {EngineKind::kMarker}},
+      {"--fov", {EngineKind::kMarker}},
   };
   return flags;
 }
@@ -101,7 +102,7 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
       "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine lk\n"
       "          --shoulder X,Y --elbow X,Y --wrist X,Y [--start F]\n"
       "  armmimic-cli analyze INPUT... -o ANGLES.tsv --engine marker --reference REF.png\n"
-      "          [--low 20] [--high 80]\n"
+      "          [--low 20] [--high 80] [--fov 60]\n"
       "  Arm engines also take [--roi X,Y,W,H] [--shoulder X,Y] [--thesis].",
       "Turns a video (or images) into an angle file v1, one row per analysed frame.\n"
       "bgsub, and lk without --shoulder: frames [F, F+standstill) are the standstill (no rows);\n"
@@ -109,8 +110,9 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
       "starting posture and already gets a row (--standstill-frames is then refused). With\n"
       "--elbow and --wrist too, the three clicked joints give the starting directions and the\n"
       "segment lengths; otherwise the arm length is estimated and the estimate is printed.\n"
-      "marker: one row per input image, in input order. Ctrl-C keeps the rows so far in a valid\n"
-      "file marked complete=no (exit 1).\n" +
+      "marker: one row per input image, in input order, with the image's name and the signed\n"
+      "yaw (yaw_signed_deg) after the listed columns; --thesis reads yaw as acos(n/N), unsigned.\n"
+      "Ctrl-C keeps the rows so far in a valid file marked complete=no (exit 1).\n" +
           ParamList());
   p.Positionals(&o.inputs, "INPUT", 1, -1);
   p.String("-o,--output", &output, "ANGLES.tsv", "the angle file to write (required)");
@@ -154,11 +156,14 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
   p.Double("--initial-fore", &o.engine.lk.initial_fore_deg, "DEG",
            "lk: forearm direction at the start (default -90)");
   p.String("--reference", &o.reference_path, "REF.png",
-           "marker: joint at zero yaw and zero bend (gives N)");
+           "marker: the joint at zero yaw and zero bend");
   p.Int("--low", &o.engine.marker.low, "L", "marker: lower grey level of the markers (default 20)",
         0, 255);
   p.Int("--high", &o.engine.marker.high, "H",
         "marker: upper grey level of the markers (default 80)", 0, 255);
+  p.Double("--fov", &o.engine.marker.fov_deg, "D",
+           "marker: the camera's horizontal field of view, degrees (default 60; 0: a distant "
+           "camera)");
   p.Flag("--thesis", &thesis, "run the thesis method only, without the improvements");
   p.Custom("--param", "ENGINE.KEY=VALUE",
            "any engine parameter listed above; repeatable, applied after the other flags",

@@ -1,0 +1,238 @@
+// The lower part on the reference image (docs/marker.md, "Calibration"): the silhouette found
+// from scratch around the lower pair, the bands of rows that show only the surface, the markers'
+// grey ratio, angular radius, zero-yaw angles and height.
+#include <algorithm>
+#include <cmath>
+
+#include "armmimic/core/angles.h"
+#include "marker_lower.h"
+
+namespace armmimic::internal {
+namespace {
+
+// A silhouette step fainter than this (grey levels a pixel) wanders with the noise.
+constexpr double kTrackable = 5;
+
+std::vector<int> RowRange(double from, double to, int rows) {
+  std::vector<int> out;
+  for (int y = std::max(1, static_cast<int>(std::ceil(from)));
+       y <= std::min(rows - 2, static_cast<int>(std::floor(to))); ++y) {
+    out.push_back(y);
+  }
+  return out;
+}
+
+// The silhouette's two steps in `profiles` (each over the same columns, first column x0), about
+// symmetric about `mid` (within 3 pixels) at half-widths [lo, hi]: the pair of columns with the
+// largest summed gradient magnitude (each band sees its own background, so the step's sign may
+// differ).
+bool SymmetricEdges(const std::vector<std::vector<double>>& profiles, int x0, double mid, double lo,
+                    double hi, int* left, int* right) {
+  auto g = [&](int i) {
+    double sum = 0;
+    for (const std::vector<double>& p : profiles) {
+      if (i >= 1 && i + 1 < static_cast<int>(p.size())) sum += std::abs(p[i + 1] - p[i - 1]);
+    }
+    return sum;
+  };
+  double best = 0;
+  *left = *right = -1;
+  for (int xl = static_cast<int>(std::ceil(mid - hi)); xl <= mid - lo; ++xl) {
+    const int i = xl - x0;
+    const int j = static_cast<int>(std::lround(2 * mid - xl)) - x0;
+    for (int dj = -3; dj <= 3; ++dj) {  // the markers' midpoint is only near the axis
+      const double s = g(i) + g(j + dj);
+      if (s > best) best = s, *left = i + x0, *right = j + dj + x0;
+    }
+  }
+  return *left >= 0;
+}
+
+// Measures a band's two edges near `left`, `right` (image columns): the steepest step (tracked in
+// the views; one weaker than kTrackable grey levels a pixel is untrackable: strength 0)
+// and the edge fitted to the profile's shape (the silhouette itself).
+void MeasureBand(const cv::Mat& gray, int x0, int width, double left, double right, EdgeBand* band,
+                 std::vector<double>* profile) {
+  ColumnProfile(gray, band->rows, x0, width, profile);
+  const double at[2] = {left, right};
+  for (int side = 0; side < 2; ++side) {
+    band->edge_px[side] = band->peak_px[side] = at[side];
+    band->strength[side] = 0;
+    if (band->rows.empty()) continue;
+    const int c = static_cast<int>(std::lround(at[side])) - x0;
+    const ProfileEdge e = FindProfileEdge(*profile, x0, c - 2, c + 2, 0);
+    if (!e.found) continue;
+    band->peak_px[side] = e.x;
+    band->edge_px[side] = FitProfileEdge(*profile, x0, e.x, 2.0, side == 0 ? 1 : -1);
+    if (std::abs(e.strength) >= kTrackable) band->strength[side] = e.strength;
+  }
+}
+
+// Mean of the bands' fitted edges on `side`, weighted by rows and squared step (a faint step
+// places the edge poorly), over the bands that track it (all bands when none does); nan
+// without rows.
+double MeanEdge(const EdgeBand* bands, int side) {
+  double sum = 0, n = 0;
+  for (int pass = 0; pass < 2 && n == 0; ++pass) {
+    for (int b = 0; b < 2; ++b) {
+      if (pass == 0 && bands[b].strength[side] == 0) continue;
+      const double w = bands[b].rows.size() *
+                       (pass == 0 ? bands[b].strength[side] * bands[b].strength[side] : 1);
+      sum += w * bands[b].edge_px[side];
+      n += w;
+    }
+  }
+  return n > 0 ? sum / n : kNaN;
+}
+
+// Rows of the band below the markers down to where the lower part ends: its bottom rim is seen
+// from above, so the end shows first at the limbs. A row ends the band when its grey level near
+// either limb or at the centre steps away from the band's median there.
+std::vector<int> RowsOnTheSurface(const cv::Mat& gray, const std::vector<int>& rows, double xl,
+                                  double xr) {
+  if (rows.empty()) return rows;
+  const int l = static_cast<int>(std::ceil(xl + 0.5)), r = static_cast<int>(std::floor(xr - 0.5));
+  const int c0 = static_cast<int>(std::ceil(xl + 0.33 * (xr - xl)));
+  const int c1 = static_cast<int>(std::floor(xr - 0.33 * (xr - xl)));
+  const int groups[3][2] = {{l, l + 2}, {c0, c1}, {r - 2, r}};
+  std::vector<double> level[3];
+  for (int y : rows) {
+    for (int g = 0; g < 3; ++g) {
+      double sum = 0;
+      for (int x = groups[g][0]; x <= groups[g][1]; ++x) sum += gray.at<uchar>(y, x);
+      level[g].push_back(sum / std::max(1, groups[g][1] - groups[g][0] + 1));
+    }
+  }
+  double median[3];
+  for (int g = 0; g < 3; ++g) {
+    std::vector<double> sorted = level[g];
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    median[g] = sorted[sorted.size() / 2];
+  }
+  std::vector<int> out;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    bool off = false;
+    for (int g = 0; g < 3; ++g) off |= std::abs(level[g][i] - median[g]) > 0.1 * median[g] + 5;
+    if (off) break;
+    out.push_back(rows[i]);
+  }
+  return out;
+}
+
+}  // namespace
+
+bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Point2d left_px,
+                        cv::Point2d right_px, cv::Point2d upper_px, double marker_height_px,
+                        LowerCalibration* cal, LowerScan* scan, std::string* message) {
+  const double n = right_px.x - left_px.x;
+  const double mid = 0.5 * (left_px.x + right_px.x);
+  const double y_low = 0.5 * (left_px.y + right_px.y);
+  const double e_px = 0.5 * (y_low - upper_px.y);
+  const double h = marker_height_px;
+  const double cy = camera.principal_px.y;
+  const double off = std::abs(y_low - cy);
+  const int x0 = std::max(0, static_cast<int>(mid - 1.8 * n) - 4);
+  const int width = std::min(gray.cols, static_cast<int>(mid + 1.8 * n) + 5) - x0;
+  // First the silhouette from every row the straight reference shows it on: between the upper
+  // and the lower markers, and below them.
+  EdgeBand first[2];
+  first[0].rows = RowRange(upper_px.y + 0.7 * h + 2, y_low - 0.7 * h - 0.15 * off - 2, gray.rows);
+  first[1].rows = RowRange(y_low + 0.7 * h + 0.1 * off + 2, y_low + 1.6 * e_px, gray.rows);
+  std::vector<std::vector<double>> profiles(2);
+  for (int b = 0; b < 2; ++b) ColumnProfile(gray, first[b].rows, x0, width, &profiles[b]);
+  int li = 0, ri = 0;
+  if (first[0].rows.size() + first[1].rows.size() < 4 ||
+      !SymmetricEdges(profiles, x0, mid, 0.45 * n, 1.7 * n, &li, &ri)) {
+    *message = "the joint shows too few rows beside its markers to find its silhouette";
+    return false;
+  }
+  for (int b = 0; b < 2; ++b) MeasureBand(gray, x0, width, li, ri, &first[b], &profiles[b]);
+  const double left = MeanEdge(first, 0), right = MeanEdge(first, 1);
+  const bool faint = first[0].strength[0] == 0 && first[1].strength[0] == 0 &&
+                     first[0].strength[1] == 0 && first[1].strength[1] == 0;
+  if (std::isnan(left) || std::isnan(right) || faint) {
+    *message =
+        "the joint's silhouette does not stand out from the background around the lower "
+        "markers";
+    return false;
+  }
+  CylinderView cyl(camera, left, right);
+  if (!cyl.valid()) {
+    *message = "the joint's silhouette is too wide for the camera's field of view (--fov)";
+    return false;
+  }
+  // Rows the lower markers can reach: turned, they recede and move towards the horizon row.
+  const double d = cyl.distance();
+  const double toward = off / d * 1.2 + 2, away = off / std::max(1.0, d - 1) * 1.2 + 2;
+  const bool below_horizon = y_low >= cy;
+  cal->band_top =
+      std::max(0, static_cast<int>(std::floor(y_low - 0.5 * h - (below_horizon ? toward : away))));
+  cal->band_bottom =
+      std::min(gray.rows - 1,
+               static_cast<int>(std::ceil(y_low + 0.5 * h + (below_horizon ? away : toward))));
+  // Above the band, below where a bent upper part can reach (one radius below the pivot).
+  const double pivot_y = y_low - e_px;
+  EdgeBand* bands = cal->bands;
+  bands[0].rows = RowRange(pivot_y + 1.15 * cyl.half_width_px(), cal->band_top - 2, gray.rows);
+  bands[1].rows = RowsOnTheSurface(
+      gray, RowRange(cal->band_bottom + 2, y_low + 1.6 * e_px, gray.rows), left, right);
+  if (bands[0].rows.size() + bands[1].rows.size() < 3) {
+    *message = "the joint shows too few rows beside its markers to find its silhouette";
+    return false;
+  }
+  std::vector<double> surface(width, 0.0);
+  double rows = 0;
+  for (int b = 0; b < 2; ++b) {
+    MeasureBand(gray, x0, width, left, right, &bands[b], &profiles[b]);
+    for (int i = 0; i < width; ++i) surface[i] += bands[b].rows.size() * profiles[b][i];
+    rows += bands[b].rows.size();
+  }
+  for (double& v : surface) v /= rows;
+  cal->left_edge_px = MeanEdge(bands, 0);
+  cal->right_edge_px = MeanEdge(bands, 1);
+  if (bands[0].strength[0] == 0 && bands[1].strength[0] == 0 && bands[0].strength[1] == 0 &&
+      bands[1].strength[1] == 0) {
+    *message = "the joint's silhouette does not stand out from the background";
+    return false;
+  }
+  cal->search_px = std::max(3, static_cast<int>(std::lround(0.1 * (right - left))));
+  cal->marker_height_px = h;
+  *scan = LowerScan();
+  scan->left_edge_px = cal->left_edge_px;
+  scan->right_edge_px = cal->right_edge_px;
+  scan->cylinder = CylinderView(camera, cal->left_edge_px, cal->right_edge_px);
+  // Marker grey over surface grey at the two markers' centres, then the markers measured with it.
+  LowerScratch scratch;
+  for (int pass = 0; pass < 2; ++pass) {
+    MeasureLowerMarkers(gray, *cal, x0, surface, true, scan, &scratch);
+    if (scan->markers.size() != 2) {
+      *message = "found " + std::to_string(scan->markers.size()) +
+                 " dark patches across the joint at the lower markers' height, expected 2";
+      return false;
+    }
+    if (pass == 1) break;
+    double ratio = 0;
+    for (const LowerMarker& m : scan->markers) {
+      const cv::Point c(static_cast<int>(std::lround(m.centre_px.x)),
+                        static_cast<int>(std::lround(m.centre_px.y)));
+      double sum = 0;
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) sum += gray.at<uchar>(c.y + dy, c.x + dx);
+      }
+      ratio += sum / 9 / std::max(1.0, surface[c.x - x0]);
+    }
+    cal->marker_ratio = std::clamp(0.5 * ratio, 0.0, 0.8);
+  }
+  const LowerMarker& l = scan->markers[0];
+  const LowerMarker& r = scan->markers[1];
+  cal->theta_left0 = l.theta;
+  cal->theta_right0 = r.theta;
+  cal->delta = 0.5 * (l.radius + r.radius);
+  const double f = camera.focal_px;
+  const CylinderView& c = scan->cylinder;
+  cal->height = 0.5 * ((cy - l.centre_px.y) * c.Depth(l.theta) / f +
+                       (cy - r.centre_px.y) * c.Depth(r.theta) / f);
+  return true;
+}
+
+}  // namespace armmimic::internal
