@@ -129,6 +129,7 @@ void AnglePlot::fitDegreeTicks(const QRectF& plot_area) {
 
 void AnglePlot::setResults(const ResultStore& results) {
   QList<QPointF> upper, fore, yaw, bend, lost;
+  int signed_yaw = 0;
   for (const auto& [frame, m] : results.all()) {
     if (m.phase == MeasurementPhase::kLost) {
       lost.append(QPointF(frame, -175));
@@ -137,13 +138,20 @@ void AnglePlot::setResults(const ResultStore& results) {
     if (m.phase != MeasurementPhase::kOk) continue;
     if (std::isfinite(m.upper_deg)) upper.append(QPointF(frame, m.upper_deg));
     if (std::isfinite(m.fore_deg)) fore.append(QPointF(frame, m.fore_deg));
-    if (std::isfinite(m.yaw_deg)) yaw.append(QPointF(frame, m.yaw_deg));
+    // The marker engine's yaw has a sign; the plot shows it, so turns either way stay apart.
+    if (std::isfinite(m.yaw_signed_deg)) {
+      yaw.append(QPointF(frame, m.yaw_signed_deg));
+      ++signed_yaw;
+    } else if (std::isfinite(m.yaw_deg)) {
+      yaw.append(QPointF(frame, m.yaw_deg));
+    }
     // The marker engine (it names each view's image) measures the joint's bend, not segments.
     if (!m.file.empty() && std::isfinite(m.bend_deg)) bend.append(QPointF(frame, m.bend_deg));
   }
   upper_->replace(upper);
   fore_->replace(fore);
   yaw_->replace(yaw);
+  yaw_->setName(signed_yaw > 0 ? tr("yaw (signed)") : tr("yaw"));
   bend_->replace(bend);
   const bool marker = !bend.isEmpty();
   upper_->setVisible(!marker);
@@ -163,6 +171,7 @@ int AnglePlot::pointCount() const { return static_cast<int>(upper_->count()); }
 int AnglePlot::lostCount() const { return static_cast<int>(lost_->count()); }
 int AnglePlot::bendCount() const { return static_cast<int>(bend_->count()); }
 bool AnglePlot::yawShown() const { return yaw_->isVisible(); }
+QList<QPointF> AnglePlot::yawPoints() const { return yaw_->points(); }
 
 int AnglePlot::frameAt(const QPointF& widget_pos) const {
   const QPointF scene = mapToScene(widget_pos.toPoint());

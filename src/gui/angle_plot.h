@@ -25,8 +25,9 @@ class AnglePlot : public QChartView {
   int cursorFrame() const { return cursor_frame_; }
   int pointCount() const;  // points on the angle series, for tests
   int lostCount() const;
-  int bendCount() const;  // points on the bend series (marker views)
-  bool yawShown() const;  // the yaw series and its legend entry
+  int bendCount() const;             // points on the bend series (marker views)
+  bool yawShown() const;             // the yaw series and its legend entry
+  QList<QPointF> yawPoints() const;  // (frame, yaw): signed for marker views
   // The frame axis' label step: 1, 2, 5, 10, 20, ... so that every label is a whole frame.
   double frameTickStep() const;
   // Labels on the degree axis: every 45° when the plot is tall enough, else every 60°, 90° or

@@ -8,8 +8,8 @@
 #include <QFileInfo>
 #include <QMenu>
 #include <QMimeData>
-#include <QScrollArea>
 #include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QVBoxLayout>
