@@ -11,7 +11,8 @@ namespace armmimic {
 namespace {
 
 const char* kHeader =
-    "frame\ttime_s\tstatus\tupper_deg\tfore_deg\tyaw_deg\tbend_deg\tupper_cx\tupper_cy\tfore_cx\tfore_cy";
+    "frame\ttime_s\tstatus\tupper_deg\tfore_deg\tyaw_deg\tbend_deg\tupper_cx\tupper_cy\tfore_"
+    "cx\tfore_cy";
 
 Status Parse(const std::string& text, AngleFile* f) {
   std::istringstream in(text);
@@ -22,7 +23,8 @@ TEST(AngleFile, RoundTripKeepsEveryValue) {
   test::TempDir dir;
   const std::string path = dir.file("angles.tsv");
   AngleFileWriter w;
-  ASSERT_TRUE(w.Open(path, {{"engine", "bgsub"}, {"source", "my scene.avi"}, {"fps", "30"}}, false).ok());
+  ASSERT_TRUE(
+      w.Open(path, {{"engine", "bgsub"}, {"source", "my scene.avi"}, {"fps", "30"}}, false).ok());
   AngleRow r1;
   r1.frame = 105;
   r1.time_s = 3.5;
@@ -43,7 +45,8 @@ TEST(AngleFile, RoundTripKeepsEveryValue) {
   ASSERT_TRUE(w.Commit().ok());
 
   const std::string text = test::ReadFile(path);
-  EXPECT_EQ(text.rfind("# armmimic angles v1\n# engine=bgsub source=my%20scene.avi fps=30\n", 0), 0u);
+  EXPECT_EQ(text.rfind("# armmimic angles v1\n# engine=bgsub source=my%20scene.avi fps=30\n", 0),
+            0u);
   EXPECT_NE(text.find(std::string(kHeader) + "\n"), std::string::npos);
 
   AngleFile f;
@@ -84,9 +87,45 @@ TEST(AngleFile, MarkerFileColumnRoundTrips) {
   EXPECT_DOUBLE_EQ(f.rows[0].yaw_deg, 12);
 }
 
+TEST(AngleFile, MarkerSignedYawRoundTripsAndIsFoundByName) {
+  test::TempDir dir;
+  const std::string path = dir.file("m.tsv");
+  AngleFileWriter w;
+  ASSERT_TRUE(w.Open(path, {{"engine", "marker"}}, true, true).ok());
+  AngleRow r;
+  r.status = RowStatus::kOk;
+  r.yaw_deg = 12.5;
+  r.yaw_signed_deg = -12.5;
+  r.bend_deg = 3;
+  r.file = "img_000.png";
+  ASSERT_TRUE(w.Write(r).ok());
+  AngleRow lost;
+  lost.frame = 1;
+  lost.file = "img_001.png";
+  ASSERT_TRUE(w.Write(lost).ok());
+  ASSERT_TRUE(w.Commit().ok());
+  EXPECT_NE(test::ReadFile(path).find("\tfile\tyaw_signed_deg\n"), std::string::npos);
+  AngleFile f;
+  ASSERT_TRUE(ReadAngleFile(path, &f).ok());
+  ASSERT_TRUE(f.has_file_column && f.has_signed_yaw_column);
+  EXPECT_DOUBLE_EQ(f.rows[0].yaw_signed_deg, -12.5);
+  EXPECT_DOUBLE_EQ(f.rows[0].turn_yaw_deg(), -12.5);
+  EXPECT_TRUE(std::isnan(f.rows[1].yaw_signed_deg));
+  // Found by name among other trailing columns, in any order; without it the yaw is yaw_deg.
+  const std::string text = std::string(kHeader) + "\tconfidence\tyaw_signed_deg\tfile\n" +
+                           "0\t0\tok\tnan\tnan\t7\t1\tnan\tnan\tnan\tnan\t0.9\t7\ta.png\n";
+  ASSERT_TRUE(Parse(text, &f).ok()) << Parse(text, &f).message();
+  EXPECT_DOUBLE_EQ(f.rows[0].yaw_signed_deg, 7);
+  const std::string plain =
+      std::string(kHeader) + "\n0\t0\tok\tnan\tnan\t7\t1\tnan\tnan\tnan\tnan\n";
+  ASSERT_TRUE(Parse(plain, &f).ok());
+  EXPECT_FALSE(f.has_signed_yaw_column);
+  EXPECT_DOUBLE_EQ(f.rows[0].turn_yaw_deg(), 7);
+}
+
 TEST(AngleFile, UnknownTrailingColumnsAreIgnored) {
-  std::string text = std::string(kHeader) + "\textra\n" +
-                     "3\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t7\twhatever\n";
+  std::string text =
+      std::string(kHeader) + "\textra\n" + "3\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t7\twhatever\n";
   AngleFile f;
   ASSERT_TRUE(Parse(text, &f).ok()) << Parse(text, &f).message();
   EXPECT_EQ(f.rows.size(), 1u);
@@ -101,25 +140,42 @@ struct BadCase {
 
 TEST(AngleFile, MalformedFilesNameTheLine) {
   const std::string h = std::string("# armmimic angles v1\n") + kHeader + "\n";
+  const std::string signed_h =
+      std::string("# armmimic angles v1\n") + kHeader + "\tyaw_signed_deg\n";
   const std::vector<BadCase> cases = {
-      {"bad number", h + "0\t0\tok\t1,5\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: upper_deg \"1,5\""},
+      {"bad number", h + "0\t0\tok\t1,5\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:3: upper_deg \"1,5\""},
       {"wrong header", "# armmimic angles v1\nframe\ttime\tstatus\n", "a.tsv:2: bad column header"},
       {"short row", h + "0\t0\tok\t1\n", "a.tsv:3: row has 4 fields"},
       {"huge line", h + std::string(70000, '1') + "\n", "a.tsv:3: line is longer"},
-      {"bad status", h + "0\t0\tmaybe\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: status"},
+      {"bad status", h + "0\t0\tmaybe\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:3: status"},
       {"inf", h + "0\t0\tok\tinf\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: upper_deg"},
       {"nan time", h + "0\tnan\tok\t1\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: time_s"},
-      {"duplicate frame", h + "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n" +
-                              "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+      {"duplicate frame",
+       h + "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n" +
+           "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
        "a.tsv:4: frame 4 is repeated"},
-      {"out of order", h + "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n" +
-                           "2\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+      {"out of order",
+       h + "4\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n" +
+           "2\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
        "a.tsv:4: frame 2 is out of order"},
-      {"lost with angle", h + "0\t0\tlost\t5\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: status is lost"},
-      {"negative frame", h + "-1\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: frame"},
-      {"out of range", h + "0\t0\tok\t270\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: upper_deg 270"},
+      {"lost with angle", h + "0\t0\tlost\t5\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:3: status is lost"},
+      {"negative frame", h + "-1\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:3: frame"},
+      {"out of range", h + "0\t0\tok\t270\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
+       "a.tsv:3: upper_deg 270"},
       {"negative yaw", h + "0\t0\tok\tnan\tnan\t-3\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: yaw_deg"},
       {"version 2", "# armmimic angles v2\n" + std::string(kHeader) + "\n", "a.tsv:1: unsupported"},
+      {"signed yaw not a number", signed_h + "0\t0\tok\tnan\tnan\t3\tnan\tnan\tnan\tnan\tnan\tx\n",
+       "a.tsv:3: yaw_signed_deg \"x\""},
+      {"signed yaw on a lost row",
+       signed_h + "0\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\t3\n",
+       "a.tsv:3: status is lost but yaw_signed_deg"},
+      {"signed yaw out of range",
+       signed_h + "0\t0\tok\tnan\tnan\t3\tnan\tnan\tnan\tnan\tnan\t-200\n",
+       "a.tsv:3: yaw_signed_deg -200 is outside"},
       {"empty", "", "a.tsv: no column header"},
   };
   for (const auto& c : cases) {
