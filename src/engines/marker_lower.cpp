@@ -103,7 +103,7 @@ bool FitPatch(const CoverageBand& band, const CylinderView& cyl, const LowerCali
   out->radius = out->cut ? kNaN : std::sqrt(delta2_sum / used);
   if (calibrating) return !out->cut;
   // A disc of the markers' size, not a shadow or a fleck.
-  if (!out->cut && (out->radius < 0.6 * cal.delta || out->radius > 1.5 * cal.delta)) return false;
+  if (!out->cut && (out->radius < 0.7 * cal.delta || out->radius > 1.35 * cal.delta)) return false;
   // The markers' height is known: a patch elsewhere in the band is something else.
   const double expected_y =
       cyl.camera().principal_px.y - cyl.camera().focal_px * cal.height / cyl.Depth(out->theta);
@@ -153,15 +153,17 @@ void MeasureLowerMarkers(const cv::Mat& gray, const LowerCalibration& cal, int x
         share = phi[side];  // coverage of the whole pixel
       }
       if (range < floor) continue;  // too dark to tell a marker from the surface
-      const double c = share * std::clamp((p - v) / range, 0.0, 1.1);
+      // Not clamped at 0: noise on a dark surface would otherwise add up down each column.
+      const double c = share * std::clamp((p - v) / range, -0.5, 1.1);
       dst[i] = static_cast<float>(c);
       out->column_coverage[i] += c;
     }
   }
   const CoverageBand band{s->coverage.data(), c0, width, cal.band_top, rows};
-  // Patches: runs of columns holding at least half a pixel of marker, one of them a fifth of
-  // a marker's height, widened by a column either side for the antialiased ends.
-  const double lo = 0.5, hi = std::max(1.0, 0.2 * cal.marker_height_px);
+  // Patches: runs of columns holding at least a tenth of a marker's height of marker, one of
+  // them a fifth, widened by a column either side for the antialiased ends.
+  const double lo = std::max(0.5, 0.1 * cal.marker_height_px);
+  const double hi = std::max(1.0, 0.2 * cal.marker_height_px);
   for (int i = 0; i < width;) {
     if (out->column_coverage[i] < lo) {
       ++i;

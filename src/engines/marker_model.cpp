@@ -95,7 +95,8 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
   }
   // One marker that could be either side: a side is out when the other lower marker would show
   // and does not, or when it turns the upper marker away although the other side finds it
-  // plainly. Of two sides left, the one whose upper marker is found wins.
+  // plainly. Of two sides left, the one whose upper marker is found plainly (its silhouette as
+  // clear as in the reference) wins if the other finds none.
   std::size_t pick = 0;
   UpperMeasurement upper = Upper(gray, cyl, cal, options, yaw.hypotheses[0].yaw);
   out.candidates.insert(out.candidates.end(), upper.spots.begin(), upper.spots.end());
@@ -113,7 +114,13 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
       const bool hidden = UpperTurn(cal, yaw.hypotheses[i].yaw) > RadFromDeg(kHiddenDeg);
       alive[i] = !yaw.hypotheses[i].other_missing && !(hidden && telling[1 - i]);
     }
-    if (alive[0] && alive[1] && plain[0] != plain[1]) alive[plain[0] ? 1 : 0] = false;
+    if (alive[0] && alive[1]) {  // the side whose upper marker shows plainly, if only one does
+      if (telling[0] && !plain[1]) {
+        alive[1] = false;
+      } else if (telling[1] && !plain[0]) {
+        alive[0] = false;
+      }
+    }
     if (alive[0] == alive[1]) {
       out.note = alive[0] ? "one lower marker shows, and it could be either"
                           : "one lower marker shows, and the rest of the joint contradicts it";

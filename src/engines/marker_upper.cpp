@@ -196,14 +196,25 @@ double UpperSilhouetteSupport(const cv::Mat& gray, const CylinderView& cyl,
   return n > 0 ? sum / n : 0;
 }
 
-cv::Point2d ProjectUpperMarker(const CylinderView& cyl, const UpperCalibration& cal, double yaw,
-                               double bend) {
+namespace {
+
+// The upper marker's centroid in the camera frame (x right, y up, z depth).
+cv::Vec3d UpperMarkerPoint(const CylinderView& cyl, const UpperCalibration& cal, double yaw,
+                           double bend) {
   const Frame3 h = Horizontal(cyl);
   const double tf = cal.theta0 + yaw;
   const cv::Point2d front = std::cos(tf) * h.towards + cal.k * std::sin(tf) * h.across;
   const cv::Point2d side = -std::sin(tf) * h.towards + std::cos(tf) * h.across;
   const cv::Point2d m = h.axis - cal.e * std::sin(bend) * side + front;
-  return Project(cyl, m.x, cal.pivot_height + cal.e * std::cos(bend), m.y);
+  return {m.x, cal.pivot_height + cal.e * std::cos(bend), m.y};
+}
+
+}  // namespace
+
+cv::Point2d ProjectUpperMarker(const CylinderView& cyl, const UpperCalibration& cal, double yaw,
+                               double bend) {
+  const cv::Vec3d m = UpperMarkerPoint(cyl, cal, yaw, bend);
+  return Project(cyl, m[0], m[1], m[2]);
 }
 
 cv::Point2d ProjectPivot(const CylinderView& cyl, const UpperCalibration& cal) {
@@ -267,24 +278,34 @@ UpperMeasurement MeasureUpperMarker(const cv::Mat& gray, const CylinderView& cyl
     }
     curve.push_back(s);
   }
-  // Dark spots: local minima below the threshold, at least a marker apart along the curve.
+  // Dark spots: runs of the curve below the threshold, each at the middle of its darkest part (a
+  // marker's inside is evenly dark along the curve), at least a marker apart.
   std::vector<Spot> spots;
-  for (std::size_t i = 0; i < curve.size(); ++i) {
-    const Spot& s = curve[i];
-    if (s.score >= threshold) continue;
-    if ((i > 0 && curve[i - 1].score < s.score) ||
-        (i + 1 < curve.size() && curve[i + 1].score <= s.score)) {
+  for (std::size_t i = 0; i < curve.size();) {
+    if (curve[i].score >= threshold) {
+      ++i;
       continue;
     }
-    if (!spots.empty() && cv::norm(spots.back().p - s.p) < h) {
-      if (s.score < spots.back().score) spots.back() = s;
-      continue;
+    std::size_t j = i, darkest = i;
+    for (; j < curve.size() && curve[j].score < threshold; ++j) {
+      if (curve[j].score < curve[darkest].score) darkest = j;
     }
-    spots.push_back(s);
+    std::size_t first = j, last = i;
+    for (std::size_t k = i; k < j; ++k) {
+      if (curve[k].score <= curve[darkest].score + 0.03) first = std::min(first, k), last = k;
+    }
+    Spot spot = curve[(first + last) / 2];
+    spot.score = curve[darkest].score;
+    if (!spots.empty() && cv::norm(spots.back().p - spot.p) < h) {
+      if (spot.score < spots.back().score) spots.back() = spot;
+    } else {
+      spots.push_back(spot);
+    }
+    i = j;
   }
   std::sort(spots.begin(), spots.end(),
             [](const Spot& a, const Spot& b) { return a.score < b.score; });
-  if (spots.size() > 3) spots.resize(3);
+  if (spots.size() > 6) spots.resize(6);  // clutter along the curve can be darker than paper
   struct Candidate {
     double score, support, bend, residual;
     cv::Point2d centre;
@@ -296,9 +317,6 @@ UpperMeasurement MeasureUpperMarker(const cv::Mat& gray, const CylinderView& cyl
     blob.box = cv::Rect(s.p.x - h / 2, s.p.y - h / 2, h, h);
     blob.centre = s.p;
     if (!RefineMarker(gray, gray, cal.marker_ratio, h, &blob)) continue;
-    // A disc turned by the yaw shows cos(yaw) of its face: a shadow or a blot does not.
-    const double area = blob.coverage_px / (cal.face_area_px * std::max(0.2, std::cos(turn)));
-    if (cal.face_area_px > 0 && (area < 0.55 || area > 1.6)) continue;
     // The stretch from the pivot to the marker lies on the upper part: smooth shading, about as
     // bright as in the reference.
     const SurfaceStretch st = SampleStretch(gray, pivot, blob.centre);
@@ -307,7 +325,16 @@ UpperMeasurement MeasureUpperMarker(const cv::Mat& gray, const CylinderView& cyl
     Candidate c{s.score, 0, 0, 0, blob.centre};
     c.bend = SolveBend(cyl, cal, yaw, blob.centre, &c.residual);
     if (c.residual > tolerance * e_px + 1.5) continue;
+    // A disc turned by the yaw shows cos(yaw) of its face, larger as it comes nearer the camera:
+    // a shadow or a blot does not.
+    const double nearer =
+        UpperMarkerPoint(cyl, cal, 0, 0)[2] / UpperMarkerPoint(cyl, cal, yaw, c.bend)[2];
+    const double area =
+        blob.coverage_px / (cal.face_area_px * std::max(0.2, std::cos(turn)) * nearer * nearer);
+    if (cal.face_area_px > 0 && (area < 0.55 || area > 1.4)) continue;
     c.support = UpperSilhouetteSupport(gray, cyl, cal, yaw, c.bend);
+    // A dark spot where the upper part shows no silhouette at all is not on it.
+    if (c.support < 0.35 * cal.support) continue;
     found.push_back(c);
   }
   if (found.empty()) {

@@ -30,7 +30,7 @@ bool MissingWhereItWouldShow(const LowerScan& scan, const LowerCalibration& cal,
   if (hi <= lo) return false;
   const double x0 = cyl.XFromTheta(lo), x1 = cyl.XFromTheta(hi);
   const double width = std::abs(x1 - x0);
-  if (width < 0.7) return false;  // too thin to tell
+  if (width < 0.4) return false;  // too thin to tell
   // A disc's mean chord is pi/4 of its diameter; the part past the limb shows its middle rows.
   const double expected = width * 0.75 * cal.marker_height_px;
   return scan.CoverageBetween(x0 - 1, x1 + 1, &seen) < 0.35 * expected;

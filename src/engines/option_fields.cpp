@@ -298,7 +298,7 @@ const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields() {
       Real<M>("max_upper_turn_deg", &M::max_upper_turn_deg, 60, 1, 89, 1, "Max. upper turn",
               "the bend is measured while the upper marker faces the camera within this, "
               "degrees"),
-      Real<M>("upper_tolerance", &M::upper_tolerance, 0.12, 0.01, 1, 2, "Upper marker tolerance",
+      Real<M>("upper_tolerance", &M::upper_tolerance, 0.06, 0.01, 1, 2, "Upper marker tolerance",
               "how far (relative to e) the upper marker may lie from where the model puts it"),
   };
   return fields;

@@ -34,7 +34,7 @@ struct MarkerOptions {
   // The bend is measured while the upper marker faces the camera within this angle (degrees).
   double max_upper_turn_deg = 60;
   // How far (relative to e) the upper marker's centroid may lie from the model's.
-  double upper_tolerance = 0.12;
+  double upper_tolerance = 0.06;
   Status Check() const;  // messages name the flag (--low, --high, ...)
 };
 
