@@ -119,89 +119,72 @@ std::vector<int> RowsOnTheSurface(const cv::Mat& gray, const std::vector<int>& r
   return out;
 }
 
-}  // namespace
+// Where the reference's markers put things (image pixels).
+struct Layout {
+  double n, mid, y_low, e_px, h, cy, off;
+  int x0, width;  // the columns searched
+};
 
-bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Point2d left_px,
-                        cv::Point2d right_px, cv::Point2d upper_px, double marker_height_px,
-                        LowerCalibration* cal, LowerScan* scan, std::string* message) {
-  const double n = right_px.x - left_px.x;
-  const double mid = 0.5 * (left_px.x + right_px.x);
-  const double y_low = 0.5 * (left_px.y + right_px.y);
-  const double e_px = 0.5 * (y_low - upper_px.y);
-  const double h = marker_height_px;
-  const double cy = camera.principal_px.y;
-  const double off = std::abs(y_low - cy);
-  const int x0 = std::max(0, static_cast<int>(mid - 1.8 * n) - 4);
-  const int width = std::min(gray.cols, static_cast<int>(mid + 1.8 * n) + 5) - x0;
-  // First the silhouette from every row the straight reference shows it on: between the upper
-  // and the lower markers, and below them.
+// The silhouette from every row the straight reference shows it on (between the upper and the
+// lower markers, and below them): a first estimate of both edges.
+bool FirstSilhouette(const cv::Mat& gray, const Layout& g, double upper_y, double* left,
+                     double* right, std::string* message) {
   EdgeBand first[2];
-  first[0].rows = RowRange(upper_px.y + 0.7 * h + 2, y_low - 0.7 * h - 0.15 * off - 2, gray.rows);
-  first[1].rows = RowRange(y_low + 0.7 * h + 0.1 * off + 2, y_low + 1.6 * e_px, gray.rows);
+  first[0].rows =
+      RowRange(upper_y + 0.7 * g.h + 2, g.y_low - 0.7 * g.h - 0.15 * g.off - 2, gray.rows);
+  first[1].rows =
+      RowRange(g.y_low + 0.7 * g.h + 0.1 * g.off + 2, g.y_low + 1.6 * g.e_px, gray.rows);
   std::vector<std::vector<double>> profiles(2);
-  for (int b = 0; b < 2; ++b) ColumnProfile(gray, first[b].rows, x0, width, &profiles[b]);
+  for (int b = 0; b < 2; ++b) ColumnProfile(gray, first[b].rows, g.x0, g.width, &profiles[b]);
   int li = 0, ri = 0;
   if (first[0].rows.size() + first[1].rows.size() < 4 ||
-      !SymmetricEdges(profiles, x0, mid, 0.45 * n, 1.7 * n, &li, &ri)) {
+      !SymmetricEdges(profiles, g.x0, g.mid, 0.45 * g.n, 1.7 * g.n, &li, &ri)) {
     *message = "the joint shows too few rows beside its markers to find its silhouette";
     return false;
   }
-  for (int b = 0; b < 2; ++b) MeasureBand(gray, x0, width, li, ri, &first[b], &profiles[b]);
-  const double left = MeanEdge(first, 0), right = MeanEdge(first, 1);
+  for (int b = 0; b < 2; ++b) MeasureBand(gray, g.x0, g.width, li, ri, &first[b], &profiles[b]);
+  *left = MeanEdge(first, 0);
+  *right = MeanEdge(first, 1);
   const bool faint = first[0].strength[0] == 0 && first[1].strength[0] == 0 &&
                      first[0].strength[1] == 0 && first[1].strength[1] == 0;
-  if (std::isnan(left) || std::isnan(right) || faint) {
+  if (std::isnan(*left) || std::isnan(*right) || faint) {
     *message =
         "the joint's silhouette does not stand out from the background around the lower "
         "markers";
     return false;
   }
-  CylinderView cyl(camera, left, right);
-  if (!cyl.valid()) {
-    *message = "the joint's silhouette is too wide for the camera's field of view (--fov)";
-    return false;
-  }
-  // Rows the lower markers can reach: turned, they recede and move towards the horizon row.
+  return true;
+}
+
+// The rows the lower markers can reach (turned, they recede towards the horizon row), and the
+// bands above (below where a bent upper part can reach: 1.15 radii below the pivot) and below
+// them that show only the surface.
+bool ChooseBands(const cv::Mat& gray, const Layout& g, const CylinderView& cyl, double left,
+                 double right, LowerCalibration* cal, std::string* message) {
   const double d = cyl.distance();
-  const double toward = off / d * 1.2 + 2, away = off / std::max(1.0, d - 1) * 1.2 + 2;
-  const bool below_horizon = y_low >= cy;
-  cal->band_top =
-      std::max(0, static_cast<int>(std::floor(y_low - 0.5 * h - (below_horizon ? toward : away))));
+  const double toward = g.off / d * 1.2 + 2, away = g.off / std::max(1.0, d - 1) * 1.2 + 2;
+  const bool below_horizon = g.y_low >= g.cy;
+  cal->band_top = std::max(
+      0, static_cast<int>(std::floor(g.y_low - 0.5 * g.h - (below_horizon ? toward : away))));
   cal->band_bottom =
       std::min(gray.rows - 1,
-               static_cast<int>(std::ceil(y_low + 0.5 * h + (below_horizon ? away : toward))));
-  // Above the band, below where a bent upper part can reach (one radius below the pivot).
-  const double pivot_y = y_low - e_px;
-  EdgeBand* bands = cal->bands;
-  bands[0].rows = RowRange(pivot_y + 1.15 * cyl.half_width_px(), cal->band_top - 2, gray.rows);
-  bands[1].rows = RowsOnTheSurface(
-      gray, RowRange(cal->band_bottom + 2, y_low + 1.6 * e_px, gray.rows), left, right);
-  if (bands[0].rows.size() + bands[1].rows.size() < 3) {
+               static_cast<int>(std::ceil(g.y_low + 0.5 * g.h + (below_horizon ? away : toward))));
+  const double pivot_y = g.y_low - g.e_px;
+  cal->bands[0].rows = RowRange(pivot_y + 1.15 * cyl.half_width_px(), cal->band_top - 2, gray.rows);
+  cal->bands[1].rows = RowsOnTheSurface(
+      gray, RowRange(cal->band_bottom + 2, g.y_low + 1.6 * g.e_px, gray.rows), left, right);
+  if (cal->bands[0].rows.size() + cal->bands[1].rows.size() < 3) {
     *message = "the joint shows too few rows beside its markers to find its silhouette";
     return false;
   }
-  std::vector<double> surface(width, 0.0);
-  double rows = 0;
-  for (int b = 0; b < 2; ++b) {
-    MeasureBand(gray, x0, width, left, right, &bands[b], &profiles[b]);
-    for (int i = 0; i < width; ++i) surface[i] += bands[b].rows.size() * profiles[b][i];
-    rows += bands[b].rows.size();
-  }
-  for (double& v : surface) v /= rows;
-  cal->left_edge_px = MeanEdge(bands, 0);
-  cal->right_edge_px = MeanEdge(bands, 1);
-  if (bands[0].strength[0] == 0 && bands[1].strength[0] == 0 && bands[0].strength[1] == 0 &&
-      bands[1].strength[1] == 0) {
-    *message = "the joint's silhouette does not stand out from the background";
-    return false;
-  }
-  cal->search_px = std::max(3, static_cast<int>(std::lround(0.1 * (right - left))));
-  cal->marker_height_px = h;
-  *scan = LowerScan();
-  scan->left_edge_px = cal->left_edge_px;
-  scan->right_edge_px = cal->right_edge_px;
-  scan->cylinder = CylinderView(camera, cal->left_edge_px, cal->right_edge_px);
-  // Marker grey over surface grey at the two markers' centres, then the markers measured with it.
+  return true;
+}
+
+// Marker grey over surface grey at the two markers' centres, then the markers measured with it:
+// their zero-yaw angles, angular radius and height.
+bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, int x0,
+                             const std::vector<double>& surface, LowerCalibration* cal,
+                             LowerScan* scan, std::string* message) {
   LowerScratch scratch;
   for (int pass = 0; pass < 2; ++pass) {
     MeasureLowerMarkers(gray, *cal, x0, surface, true, scan, &scratch);
@@ -228,11 +211,60 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   cal->theta_left0 = l.theta;
   cal->theta_right0 = r.theta;
   cal->delta = 0.5 * (l.radius + r.radius);
-  const double f = camera.focal_px;
+  const double f = camera.focal_px, cy = camera.principal_px.y;
   const CylinderView& c = scan->cylinder;
   cal->height = 0.5 * ((cy - l.centre_px.y) * c.Depth(l.theta) / f +
                        (cy - r.centre_px.y) * c.Depth(r.theta) / f);
   return true;
+}
+
+}  // namespace
+
+bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Point2d left_px,
+                        cv::Point2d right_px, cv::Point2d upper_px, double marker_height_px,
+                        LowerCalibration* cal, LowerScan* scan, std::string* message) {
+  Layout g;
+  g.n = right_px.x - left_px.x;
+  g.mid = 0.5 * (left_px.x + right_px.x);
+  g.y_low = 0.5 * (left_px.y + right_px.y);
+  g.e_px = 0.5 * (g.y_low - upper_px.y);
+  g.h = marker_height_px;
+  g.cy = camera.principal_px.y;
+  g.off = std::abs(g.y_low - g.cy);
+  g.x0 = std::max(0, static_cast<int>(g.mid - 1.8 * g.n) - 4);
+  g.width = std::min(gray.cols, static_cast<int>(g.mid + 1.8 * g.n) + 5) - g.x0;
+  double left = 0, right = 0;
+  if (!FirstSilhouette(gray, g, upper_px.y, &left, &right, message)) return false;
+  const CylinderView cyl(camera, left, right);
+  if (!cyl.valid()) {
+    *message = "the joint's silhouette is too wide for the camera's field of view (--fov)";
+    return false;
+  }
+  if (!ChooseBands(gray, g, cyl, left, right, cal, message)) return false;
+  // Each band's own edges, and the surface's grey level per column from all of them.
+  std::vector<double> surface(g.width, 0.0), profile;
+  double rows = 0;
+  for (EdgeBand& band : cal->bands) {
+    MeasureBand(gray, g.x0, g.width, left, right, &band, &profile);
+    for (int i = 0; i < g.width; ++i) surface[i] += band.rows.size() * profile[i];
+    rows += band.rows.size();
+  }
+  for (double& v : surface) v /= rows;
+  const EdgeBand* bands = cal->bands;
+  if (bands[0].strength[0] == 0 && bands[1].strength[0] == 0 && bands[0].strength[1] == 0 &&
+      bands[1].strength[1] == 0) {
+    *message = "the joint's silhouette does not stand out from the background";
+    return false;
+  }
+  cal->left_edge_px = MeanEdge(bands, 0);
+  cal->right_edge_px = MeanEdge(bands, 1);
+  cal->search_px = std::max(3, static_cast<int>(std::lround(0.1 * (right - left))));
+  cal->marker_height_px = g.h;
+  *scan = LowerScan();
+  scan->left_edge_px = cal->left_edge_px;
+  scan->right_edge_px = cal->right_edge_px;
+  scan->cylinder = CylinderView(camera, cal->left_edge_px, cal->right_edge_px);
+  return MeasureReferenceMarkers(gray, camera, g.x0, surface, cal, scan, message);
 }
 
 }  // namespace armmimic::internal

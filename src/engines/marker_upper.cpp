@@ -6,7 +6,6 @@
 #include "marker_upper.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <vector>
 
@@ -15,9 +14,6 @@
 
 namespace armmimic::internal {
 namespace {
-
-// Bends beyond this would fold the upper part down past the pivot's height onto the lower one.
-constexpr double kMaxBendDeg = 120;
 
 struct Frame3 {
   cv::Point2d axis, towards, across;  // horizontal (x, z): axis position, unit vectors
@@ -33,34 +29,6 @@ Frame3 Horizontal(const CylinderView& cyl) {
 cv::Point2d Project(const CylinderView& cyl, double x, double y, double z) {
   const MarkerCamera& c = cyl.camera();
   return {c.principal_px.x + c.focal_px * x / z, c.principal_px.y - c.focal_px * y / z};
-}
-
-// Mean of the 3x3 pixels around p, and the level of the ring at `radius` around it (its third
-// brightest of twelve samples: the surface, even where the ring crosses a limb).
-bool Darkness(const cv::Mat& gray, cv::Point p, int radius, double* score) {
-  if (p.x < radius + 1 || p.y < radius + 1 || p.x >= gray.cols - radius - 1 ||
-      p.y >= gray.rows - radius - 1) {
-    return false;
-  }
-  double centre = 0;
-  for (int dy = -1; dy <= 1; ++dy) {
-    const uchar* row = gray.ptr<uchar>(p.y + dy);
-    centre += row[p.x - 1] + row[p.x] + row[p.x + 1];
-  }
-  static const std::array<cv::Point2d, 12> kRing = [] {
-    std::array<cv::Point2d, 12> r;
-    for (int i = 0; i < 12; ++i) r[i] = {std::cos(i * kPi / 6), std::sin(i * kPi / 6)};
-    return r;
-  }();
-  std::array<double, 12> ring;
-  for (int i = 0; i < 12; ++i) {
-    ring[i] = gray.at<uchar>(p.y + static_cast<int>(std::lround(radius * kRing[i].y)),
-                             p.x + static_cast<int>(std::lround(radius * kRing[i].x)));
-  }
-  std::nth_element(ring.begin(), ring.begin() + 2, ring.end(), std::greater<double>());
-  if (ring[2] < 20) return false;
-  *score = centre / 9 / ring[2];
-  return true;
 }
 
 double Sample(const cv::Mat& gray, cv::Point2d p) {
@@ -196,9 +164,6 @@ double UpperSilhouetteSupport(const cv::Mat& gray, const CylinderView& cyl,
   return n > 0 ? sum / n : 0;
 }
 
-namespace {
-
-// The upper marker's centroid in the camera frame (x right, y up, z depth).
 cv::Vec3d UpperMarkerPoint(const CylinderView& cyl, const UpperCalibration& cal, double yaw,
                            double bend) {
   const Frame3 h = Horizontal(cyl);
@@ -208,8 +173,6 @@ cv::Vec3d UpperMarkerPoint(const CylinderView& cyl, const UpperCalibration& cal,
   const cv::Point2d m = h.axis - cal.e * std::sin(bend) * side + front;
   return {m.x, cal.pivot_height + cal.e * std::cos(bend), m.y};
 }
-
-}  // namespace
 
 cv::Point2d ProjectUpperMarker(const CylinderView& cyl, const UpperCalibration& cal, double yaw,
                                double bend) {
@@ -247,130 +210,6 @@ double SolveBend(const CylinderView& cyl, const UpperCalibration& cal, double ya
   const cv::Point2d d = miss(best);
   if (residual_px) *residual_px = std::sqrt(d.dot(d));
   return best;
-}
-
-UpperMeasurement MeasureUpperMarker(const cv::Mat& gray, const CylinderView& cyl,
-                                    const UpperCalibration& cal, double yaw, double tolerance) {
-  UpperMeasurement out;
-  const cv::Point2d pivot = ProjectPivot(cyl, cal);
-  const double e_px = cv::norm(ProjectUpperMarker(cyl, cal, yaw, 0) - pivot);
-  const int h = std::max(3, cal.marker_height_px);
-  const int ring = std::max(3, static_cast<int>(std::lround(0.85 * h)));
-  // A marker's centre is nearly as dark as the paper against the surface round it; shading
-  // (a limb, the shadowed side) is only a little darker than its surroundings.
-  const double threshold = cal.marker_ratio + 0.3 * (1 - cal.marker_ratio);
-  const double turn = cal.theta0 + yaw;
-  // Darkness along the model's curve (every bend), a pixel either side.
-  struct Spot {
-    double bend, score;
-    cv::Point p;
-  };
-  std::vector<Spot> curve;
-  const double step = 0.8 / std::max(8.0, e_px);
-  for (double b = RadFromDeg(-kMaxBendDeg); b <= RadFromDeg(kMaxBendDeg); b += step) {
-    const cv::Point2d q = ProjectUpperMarker(cyl, cal, yaw, b);
-    Spot s{b, 1e9, {}};
-    for (int dx : {0, -2, 2}) {
-      const cv::Point p(static_cast<int>(std::lround(q.x)) + dx,
-                        static_cast<int>(std::lround(q.y)));
-      double score = 0;
-      if (Darkness(gray, p, ring, &score) && score < s.score) s.score = score, s.p = p;
-    }
-    curve.push_back(s);
-  }
-  // Dark spots: runs of the curve below the threshold, each at the middle of its darkest part (a
-  // marker's inside is evenly dark along the curve), at least a marker apart.
-  std::vector<Spot> spots;
-  for (std::size_t i = 0; i < curve.size();) {
-    if (curve[i].score >= threshold) {
-      ++i;
-      continue;
-    }
-    std::size_t j = i, darkest = i;
-    for (; j < curve.size() && curve[j].score < threshold; ++j) {
-      if (curve[j].score < curve[darkest].score) darkest = j;
-    }
-    std::size_t first = j, last = i;
-    for (std::size_t k = i; k < j; ++k) {
-      if (curve[k].score <= curve[darkest].score + 0.03) first = std::min(first, k), last = k;
-    }
-    Spot spot = curve[(first + last) / 2];
-    spot.score = curve[darkest].score;
-    if (!spots.empty() && cv::norm(spots.back().p - spot.p) < h) {
-      if (spot.score < spots.back().score) spots.back() = spot;
-    } else {
-      spots.push_back(spot);
-    }
-    i = j;
-  }
-  std::sort(spots.begin(), spots.end(),
-            [](const Spot& a, const Spot& b) { return a.score < b.score; });
-  if (spots.size() > 6) spots.resize(6);  // clutter along the curve can be darker than paper
-  struct Candidate {
-    double score, support, bend, residual;
-    cv::Point2d centre;
-  };
-  std::vector<Candidate> found;
-  for (const Spot& s : spots) {
-    out.spots.emplace_back(s.p.x - h / 2, s.p.y - h / 2, h, h);
-    MarkerBlob blob;
-    blob.box = cv::Rect(s.p.x - h / 2, s.p.y - h / 2, h, h);
-    blob.centre = s.p;
-    if (!RefineMarker(gray, gray, cal.marker_ratio, h, &blob)) continue;
-    // The stretch from the pivot to the marker lies on the upper part: smooth shading, about as
-    // bright as in the reference.
-    const SurfaceStretch st = SampleStretch(gray, pivot, blob.centre);
-    const double level = cal.stretch_level > 0 ? st.level / cal.stretch_level : 1;
-    if (st.uneven > 0.3 || level < 0.5 || level > 2) continue;
-    Candidate c{s.score, 0, 0, 0, blob.centre};
-    c.bend = SolveBend(cyl, cal, yaw, blob.centre, &c.residual);
-    if (c.residual > tolerance * e_px + 1.5) continue;
-    // A disc turned by the yaw shows cos(yaw) of its face, larger as it comes nearer the camera:
-    // a shadow or a blot does not.
-    const double nearer =
-        UpperMarkerPoint(cyl, cal, 0, 0)[2] / UpperMarkerPoint(cyl, cal, yaw, c.bend)[2];
-    const double area =
-        blob.coverage_px / (cal.face_area_px * std::max(0.2, std::cos(turn)) * nearer * nearer);
-    if (cal.face_area_px > 0 && (area < 0.55 || area > 1.4)) continue;
-    c.support = UpperSilhouetteSupport(gray, cyl, cal, yaw, c.bend);
-    // A dark spot where the upper part shows no silhouette at all is not on it.
-    if (c.support < 0.35 * cal.support) continue;
-    found.push_back(c);
-  }
-  if (found.empty()) {
-    out.note = "no dark spot where the model puts the upper marker";
-    return out;
-  }
-  // Dark spots beside the upper part (clutter) put its silhouette where the image shows none:
-  // the spot whose bend the silhouette bears out clearly best wins; otherwise the darkest, if
-  // clearly the darkest.
-  std::sort(found.begin(), found.end(),
-            [](const Candidate& a, const Candidate& b) { return a.support > b.support; });
-  const Candidate* pick = &found[0];
-  if (found.size() > 1 && !(found[0].support >= 4 && found[0].support >= 1.5 * found[1].support)) {
-    std::sort(found.begin(), found.end(),
-              [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
-    pick = &found[0];
-    out.ambiguous = found[1].score < found[0].score + 0.1;
-  }
-  out.found = true;
-  out.bend = pick->bend;
-  out.support = pick->support;
-  out.residual_px = pick->residual;
-  out.centre_px = pick->centre;
-  // The centroid again with the surface's shading taken along the upper part's axis.
-  cv::Point2d refined = pick->centre;
-  if (UpperCentroid(gray, cyl, cal, yaw, pick->bend, &refined)) {
-    double residual = 0;
-    const double bend = SolveBend(cyl, cal, yaw, refined, &residual);
-    if (residual <= tolerance * e_px + 1.5) {
-      out.bend = bend;
-      out.residual_px = residual;
-      out.centre_px = refined;
-    }
-  }
-  if (out.ambiguous) out.note = "two dark spots fit the upper marker";
-  return out;
 }
 
 }  // namespace armmimic::internal

@@ -23,8 +23,14 @@ struct UpperCalibration {
   double stretch_level = 0;    // grey level between the pivot and the upper marker (reference)
 };
 
-// Where the model puts the upper marker's centroid in the image for yaw `yaw` and bend `bend`
-// (radians), with the lower part at `cyl`.
+// Bends beyond this would fold the upper part down past the pivot's height onto the lower one.
+inline constexpr double kMaxBendDeg = 120;
+
+// The upper marker's centroid in the camera frame (radii; x right, y up, z depth) for yaw `yaw`
+// and bend `bend` (radians), with the lower part at `cyl`.
+cv::Vec3d UpperMarkerPoint(const CylinderView& cyl, const UpperCalibration& cal, double yaw,
+                           double bend);
+// ... and in the image.
 cv::Point2d ProjectUpperMarker(const CylinderView& cyl, const UpperCalibration& cal, double yaw,
                                double bend);
 // The pivot's image position.
