@@ -8,10 +8,18 @@
 # Tiers (docs/marker.md): easy = plain or gradient background, normal light; medium = any
 # background and light; hard = medium with 8 dark marker-like blobs and noise 3.
 # Each scene gives 24 views with yaw in [-135, 135] and 6 views with yaw in [-5, 5], bend in
-# [-60, 60]. MARKER_EVAL_SET=tuning (default; seeds 1-10, 101-110, 201-210) or heldout (seeds
-# 1001-1010, 1101-1110, 1201-1210: never used for tuning). MARKER_EVAL_SYNTH adds synth flags
+# [-60, 60]. MARKER_EVAL_SET=tuning (default; seeds 1-10, 101-110, 201-210, or with
+# MARKER_EVAL_SEEDS=N up to 99 the first N of each hundred: every seed below 1000 is for tuning)
+# or heldout (seeds 1001-1010, 1101-1110, 1201-1210: never used for tuning). MARKER_EVAL_SYNTH
+# adds synth flags
 # (e.g. "--fov 45" to render with another lens than the engine assumes), MARKER_EVAL_FLAGS
-# analyze flags. Scenes already in WORK_DIR are reused.
+# analyze flags (with --thesis, its unsigned yaw is scored against |yaw|). Scenes already in
+# WORK_DIR are reused.
+# Columns: readable = views with a lower marker facing the camera within 75 degrees; answered =
+# their share read (ok); yaw_mae/max/bias = error of the signed yaw over those; near0_max = the
+# largest yaw error within 5 degrees of zero / how many such views were read; bend_mae/max over
+# the views read with a bend; bend_read = share of views whose upper marker faces the camera
+# within 75 degrees that got a bend; wrong = views read with an error over 15 degrees.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR="${1:-build}"
@@ -33,6 +41,11 @@ case "${MARKER_EVAL_SET:-tuning}" in
   heldout) FIRST=1001 ;;
   *) echo "marker-eval: MARKER_EVAL_SET must be tuning or heldout" >&2; exit 2 ;;
 esac
+SEEDS="${MARKER_EVAL_SEEDS:-10}"
+if [[ "${MARKER_EVAL_SET:-tuning}" == heldout && "$SEEDS" != 10 ]] || ((SEEDS < 1 || SEEDS > 99)); then
+  echo "marker-eval: MARKER_EVAL_SEEDS must be 1..99 (tuning only; held-out has 10)" >&2
+  exit 2
+fi
 
 # Joins truth.tsv and angles.tsv by frame: tier, scene, frame, truth signed yaw, truth bend,
 # readable, upper readable, status, yaw error (signed), bend error.
@@ -47,7 +60,9 @@ join_rows() {
     file == 2 {
       f = $1; ey = "nan"; eb = "nan"
       if ($a["status"] == "ok") {
-        ey = $a["yaw_signed_deg"] - yaw[f]
+        # --thesis writes no signed yaw: its yaw_deg is then scored against |yaw|.
+        if ($a["yaw_signed_deg"] == "nan") ey = $a["yaw_deg"] - (yaw[f] < 0 ? -yaw[f] : yaw[f])
+        else ey = $a["yaw_signed_deg"] - yaw[f]
         if (ey > 180) ey -= 360; if (ey <= -180) ey += 360
         if ($a["bend_deg"] != "nan") eb = $a["bend_deg"] - bend[f]
       }
@@ -57,9 +72,10 @@ join_rows() {
 
 ROWS="$WORK/rows.tsv"
 : >"$ROWS"
+FAILED=0
 for tier in easy medium hard; do
   read -r -a FLAGS <<<"${TIER_FLAGS[$tier]}"
-  for ((k = 0; k < 10; k++)); do
+  for ((k = 0; k < SEEDS; k++)); do
     seed=$((FIRST + TIER_BASE[$tier] + k))
     for part in wide near; do
       if [[ $part == wide ]]; then views=(--views 24 --max-yaw 135); else views=(--views 6 --max-yaw 5); fi
@@ -67,14 +83,25 @@ for tier in easy medium hard; do
       if [[ ! -f "$dir/truth.tsv" ]]; then
         "$CLI" -q synth marker "$dir" --seed "$seed" "${views[@]}" "${FLAGS[@]}" "${SYNTH_EXTRA[@]}"
       fi
-      "$CLI" -q analyze "$dir/views" -o "$dir/angles.tsv" --engine marker \
-        --reference "$dir/reference.png" "${EXTRA[@]}"
+      if ! "$CLI" -q analyze "$dir/views" -o "$dir/angles.tsv" --engine marker \
+        --reference "$dir/reference.png" "${EXTRA[@]}" 2>"$dir/analyze.err"; then
+        # A reference the engine refuses: every view of the scene counts as lost.
+        echo "marker-eval: $tier seed $seed ($part): $(tail -1 "$dir/analyze.err")" >&2
+        FAILED=$((FAILED + 1))
+        awk -F'\t' -v tier="$tier" -v scene="$seed-$part" '
+          /^#/ { next }
+          $1 == "frame" { for (i = 1; i <= NF; i++) t[$i] = i; next }
+          { print tier, scene, $1, $t["yaw_signed_deg"], $t["bend_deg"], $t["readable"],
+                  $t["upper_readable"], "lost", "nan", "nan" }' OFS='\t' "$dir/truth.tsv" >>"$ROWS"
+        continue
+      fi
       join_rows "$tier" "$seed-$part" "$dir/truth.tsv" "$dir/angles.tsv" >>"$ROWS"
     done
   done
 done
 
-echo "marker-eval: ${MARKER_EVAL_SET:-tuning} set, per-view rows in $ROWS"
+echo "marker-eval: ${MARKER_EVAL_SET:-tuning} set, per-view rows in $ROWS;" \
+  "$FAILED scene(s) refused by the engine (their views count as lost)"
 awk -F'\t' '
   function abs(v) { return v < 0 ? -v : v }
   { tier = $1; n[tier]++ }

@@ -70,9 +70,13 @@ std::vector<MarkerBlob> FindMarkerCandidates(const cv::Mat& bgr, const MarkerOpt
     for (std::size_t j = i + 1; j < small.size(); ++j) {
       const cv::Rect& b = s->components[small[j]].box;
       if (b.x >= a.x + a.width) break;
-      // Fragments of one marker nest (a rim around its core); a neighbour only touches.
+      // Fragments of one marker nest (a rim around its core) or, when shading across a large
+      // marker exceeds the flood range, split it into two overlapping halves whose union is
+      // hardly bigger than either; a neighbour only touches.
       const int overlap = (a & b).area();
-      if (overlap > 0 && 2 * overlap >= std::min(a.area(), b.area())) {
+      const int larger = std::max(a.area(), b.area());
+      if (overlap > 0 &&
+          (2 * overlap >= std::min(a.area(), b.area()) || 5 * (a | b).area() <= 8 * larger)) {
         parent[Find(parent, static_cast<int>(j))] = Find(parent, static_cast<int>(i));
       }
     }

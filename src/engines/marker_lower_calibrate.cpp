@@ -119,6 +119,36 @@ std::vector<int> RowsOnTheSurface(const cv::Mat& gray, const std::vector<int>& r
   return out;
 }
 
+// An edge no band shows (the limb as bright as the wall behind it), from the other edge and the
+// reference's markers: at zero yaw the lower markers lie symmetrically about the front, where
+// the upper marker is, so theta(left) + theta(right) = 2 theta(upper). Bisection over the hidden
+// edge's column. NaN when no column satisfies it.
+double HiddenEdge(const MarkerCamera& camera, double known, int hidden_side, cv::Point2d left_px,
+                  cv::Point2d right_px, cv::Point2d upper_px) {
+  auto misfit = [&](double other) {
+    const CylinderView c =
+        hidden_side == 1 ? CylinderView(camera, known, other) : CylinderView(camera, other, known);
+    if (!c.valid()) return kNaN;
+    return c.ThetaFromX(left_px.x) + c.ThetaFromX(right_px.x) - 2 * c.ThetaFromX(upper_px.x);
+  };
+  const double n = right_px.x - left_px.x;
+  const double sign = hidden_side == 1 ? 1 : -1;
+  // The hidden edge lies beyond the far marker, at most 3 pair-spacings from the known edge.
+  const double far = hidden_side == 1 ? right_px.x : left_px.x;
+  double a = far + sign, b = known + sign * 3 * n;
+  double fa = misfit(a), fb = misfit(b);
+  if (!(fa * fb < 0)) return kNaN;
+  for (int it = 0; it < 60; ++it) {
+    const double m = 0.5 * (a + b), fm = misfit(m);
+    if (fa * fm <= 0) {
+      b = m, fb = fm;
+    } else {
+      a = m, fa = fm;
+    }
+  }
+  return 0.5 * (a + b);
+}
+
 // Where the reference's markers put things (image pixels).
 struct Layout {
   double n, mid, y_low, e_px, h, cy, off;
@@ -258,6 +288,16 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   }
   cal->left_edge_px = MeanEdge(bands, 0);
   cal->right_edge_px = MeanEdge(bands, 1);
+  for (int side = 0; side < 2; ++side) {
+    if (bands[0].strength[side] != 0 || bands[1].strength[side] != 0) continue;
+    const double known = side == 0 ? cal->right_edge_px : cal->left_edge_px;
+    const double edge = HiddenEdge(camera, known, side, left_px, right_px, upper_px);
+    if (std::isnan(edge)) {
+      *message = "the joint's silhouette does not stand out from the background on one side";
+      return false;
+    }
+    (side == 0 ? cal->left_edge_px : cal->right_edge_px) = edge;
+  }
   cal->search_px = std::max(3, static_cast<int>(std::lround(0.1 * (right - left))));
   cal->marker_height_px = g.h;
   *scan = LowerScan();
