@@ -12,6 +12,8 @@ namespace {
 
 // A silhouette step fainter than this (grey levels a pixel) wanders with the noise.
 constexpr double kTrackable = 5;
+// ... and one fainter than this is placed better by the markers' symmetry.
+constexpr double kPlain = 15;
 
 std::vector<int> RowRange(double from, double to, int rows) {
   std::vector<int> out;
@@ -288,15 +290,23 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   }
   cal->left_edge_px = MeanEdge(bands, 0);
   cal->right_edge_px = MeanEdge(bands, 1);
-  for (int side = 0; side < 2; ++side) {
-    if (bands[0].strength[side] != 0 || bands[1].strength[side] != 0) continue;
-    const double known = side == 0 ? cal->right_edge_px : cal->left_edge_px;
-    const double edge = HiddenEdge(camera, known, side, left_px, right_px, upper_px);
-    if (std::isnan(edge)) {
+  // A faint edge may be placed on the surface's shading near the limb instead: the weaker side,
+  // unless plainly seen, is checked against where the reference's lower markers lie
+  // symmetrically about the upper one, and moved there when more than a pixel off.
+  auto steepest = [&](int side) {
+    return std::max(std::abs(bands[0].strength[side]), std::abs(bands[1].strength[side]));
+  };
+  const int weak = steepest(0) < steepest(1) ? 0 : 1;
+  if (steepest(weak) < kPlain) {
+    const double known = weak == 0 ? cal->right_edge_px : cal->left_edge_px;
+    const double edge = HiddenEdge(camera, known, weak, left_px, right_px, upper_px);
+    double& fitted = weak == 0 ? cal->left_edge_px : cal->right_edge_px;
+    if (!std::isnan(edge)) {
+      if (steepest(weak) == 0 || std::abs(edge - fitted) > 1) fitted = edge;
+    } else if (steepest(weak) == 0) {
       *message = "the joint's silhouette does not stand out from the background on one side";
       return false;
     }
-    (side == 0 ? cal->left_edge_px : cal->right_edge_px) = edge;
   }
   cal->search_px = std::max(3, static_cast<int>(std::lround(0.1 * (right - left))));
   cal->marker_height_px = g.h;
