@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
+#include "armmimic/core/angles.h"
 #include "armmimic/engines/engine.h"
 #include "armmimic/synth/marker_scene.h"
 
@@ -176,6 +177,36 @@ TEST_F(MarkerViews, NoReadableLowerMarkerIsLost) {
     const ArmMeasurement m = View(yaw, 10, &truth);
     EXPECT_FALSE(truth.readable) << yaw;
     EXPECT_EQ(m.phase, MeasurementPhase::kLost) << yaw << " read as " << m.yaw_signed_deg;
+  }
+}
+
+TEST(MarkerEngine, AWallAsBrightAsTheLimbStillGivesTheYaw) {
+  const synth::MarkerSceneRenderer scene(PlainScene());
+  // The lower part's right limb, from the pinhole camera (60 degrees, principal point centred).
+  const double f = 160 / std::tan(30 * kPi / 180);
+  const cv::Point2d pivot = scene.model().pivot_px;
+  const double phi = std::atan((pivot.x - 160) / f);
+  const double half = std::asin(scene.model().radius_px / std::hypot(pivot.x - 160, f));
+  const int limb = static_cast<int>(std::floor(160 + f * std::tan(phi + half)));
+  // Below the pivot, the wall right of the limb takes the limb's own grey in each row.
+  auto hide = [&](cv::Mat image) {
+    for (int y = static_cast<int>(pivot.y + 40); y < image.rows; ++y) {
+      const cv::Vec3b limb_grey = image.at<cv::Vec3b>(y, limb - 1);
+      for (int x = limb + 1; x < image.cols; ++x) image.at<cv::Vec3b>(y, x) = limb_grey;
+    }
+    return image;
+  };
+  auto engine = MarkerEngine();
+  EngineContext context;
+  context.reference = hide(scene.Reference());
+  const Status begun = engine->Begin(context);
+  ASSERT_TRUE(begun.ok()) << begun.message();
+  for (double yaw : {-70.0, -20.0, 15.0, 60.0}) {
+    Frame frame;
+    frame.image = hide(scene.RenderPose({yaw, 10}, 5));
+    const ArmMeasurement m = engine->Process(frame);
+    ASSERT_EQ(m.phase, MeasurementPhase::kOk) << yaw << ": " << m.note;
+    EXPECT_NEAR(m.yaw_signed_deg, yaw, 1.0);
   }
 }
 
