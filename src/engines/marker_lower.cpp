@@ -21,7 +21,9 @@ namespace {
 
 constexpr double kEdgeNoisePx = 0.12;   // spread of one row's interval end, pixels
 constexpr double kCommonEdgePx = 0.04;  // ... shared by every row of a patch
-constexpr double kCutEdgePx = 0.3;      // ... for a patch the limb cuts (inner end only)
+constexpr double kCutEdgePx = 0.3;      // ... for an end within kNearLimbPx of the limb
+constexpr double kNearLimbPx = 1.5;
+constexpr double kChordSpread = 0.004;  // radians: the half-chord from the reference's radius
 
 // Coverage rows of the band: [band_top, band_bottom], columns [x0, x0 + width).
 struct CoverageBand {
@@ -71,36 +73,49 @@ bool FitPatch(const CoverageBand& band, const CylinderView& cyl, const LowerCali
   if (n == 0) return false;
   const bool cut_l = 3 * cut_left > n, cut_r = 3 * cut_right > n;
   if (cut_l && cut_r) return false;
-  double theta_sum = 0, delta2_sum = 0, var_sum = 0;
-  int used = 0;
+  // Two readings of the centre's angle per row: the middle of the interval's ends, and the inner
+  // end (the one nearer the front) plus the disc's half-chord at that row, the only one when the
+  // limb cuts the far end. Near a limb an end's angle changes fast with the column and the edge
+  // pixel's mixture is least sure; the reading with the smaller expected spread is used.
+  struct Reading {
+    double sum = 0, noise = 0, common = 0;  // angles, and the spreads' squares, summed
+    int n = 0;
+    double Spread() const { return std::sqrt(noise / n / n + common / n); }
+  } middle, inner;
+  const bool inner_is_left = cut_r || (!cut_l && theta_guess > 0);
+  double delta2_sum = 0;
   for (const RowEnds& e : ends) {
     const double ta = cyl.ThetaFromX(e.a), tb = cyl.ThetaFromX(e.b);
+    const double sa = cyl.ThetaSlope(e.a), sb = cyl.ThetaSlope(e.b);
+    const double ca = e.a < left_edge + kNearLimbPx ? kCutEdgePx : kCommonEdgePx;
+    const double cb = e.b > right_edge - kNearLimbPx ? kCutEdgePx : kCommonEdgePx;
     if (!cut_l && !cut_r) {
-      theta_sum += 0.5 * (ta + tb);
+      middle.sum += 0.5 * (ta + tb);
+      middle.noise += 0.25 * (sa * sa + sb * sb) * kEdgeNoisePx * kEdgeNoisePx;
+      middle.common += 0.25 * (sa * sa * ca * ca + sb * sb * cb * cb);
+      ++middle.n;
       delta2_sum += 0.25 * (tb - ta) * (tb - ta) + e.v * e.v;
-      const double sa = cyl.ThetaSlope(e.a), sb = cyl.ThetaSlope(e.b);
-      var_sum += 0.25 * (sa * sa + sb * sb);
-    } else {
-      if (std::abs(e.v) > 0.8 * cal.delta) continue;
-      const double half = std::sqrt(std::max(0.0, cal.delta * cal.delta - e.v * e.v));
-      theta_sum += cut_r ? ta + half : tb - half;
-      const double s = cyl.ThetaSlope(cut_r ? e.a : e.b);
-      var_sum += s * s;
     }
-    ++used;
+    if (cal.delta > 0 && std::abs(e.v) <= 0.8 * cal.delta) {
+      const double half = std::sqrt(cal.delta * cal.delta - e.v * e.v);
+      const double s = inner_is_left ? sa : sb, c = inner_is_left ? ca : cb;
+      inner.sum += inner_is_left ? ta + half : tb - half;
+      inner.noise += s * s * kEdgeNoisePx * kEdgeNoisePx;
+      inner.common += s * s * c * c + kChordSpread * kChordSpread;
+      ++inner.n;
+    }
   }
-  if (used == 0) return false;
-  out->theta = theta_sum / used;
-  // Row noise averages out; what is common to the rows (the edges' shading, the limb) does not.
-  const double slope = std::sqrt(var_sum / used);
-  const double common_px = cut_l || cut_r ? kCutEdgePx : kCommonEdgePx;
-  out->sigma = slope * std::hypot(kEdgeNoisePx / std::sqrt(static_cast<double>(used)), common_px);
+  const bool use_middle = middle.n > 0 && (inner.n == 0 || middle.Spread() <= inner.Spread());
+  const Reading& r = use_middle ? middle : inner;
+  if (r.n == 0) return false;
+  out->theta = r.sum / r.n;
+  out->sigma = r.Spread();
   out->cut = cut_l || cut_r;
   out->first_col = c0;
   out->last_col = c1;
   out->coverage_px = total;
   out->centre_px = {cyl.XFromTheta(out->theta), yc};
-  out->radius = out->cut ? kNaN : std::sqrt(delta2_sum / used);
+  out->radius = middle.n > 0 ? std::sqrt(delta2_sum / middle.n) : kNaN;
   if (calibrating) return !out->cut;
   // A disc of the markers' size, not a shadow or a fleck.
   if (!out->cut && (out->radius < 0.7 * cal.delta || out->radius > 1.35 * cal.delta)) return false;
@@ -246,16 +261,16 @@ bool ScanLowerPart(const cv::Mat& gray, const LowerCalibration& cal, const Marke
     return false;
   }
   for (double& v : s->surface) v /= rows;
-  // The joint keeps its width: an edge lost against the background, or one that moved unlike the
-  // other, moves with the better-seen one.
-  for (int side = 0; side < 2; ++side)
-    shift[side] = weight[side] > 0 ? shift[side] / weight[side] : kNaN;
+  // The joint moves as a whole and keeps its width: both edges shift alike, by the weighted mean
+  // of what their steps show, or by the better-seen side's shift alone when the other moved
+  // unlike it (caught on something else) or is lost against the background.
   const int better = weight[0] >= weight[1] ? 0 : 1;
-  for (int side = 0; side < 2; ++side) {
-    if (std::isnan(shift[side]) || std::abs(shift[side] - shift[better]) > 1) {
-      shift[side] = shift[better];
-    }
+  const double best = shift[better] / weight[better];
+  double common = best;
+  if (weight[1 - better] > 0 && std::abs(shift[1 - better] / weight[1 - better] - best) <= 1) {
+    common = (shift[0] + shift[1]) / (weight[0] + weight[1]);
   }
+  shift[0] = shift[1] = common;
   out->left_edge_px = cal.left_edge_px + shift[0];
   out->right_edge_px = cal.right_edge_px + shift[1];
   out->cylinder = CylinderView(camera, out->left_edge_px, out->right_edge_px);

@@ -290,14 +290,21 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   }
   cal->left_edge_px = MeanEdge(bands, 0);
   cal->right_edge_px = MeanEdge(bands, 1);
-  // A faint edge may be placed on the surface's shading near the limb instead: the weaker side,
-  // unless plainly seen, is checked against where the reference's lower markers lie
+  // A faint edge may be placed on the surface's shading near the limb instead, and bands that
+  // disagree (a silhouette is one column) show an edge caught on something else: such a side
+  // (the weaker, if both) is checked against where the reference's lower markers lie
   // symmetrically about the upper one, and moved there when more than a pixel off.
   auto steepest = [&](int side) {
     return std::max(std::abs(bands[0].strength[side]), std::abs(bands[1].strength[side]));
   };
-  const int weak = steepest(0) < steepest(1) ? 0 : 1;
-  if (steepest(weak) < kPlain) {
+  auto unsure = [&](int side) {
+    const bool both = bands[0].strength[side] != 0 && bands[1].strength[side] != 0;
+    return steepest(side) < kPlain ||
+           (both && std::abs(bands[0].edge_px[side] - bands[1].edge_px[side]) > 1);
+  };
+  int weak = steepest(0) < steepest(1) ? 0 : 1;
+  if (unsure(1 - weak) && !unsure(weak)) weak = 1 - weak;
+  if (unsure(weak)) {
     const double known = weak == 0 ? cal->right_edge_px : cal->left_edge_px;
     const double edge = HiddenEdge(camera, known, weak, left_px, right_px, upper_px);
     double& fitted = weak == 0 ? cal->left_edge_px : cal->right_edge_px;
