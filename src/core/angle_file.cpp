@@ -47,7 +47,8 @@ std::string FormatMetaLine(const AngleMeta& meta) {
   return line;
 }
 
-std::string FormatAngleRow(const AngleRow& row, bool file_column, bool signed_yaw_column) {
+std::string FormatAngleRow(const AngleRow& row, bool file_column, bool confidence_column,
+                           bool signed_yaw_column) {
   const bool ok = row.ok();
   auto ang = [&](double v) { return FormatNumber(ok ? v : kNaN, 3); };
   auto px = [&](double v) { return FormatNumber(ok ? v : kNaN, 2); };
@@ -64,6 +65,10 @@ std::string FormatAngleRow(const AngleRow& row, bool file_column, bool signed_ya
   for (double v : {row.upper_cx, row.upper_cy, row.fore_cx, row.fore_cy}) {
     s += '\t';
     s += px(v);
+  }
+  if (confidence_column) {
+    s += '\t';
+    s += FormatNumber(std::isnan(row.confidence) ? kNaN : row.confidence, 3);
   }
   if (file_column) {
     s += '\t';
@@ -85,6 +90,8 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
   int line_no = 0;
   bool have_header = false;
   std::size_t header_columns = 0;
+  std::size_t file_index = 0;  // trailing columns, 0: absent
+  std::size_t confidence_index = 0;
   int last_frame = -1;
   bool seen_meta = false;
   std::size_t signed_yaw_index = 0;
@@ -109,6 +116,7 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
                  "line is longer than " + std::to_string(kMaxAngleLineLength) + " characters");
     }
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line_no == 1) StripUtf8Bom(&line);
     if (line.find('\0') != std::string::npos) return err(line_no, "line contains a NUL byte");
 
     if (!line.empty() && line[0] == '#') {
@@ -146,10 +154,13 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
         }
       }
       header_columns = cols.size();
-      out->has_file_column = cols.size() > 11 && cols[11] == "file";
       for (std::size_t i = 11; i < cols.size(); ++i) {
+        if (cols[i] == "file") file_index = i;
+        if (cols[i] == "confidence") confidence_index = i;
         if (cols[i] == kSignedYawColumn) signed_yaw_index = i;
       }
+      out->has_file_column = file_index > 0;
+      out->has_confidence_column = confidence_index > 0;
       out->has_signed_yaw_column = signed_yaw_index > 0;
       have_header = true;
       continue;
@@ -201,7 +212,14 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
     if (!std::isnan(row.yaw_deg) && row.yaw_deg < 0) {
       return err(line_no, "yaw_deg " + f[5] + " is negative (yaw is always >= 0)");
     }
-    if (out->has_file_column) row.file = f[11];
+    if (out->has_file_column) row.file = f[file_index];
+    if (confidence_index > 0) {
+      if (!ParseTableNumber(f[confidence_index], true, &row.confidence) ||
+          (!std::isnan(row.confidence) && (row.confidence < 0 || row.confidence > 1))) {
+        return err(line_no,
+                   "confidence \"" + f[confidence_index] + "\" is not a number in [0, 1] (or nan)");
+      }
+    }
     if (signed_yaw_index > 0) {
       const std::string& v = f[signed_yaw_index];
       if (!ParseTableNumber(v, true, &row.yaw_signed_deg)) {
@@ -237,6 +255,7 @@ struct AngleFileWriter::Impl {
   std::string path;
   AngleMeta meta;
   bool file_column = false;
+  bool confidence_column = false;
   bool signed_yaw_column = false;
   bool open = false;
   int rows = 0;
@@ -248,10 +267,12 @@ AngleFileWriter::~AngleFileWriter() = default;
 int AngleFileWriter::rows_written() const { return impl_->rows; }
 
 namespace {
-std::string HeaderText(const AngleMeta& meta, bool file_column, bool signed_yaw_column) {
+std::string HeaderText(const AngleMeta& meta, bool file_column, bool confidence_column,
+                       bool signed_yaw_column) {
   std::string s =
       std::string(kAngleFileMagic) + "\n" + FormatMetaLine(meta) + "\n" + kAngleFileUnits + "\n";
   for (int i = 0; i < 11; ++i) s += (i ? "\t" : "") + std::string(kAngleColumns[i]);
+  if (confidence_column) s += "\tconfidence";
   if (file_column) s += "\tfile";
   if (signed_yaw_column) s += std::string("\t") + kSignedYawColumn;
   return s + "\n";
@@ -259,15 +280,16 @@ std::string HeaderText(const AngleMeta& meta, bool file_column, bool signed_yaw_
 }  // namespace
 
 Status AngleFileWriter::Open(const std::string& path, const AngleMeta& meta, bool file_column,
-                             bool signed_yaw_column) {
+                             bool confidence_column, bool signed_yaw_column) {
   impl_ = std::make_unique<Impl>();
   Status st = impl_->file.Open(path);
   if (!st) return st;
   impl_->path = path;
   impl_->meta = meta;
   impl_->file_column = file_column;
+  impl_->confidence_column = confidence_column;
   impl_->signed_yaw_column = signed_yaw_column;
-  const std::string header = HeaderText(meta, file_column, signed_yaw_column);
+  const std::string header = HeaderText(meta, file_column, confidence_column, signed_yaw_column);
   if (std::fputs(header.c_str(), impl_->file.file()) < 0) {
     return Status::Error(path + ": write failed (" + std::strerror(errno) + ")");
   }
@@ -281,7 +303,9 @@ Status AngleFileWriter::Write(const AngleRow& row) {
     return Status::Error(impl_->path + ": file name \"" + row.file +
                          "\" contains a tab or newline");
   }
-  const std::string s = FormatAngleRow(row, impl_->file_column, impl_->signed_yaw_column) + "\n";
+  const std::string s = FormatAngleRow(row, impl_->file_column, impl_->confidence_column,
+                                      impl_->signed_yaw_column) +
+                        "\n";
   if (std::fputs(s.c_str(), impl_->file.file()) < 0) {
     return Status::Error(impl_->path + ": write failed (" + std::strerror(errno) + ")");
   }
@@ -300,7 +324,8 @@ Status AngleFileWriter::Commit(bool complete) {
   if (!st) return st;
   AngleMeta meta = impl_->meta;
   meta.emplace_back("complete", "no");
-  const std::string header = HeaderText(meta, impl_->file_column, impl_->signed_yaw_column);
+  const std::string header =
+      HeaderText(meta, impl_->file_column, impl_->confidence_column, impl_->signed_yaw_column);
   std::fputs(header.c_str(), marked.file());
   std::ifstream rows(impl_->file.temp_path(), std::ios::binary);
   std::string line;

@@ -8,9 +8,13 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "armmimic/core/frame_pacer.h"
 #include "armmimic/core/image_io.h"
 #include "armmimic/engines/engine.h"
 #include "armmimic/engines/option_fields.h"
+#include "armmimic/engines/pose.h"
+#include "armmimic/engines/run_record.h"
+#include "pose_prepare.h"
 
 namespace armmimic {
 namespace {
@@ -58,10 +62,58 @@ Status LoadSized(const std::string& path, const std::string& flag, const VideoIn
   return Status::Ok();
 }
 
+// The input of a pass: options.open_source when set, else the files named in options.inputs.
+std::unique_ptr<VideoSource> OpenInput(const AnalysisOptions& options, Status* status) {
+  if (options.open_source) return options.open_source(status);
+  return VideoSource::Open(options.inputs, status);
+}
+
+// Averages frames [start, start+count) of `source` (thesis 5.2.1); `open_status` is returned
+// when the source could not be opened.
+Status EstimateBackgroundOf(std::unique_ptr<VideoSource> source, const Status& open_status,
+                            int start, int count, cv::Mat* background,
+                            const AnalysisCallbacks& callbacks);
+
+// The pose network's part before the engine starts: --auto-calibrate's joints, and the pose
+// engine's arm when --side is auto. Decisions go to on_estimate.
+Status PreparePose(const AnalysisOptions& options, const VideoInfo& info,
+                   const AnalysisCallbacks& callbacks, AnalysisOptions* resolved) {
+  auto tell = [&](const std::string& text) {
+    if (callbacks.on_estimate && !text.empty()) callbacks.on_estimate(text);
+  };
+  if (options.auto_calibrate) {
+    Phase(callbacks, "auto-calibrate");
+    PoseArm arm;
+    PoseSide side = options.calibrate_side;
+    Status st = internal::DetectArmJointsFrom(
+        [&options](Status* s) { return OpenInput(options, s); }, options.start,
+        options.calibrate_side, options.model_dir, options.engine.pose.min_score, &arm, &side);
+    if (!st) return Status::Error("--auto-calibrate: " + st.message());
+    resolved->shoulder_px = arm.shoulder;
+    resolved->elbow_px = arm.elbow;
+    resolved->wrist_px = arm.wrist;
+    auto xy = [](const cv::Point2d& p) {
+      return ShortNumber(std::round(p.x)) + "," + ShortNumber(std::round(p.y));
+    };
+    tell("auto-calibrate: the person's " + std::string(PoseSideName(side)) + " arm in frame " +
+         std::to_string(options.start) + ": --shoulder " + xy(arm.shoulder) + " --elbow " +
+         xy(arm.elbow) + " --wrist " + xy(arm.wrist));
+  }
+  if (options.engine.kind == EngineKind::kPose && options.engine.pose.side == PoseSide::kAuto) {
+    std::string why;
+    Status st = internal::ChoosePoseSide([&options](Status* s) { return OpenInput(options, s); },
+                                         options.start, info.fps, options.model_dir,
+                                         &resolved->engine.pose.side, &why);
+    if (!st) return st;
+    tell(why);
+  }
+  return Status::Ok();
+}
+
 using RowSink = std::function<Status(const ArmMeasurement&)>;
 using ReadySink = std::function<Status(const AngleMeta&)>;
 
-Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
+Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
            const ReadySink& on_ready, const RowSink& on_row, AnalysisSummary* summary) {
   const auto t0 = std::chrono::steady_clock::now();
   *summary = AnalysisSummary();
@@ -69,24 +121,31 @@ Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
     summary->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return st;
   };
-  Status st = options.Check();
+  Status st = given.Check();
   if (!st) return finish(st);
 
   Status open_status;
-  std::unique_ptr<VideoSource> source = VideoSource::Open(options.inputs, &open_status);
+  std::unique_ptr<VideoSource> source = OpenInput(given, &open_status);
   if (!source) return finish(open_status);
   const VideoInfo info = source->info();
   summary->video = info;
-  const EngineKind kind = options.engine.kind;
+  if (callbacks.on_open) callbacks.on_open(info);
+  const EngineKind kind = given.engine.kind;
   const bool arm_engine = kind != EngineKind::kMarker;
 
-  if (arm_engine && info.frame_count >= 0 && options.start >= info.frame_count) {
-    return finish(Status::Error("--start " + std::to_string(options.start) +
-                                " is past the end of " + info.path + " (" +
-                                std::to_string(info.frame_count) + " frames)"));
+  if (arm_engine && info.frame_count >= 0 && given.start >= info.frame_count) {
+    return finish(Status::Error("--start " + std::to_string(given.start) + " is past the end of " +
+                                info.path + " (" + std::to_string(info.frame_count) + " frames)"));
+  }
+
+  AnalysisOptions options = given;  // with what the pose network decided
+  if (arm_engine) {
+    st = PreparePose(given, info, callbacks, &options);
+    if (!st) return finish(st);
   }
 
   EngineContext context;
+  context.model_dir = options.model_dir;
   context.frame_size = info.size;
   context.fps = info.fps;
   context.shoulder_px = options.shoulder_px;
@@ -121,8 +180,10 @@ Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
     } else if (options.background_frames > 0) {
       // A first pass over frames [0, K) of the input itself (thesis 5.2.1).
       Phase(callbacks, "background");
-      st = EstimateBackground(options.inputs, 0, options.background_frames, &context.background,
-                              callbacks);
+      Status bg_open;
+      std::unique_ptr<VideoSource> bg_source = OpenInput(options, &bg_open);
+      st = EstimateBackgroundOf(std::move(bg_source), bg_open, 0, options.background_frames,
+                                &context.background, callbacks);
       if (!st) return finish(Status::Error("--background-frames: " + st.message()));
       if (Cancelled(callbacks)) {
         summary->cancelled = true;
@@ -149,9 +210,9 @@ Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
                     {"height", std::to_string(info.size.height)}};
   if (arm_engine) meta.emplace_back("start", std::to_string(options.start));
   for (auto& kv : engine->Describe()) meta.push_back(std::move(kv));
-  // Every parameter changed from its default, under the name `analyze --param` takes, so the
-  // file says how to make it again.
-  for (auto& kv : ChangedEngineOptions(options.engine)) meta.push_back(std::move(kv));
+  // The inputs besides the video and every engine parameter, under the name `analyze --param`
+  // takes, so the file says how to make it again (`analyze --params-from`).
+  for (auto& kv : RunRecordMeta(options)) meta.push_back(std::move(kv));
   summary->meta = meta;
   if (on_ready) {
     st = on_ready(meta);
@@ -182,6 +243,7 @@ Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
   const int total =
       info.frame_count >= 0 ? info.frame_count - (arm_engine ? options.start : 0) : -1;
   Phase(callbacks, "analysis");
+  FramePacer pacer(options.realtime && info.kind == SourceKind::kVideo ? info.fps : 0);
   Frame frame;
   int done = 0;
   int setup = 0;
@@ -195,6 +257,8 @@ Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
       if (!read_status) return finish(read_status);
       break;
     }
+    const auto captured = pacer.Wait(frame, callbacks.cancel);
+    if (callbacks.on_frame) callbacks.on_frame(frame, captured);
     const ArmMeasurement m = engine->Process(frame);
     summary->last_frame = frame.index;
     ++done;
@@ -224,6 +288,19 @@ Status Run(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
 }  // namespace
 
 Status AnalysisOptions::Check() const {
+  if (auto_calibrate) {
+    if (engine.kind == EngineKind::kBgsub || engine.kind == EngineKind::kMarker ||
+        engine.kind == EngineKind::kPose) {
+      return Status::Error(
+          std::string("--auto-calibrate is for the tracking engines, not --engine ") +
+          EngineName(engine.kind));
+    }
+    if (shoulder_px || elbow_px || wrist_px) {
+      return Status::Error(
+          "--auto-calibrate finds the joints itself: give it or --shoulder/--elbow/--wrist, not "
+          "both");
+    }
+  }
   if (engine.kind != EngineKind::kLk && (elbow_px || wrist_px)) {
     return Status::Error(std::string(elbow_px ? "--elbow" : "--wrist") +
                          " is used by --engine lk only");
@@ -267,9 +344,10 @@ Status AnalysisOptions::Check() const {
                                ": the segment has no direction");
         }
       }
-      if (!has_bg && !has_frames && !shoulder_px) {
+      if (!has_bg && !has_frames && !shoulder_px && !auto_calibrate) {
         return Status::Error(
-            "--engine lk needs one of --background, --background-frames or --shoulder");
+            "--engine lk needs one of --background, --background-frames, --shoulder or "
+            "--auto-calibrate");
       }
       if (has_bg && has_frames) {
         return Status::Error("--background and --background-frames cannot both be given");
@@ -280,17 +358,28 @@ Status AnalysisOptions::Check() const {
         return Status::Error("--engine marker needs --reference REF.png");
       }
       break;
+    case EngineKind::kPose:
+      break;  // needs nothing but the model
   }
   return engine.Check();
 }
 
 Status EstimateBackground(const std::vector<std::string>& inputs, int start, int count,
                           cv::Mat* background, const AnalysisCallbacks& callbacks) {
-  if (count < 1) return Status::Error("the background needs at least 1 frame");
-  if (start < 0) return Status::Error("the first background frame must be 0 or more");
   Status st;
   std::unique_ptr<VideoSource> source = VideoSource::Open(inputs, &st);
-  if (!source) return st;
+  return EstimateBackgroundOf(std::move(source), st, start, count, background, callbacks);
+}
+
+namespace {
+
+Status EstimateBackgroundOf(std::unique_ptr<VideoSource> source, const Status& open_status,
+                            int start, int count, cv::Mat* background,
+                            const AnalysisCallbacks& callbacks) {
+  if (count < 1) return Status::Error("the background needs at least 1 frame");
+  if (start < 0) return Status::Error("the first background frame must be 0 or more");
+  if (!source) return open_status;
+  Status st;
   const VideoInfo& info = source->info();
   const std::string range =
       "[" + std::to_string(start) + ", " + std::to_string(start + count) + ")";
@@ -324,6 +413,8 @@ Status EstimateBackground(const std::vector<std::string>& inputs, int start, int
   return Status::Ok();
 }
 
+}  // namespace
+
 Status RunAnalysis(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
                    AnalysisSummary* summary) {
   return Run(options, callbacks, nullptr, nullptr, summary);
@@ -333,10 +424,12 @@ Status AnalyzeToFile(const AnalysisOptions& options, const std::string& output_p
                      const AnalysisCallbacks& callbacks, AnalysisSummary* summary) {
   AngleFileWriter writer;
   const bool file_column = options.engine.kind == EngineKind::kMarker;
+  const bool confidence_column = options.engine.kind == EngineKind::kPose;
   Status st = Run(
       options, callbacks,
       [&](const AngleMeta& meta) {
-        return writer.Open(output_path, meta, file_column, /*signed_yaw_column=*/file_column);
+        return writer.Open(output_path, meta, file_column, confidence_column,
+                           /*signed_yaw_column=*/file_column);
       },
       [&](const ArmMeasurement& m) { return writer.Write(m.ToRow()); }, summary);
   if (!st) return st;

@@ -10,9 +10,14 @@ std::unique_ptr<Engine> Engine::Create(const EngineOptions& options) {
   const Status st = options.Check();
   if (!st) throw std::invalid_argument("Engine::Create: " + st.message());
   switch (options.kind) {
-    case EngineKind::kBgsub: return internal::CreateBgsubEngine(options.bgsub);
-    case EngineKind::kLk: return internal::CreateLkEngine(options.lk);
-    case EngineKind::kMarker: return internal::CreateMarkerEngine(options.marker);
+    case EngineKind::kBgsub:
+      return internal::CreateBgsubEngine(options.bgsub);
+    case EngineKind::kLk:
+      return internal::CreateLkEngine(options.lk);
+    case EngineKind::kMarker:
+      return internal::CreateMarkerEngine(options.marker);
+    case EngineKind::kPose:
+      return internal::CreatePoseEngine(options.pose);
   }
   throw std::invalid_argument("Engine::Create: unknown engine kind");
 }

@@ -10,5 +10,6 @@ namespace armmimic::internal {
 std::unique_ptr<Engine> CreateBgsubEngine(const BgsubOptions& options);
 std::unique_ptr<Engine> CreateLkEngine(const LkOptions& options);
 std::unique_ptr<Engine> CreateMarkerEngine(const MarkerOptions& options);
+std::unique_ptr<Engine> CreatePoseEngine(const PoseOptions& options);
 
 }  // namespace armmimic::internal

@@ -4,15 +4,28 @@ namespace armmimic {
 
 const char* EngineName(EngineKind kind) {
   switch (kind) {
-    case EngineKind::kBgsub: return "bgsub";
-    case EngineKind::kLk: return "lk";
-    case EngineKind::kMarker: return "marker";
+    case EngineKind::kBgsub:
+      return "bgsub";
+    case EngineKind::kLk:
+      return "lk";
+    case EngineKind::kMarker:
+      return "marker";
+    case EngineKind::kPose:
+      return "pose";
   }
   return "?";
 }
 
+const std::vector<EngineKind>& AllEngineKinds() {
+  static const std::vector<EngineKind> kinds = {EngineKind::kBgsub, EngineKind::kLk,
+                                                EngineKind::kMarker, EngineKind::kPose};
+  return kinds;
+}
+
+bool IsArmEngine(EngineKind kind) { return kind != EngineKind::kMarker; }
+
 bool ParseEngineKind(const std::string& name, EngineKind* out) {
-  for (EngineKind k : {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kMarker}) {
+  for (EngineKind k : AllEngineKinds()) {
     if (name == EngineName(k)) {
       *out = k;
       return true;
@@ -23,9 +36,14 @@ bool ParseEngineKind(const std::string& name, EngineKind* out) {
 
 Status EngineOptions::Check() const {
   switch (kind) {
-    case EngineKind::kBgsub: return bgsub.Check();
-    case EngineKind::kLk: return lk.Check();
-    case EngineKind::kMarker: return marker.Check();
+    case EngineKind::kBgsub:
+      return bgsub.Check();
+    case EngineKind::kLk:
+      return lk.Check();
+    case EngineKind::kMarker:
+      return marker.Check();
+    case EngineKind::kPose:
+      return pose.Check();
   }
   return Status::Ok();
 }

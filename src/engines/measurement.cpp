@@ -8,6 +8,7 @@ AngleRow ArmMeasurement::ToRow() const {
   row.time_s = time_s;
   row.status = phase == MeasurementPhase::kOk ? RowStatus::kOk : RowStatus::kLost;
   row.file = file;
+  row.confidence = confidence;
   if (row.ok()) {
     row.upper_deg = upper_deg;
     row.fore_deg = fore_deg;
@@ -20,6 +21,23 @@ AngleRow ArmMeasurement::ToRow() const {
     row.fore_cy = fore_com_px.y;
   }
   return row;
+}
+
+ArmMeasurement ArmMeasurement::FromRow(const AngleRow& row) {
+  ArmMeasurement m;
+  m.frame = row.frame;
+  m.time_s = row.time_s;
+  m.phase = row.ok() ? MeasurementPhase::kOk : MeasurementPhase::kLost;
+  m.file = row.file;
+  m.upper_deg = row.upper_deg;
+  m.fore_deg = row.fore_deg;
+  m.yaw_deg = row.yaw_deg;
+  m.bend_deg = row.bend_deg;
+  m.yaw_signed_deg = row.yaw_signed_deg;
+  m.confidence = row.confidence;
+  m.upper_com_px = {row.upper_cx, row.upper_cy};
+  m.fore_com_px = {row.fore_cx, row.fore_cy};
+  return m;
 }
 
 }  // namespace armmimic

@@ -1,4 +1,4 @@
-// The parameter tables of the three engines. One line per option: kind, key, pointer to the
+// The parameter tables of the engines. One line per option: kind, key, pointer to the
 // member, documented default, range, label and help. The engines test checks each table against
 // its struct (same defaults, every field listed, ranges that pass Check()).
 #include "armmimic/engines/option_fields.h"
@@ -92,6 +92,7 @@ Row<O> Enum(const char* key, E O::*m, E def, const std::vector<std::string>& cho
 using B = BgsubOptions;
 using L = LkOptions;
 using M = MarkerOptions;
+using P = PoseOptions;
 
 }  // namespace
 
@@ -304,6 +305,23 @@ const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields() {
   return fields;
 }
 
+const std::vector<OptionField<PoseOptions>>& PoseOptionFields() {
+  static const std::vector<OptionField<P>> fields = {
+      Enum<P>("side", &P::side, PoseSide::kAuto, {"auto", "left", "right"}, "Arm",
+              "--side: the person's own arm (auto: the better seen over the first second)")
+          .Main(),
+      Real<P>("min_score", &P::min_score, 0.4, 0, 1, 2, "Minimum keypoint score",
+              "a shoulder, elbow or wrist scored lower is not seen: lost")
+          .Main(),
+      Real<P>("min_length_ratio", &P::min_length_ratio, 0.55, 0, 1, 2, "Minimum segment length",
+              "a segment shorter than this share of its usual length points at the camera: lost")
+          .Main(),
+      Real<P>("crop_score", &P::crop_score, 0.2, 0, 1, 2, "Crop keypoint score",
+              "keypoints above this score place the next frame's crop"),
+  };
+  return fields;
+}
+
 namespace {
 
 template <typename O>
@@ -406,21 +424,22 @@ Status SetEngineOption(const std::string& assignment, EngineOptions* o) {
   if (engine == "bgsub") return SetField(BgsubOptionFields(), engine, key, value, &o->bgsub);
   if (engine == "lk") return SetField(LkOptionFields(), engine, key, value, &o->lk);
   if (engine == "marker") return SetField(MarkerOptionFields(), engine, key, value, &o->marker);
+  if (engine == "pose") return SetField(PoseOptionFields(), engine, key, value, &o->pose);
   return Status::Error("'" + assignment + "': unknown engine '" + engine +
-                       "' (bgsub, lk or marker)");
+                       "' (bgsub, lk, marker or pose)");
 }
 
 namespace {
 
-// The exact text of a changed value (doubles in their shortest round-trip form), as
+// The exact text of each value (doubles in their shortest round-trip form), as
 // SetEngineOption reads it back.
 template <typename O>
-void AppendChanged(const std::vector<OptionField<O>>& fields, const std::string& engine, const O& o,
-                   std::vector<std::pair<std::string, std::string>>* out) {
+void AppendValues(const std::vector<OptionField<O>>& fields, const std::string& engine, const O& o,
+                  bool changed_only, std::vector<std::pair<std::string, std::string>>* out) {
   const O defaults;
   for (const auto& f : fields) {
     const double v = f.get(o);
-    if (v == f.get(defaults)) continue;
+    if (changed_only && v == f.get(defaults)) continue;
     std::string text;
     if (f.kind == OptionKind::kDouble) {
       char buf[64];
@@ -433,22 +452,34 @@ void AppendChanged(const std::vector<OptionField<O>>& fields, const std::string&
   }
 }
 
-}  // namespace
-
-std::vector<std::pair<std::string, std::string>> ChangedEngineOptions(const EngineOptions& o) {
+std::vector<std::pair<std::string, std::string>> EngineValues(const EngineOptions& o,
+                                                              bool changed_only) {
   std::vector<std::pair<std::string, std::string>> out;
   switch (o.kind) {
     case EngineKind::kBgsub:
-      AppendChanged(BgsubOptionFields(), "bgsub", o.bgsub, &out);
+      AppendValues(BgsubOptionFields(), "bgsub", o.bgsub, changed_only, &out);
       break;
     case EngineKind::kLk:
-      AppendChanged(LkOptionFields(), "lk", o.lk, &out);
+      AppendValues(LkOptionFields(), "lk", o.lk, changed_only, &out);
       break;
     case EngineKind::kMarker:
-      AppendChanged(MarkerOptionFields(), "marker", o.marker, &out);
+      AppendValues(MarkerOptionFields(), "marker", o.marker, changed_only, &out);
+      break;
+    case EngineKind::kPose:
+      AppendValues(PoseOptionFields(), "pose", o.pose, changed_only, &out);
       break;
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> ChangedEngineOptions(const EngineOptions& o) {
+  return EngineValues(o, true);
+}
+
+std::vector<std::pair<std::string, std::string>> EngineOptionValues(const EngineOptions& o) {
+  return EngineValues(o, false);
 }
 
 std::string DescribeEngineOptions(int width) {
@@ -458,6 +489,8 @@ std::string DescribeEngineOptions(int width) {
   Describe(LkOptionFields(), "lk", width, &out);
   out += "\n";
   Describe(MarkerOptionFields(), "marker", width, &out);
+  out += "\n";
+  Describe(PoseOptionFields(), "pose", width, &out);
   return out;
 }
 

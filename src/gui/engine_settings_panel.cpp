@@ -9,12 +9,14 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
 #include <QStackedWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include "armmimic/engines/pose.h"
 #include "parameter_form.h"
 #include "wheel_guard.h"
 
@@ -51,12 +53,15 @@ EngineSettingsPanel::EngineSettingsPanel(QWidget* parent)
   engine_->addItem(tr("Background subtraction (ch. 5)"), int(EngineKind::kBgsub));
   engine_->addItem(tr("Lucas–Kanade tracking (ch. 6)"), int(EngineKind::kLk));
   engine_->addItem(tr("Marker joint (ch. 4)"), int(EngineKind::kMarker));
+  engine_->addItem(tr("Pose network (MoveNet)"), int(EngineKind::kPose));
   forms_[0] = new ParameterForm(EngineKind::kBgsub,
                                 LiftOptionFields(BgsubOptionFields(), &EngineOptions::bgsub));
   forms_[1] =
       new ParameterForm(EngineKind::kLk, LiftOptionFields(LkOptionFields(), &EngineOptions::lk));
   forms_[2] = new ParameterForm(EngineKind::kMarker,
                                 LiftOptionFields(MarkerOptionFields(), &EngineOptions::marker));
+  forms_[3] = new ParameterForm(EngineKind::kPose,
+                                LiftOptionFields(PoseOptionFields(), &EngineOptions::pose));
   for (ParameterForm* form : forms_) {
     pages_->addWidget(form);
     connect(form, &ParameterForm::changed, this, &EngineSettingsPanel::changed);
@@ -98,6 +103,9 @@ EngineSettingsPanel::EngineSettingsPanel(QWidget* parent)
   connect(shoulder_box_, &QGroupBox::toggled, this, shoulder_changed);
   connect(shoulder_x_, &QDoubleSpinBox::valueChanged, this, shoulder_changed);
   connect(shoulder_y_, &QDoubleSpinBox::valueChanged, this, shoulder_changed);
+  connect(elbow_wrist_box_, &QGroupBox::toggled, this, &EngineSettingsPanel::changed);
+  connect(auto_calibrate_, &QPushButton::clicked, this,
+          &EngineSettingsPanel::autoCalibrateRequested);
   GuardWheel(this);
   updateEnabled();
 }
@@ -147,6 +155,29 @@ QWidget* EngineSettingsPanel::makeInputs() {
   sl->addWidget(shoulder_x_, 1);
   sl->addWidget(new QLabel("y"));
   sl->addWidget(shoulder_y_, 1);
+  // The elbow and wrist of the start frame (lk): clicked, typed or from Auto-calibrate.
+  elbow_wrist_box_ = new QGroupBox(tr("Elbow and wrist (--elbow, --wrist)"));
+  elbow_wrist_box_->setCheckable(true);
+  elbow_wrist_box_->setChecked(false);
+  elbow_wrist_box_->setObjectName("elbowWristBox");
+  auto* ew = new QFormLayout(elbow_wrist_box_);
+  const char* axes[2] = {"X", "Y"};
+  for (int joint = 0; joint < 2; ++joint) {
+    QDoubleSpinBox** spins = joint == 0 ? elbow_ : wrist_;
+    auto* row = new QHBoxLayout;
+    for (int i = 0; i < 2; ++i) {
+      spins[i] =
+          DSpin(0, 100000, 0, 1, tr("pixels"), QString(joint == 0 ? "elbow" : "wrist") + axes[i]);
+      row->addWidget(new QLabel(QString(axes[i]).toLower()));
+      row->addWidget(spins[i], 1);
+    }
+    ew->addRow(joint == 0 ? tr("Elbow") : tr("Wrist"), row);
+  }
+  auto_calibrate_ = new QPushButton(tr("Auto-calibrate"));
+  auto_calibrate_->setObjectName("autoCalibrate");
+  auto_calibrate_->setToolTip(
+      tr("--auto-calibrate: the shoulder, elbow and wrist in the start frame from the pose "
+         "network (the better-seen arm)"));
   roi_box_ = new QGroupBox(tr("Region of interest (--roi)"));
   roi_box_->setCheckable(true);
   roi_box_->setChecked(false);
@@ -166,6 +197,8 @@ QWidget* EngineSettingsPanel::makeInputs() {
   form->addRow(tr("Reference image"), reference_row_);
   form->addRow(tr("Start frame"), start_);
   form->addRow(shoulder_box_);
+  form->addRow(elbow_wrist_box_);
+  form->addRow(auto_calibrate_);
   form->addRow(roi_box_);
   connect(bg_mode_, &QComboBox::currentIndexChanged, this, [this] {
     updateEnabled();
@@ -182,6 +215,10 @@ QToolButton* EngineSettingsPanel::advancedToggle(EngineKind engine) const {
   return forms_[int(engine)]->advancedToggle();
 }
 
+QToolButton* EngineSettingsPanel::resetButton(EngineKind engine) const {
+  return forms_[int(engine)]->resetButton();
+}
+
 void EngineSettingsPanel::updateEnabled() {
   const auto kind = static_cast<EngineKind>(engine_->currentData().toInt());
   const bool marker = kind == EngineKind::kMarker;
@@ -191,8 +228,11 @@ void EngineSettingsPanel::updateEnabled() {
   arm_length_row_->setEnabled(kind == EngineKind::kBgsub);
   reference_row_->setEnabled(marker);
   start_->setEnabled(!marker);
-  shoulder_box_->setEnabled(!marker);
+  shoulder_box_->setEnabled(!marker && kind != EngineKind::kPose);
+  elbow_wrist_box_->setEnabled(kind == EngineKind::kLk);
+  auto_calibrate_->setEnabled(kind == EngineKind::kLk);
   roi_box_->setEnabled(!marker);
+  bg_mode_->setEnabled(!marker && kind != EngineKind::kPose);
 }
 
 AnalysisOptions EngineSettingsPanel::options() const {
@@ -220,8 +260,18 @@ AnalysisOptions EngineSettingsPanel::options() const {
   }
   if (o.engine.kind == EngineKind::kBgsub) o.arm_length_path = arm_length_->text().toStdString();
   o.start = start_->value();
-  if (shoulder_box_->isChecked()) {
+  if (o.engine.kind == EngineKind::kPose) {
+    o.background_path.clear();
+    o.background_frames = 0;
+  } else if (shoulder_box_->isChecked()) {
     o.shoulder_px = cv::Point2d(shoulder_x_->value(), shoulder_y_->value());
+  }
+  o.elbow_px.reset();
+  o.wrist_px.reset();
+  if (o.engine.kind == EngineKind::kLk && shoulder_box_->isChecked() &&
+      elbow_wrist_box_->isChecked()) {
+    o.elbow_px = cv::Point2d(elbow_[0]->value(), elbow_[1]->value());
+    o.wrist_px = cv::Point2d(wrist_[0]->value(), wrist_[1]->value());
   }
   if (roi_box_->isChecked()) {
     o.roi = cv::Rect(roi_[0]->value(), roi_[1]->value(), roi_[2]->value(), roi_[3]->value());
@@ -246,6 +296,13 @@ void EngineSettingsPanel::setOptions(const AnalysisOptions& o) {
   reference_->setText(QString::fromStdString(o.reference_path));
   start_->setValue(o.start);
   setShoulder(o.shoulder_px);
+  if (o.elbow_px && o.wrist_px) {
+    elbow_[0]->setValue(o.elbow_px->x);
+    elbow_[1]->setValue(o.elbow_px->y);
+    wrist_[0]->setValue(o.wrist_px->x);
+    wrist_[1]->setValue(o.wrist_px->y);
+  }
+  elbow_wrist_box_->setChecked(o.elbow_px && o.wrist_px);
   setRoi(o.roi);
   updateEnabled();
 }
@@ -272,6 +329,32 @@ void EngineSettingsPanel::setShoulder(const std::optional<cv::Point2d>& s) {
   emit shoulderChanged(options().shoulder_px);
 }
 
+void EngineSettingsPanel::setJoint(int joint, const cv::Point2d& px) {
+  if (joint == 0) {
+    setShoulder(px);
+    return;
+  }
+  QDoubleSpinBox** spins = joint == 1 ? elbow_ : wrist_;
+  spins[0]->setValue(px.x);
+  spins[1]->setValue(px.y);
+  elbow_wrist_box_->setChecked(true);
+  emit changed();
+}
+
+Status EngineSettingsPanel::autoCalibrate(const std::vector<std::string>& inputs) {
+  if (inputs.empty()) return Status::Error("Auto-calibrate: open a video first");
+  const AnalysisOptions o = options();
+  PoseArm arm;
+  PoseSide side = PoseSide::kAuto;
+  const Status st = DetectArmJoints(inputs, o.start, PoseSide::kAuto, o.model_dir,
+                                    o.engine.pose.min_score, &arm, &side);
+  if (!st) return Status::Error("Auto-calibrate: " + st.message());
+  setJoint(1, arm.elbow);
+  setJoint(2, arm.wrist);
+  setShoulder(arm.shoulder);
+  return Status::Ok();
+}
+
 void EngineSettingsPanel::setBackgroundImage(const QString& path) {
   background_->setText(path);
   bg_mode_->setCurrentIndex(kBgImage);
@@ -295,7 +378,7 @@ void EngineSettingsPanel::load(QSettings& s) {
   s.beginGroup("analysis");
   AnalysisOptions o;
   o.engine.kind =
-      static_cast<EngineKind>(std::clamp(s.value("engine", int(EngineKind::kBgsub)).toInt(), 0, 2));
+      static_cast<EngineKind>(std::clamp(s.value("engine", int(EngineKind::kBgsub)).toInt(), 0, 3));
   for (const ParameterForm* form : forms_) form->load(s, &o.engine);
   o.arm_length_path = s.value("armLength").toString().toStdString();
   o.reference_path = s.value("reference").toString().toStdString();

@@ -14,6 +14,7 @@ class QComboBox;
 class QDoubleSpinBox;
 class QGroupBox;
 class QLineEdit;
+class QPushButton;
 class QSettings;
 class QSpinBox;
 class QStackedWidget;
@@ -35,6 +36,12 @@ class EngineSettingsPanel : public QWidget {
   void setRoi(const std::optional<cv::Rect>& roi);
   void setShoulder(const std::optional<cv::Point2d>& shoulder_px);
   void setBackgroundImage(const QString& path);
+  // A joint of the start frame, clicked: 0 the shoulder, 1 the elbow, 2 the wrist. The elbow and
+  // wrist are used by the tracking engine (lk).
+  void setJoint(int joint, const cv::Point2d& px);
+  // The Auto-calibrate button's work: the shoulder, elbow and wrist in the start frame of
+  // `inputs` from the pose network. The message names what failed.
+  Status autoCalibrate(const std::vector<std::string>& inputs);
 
   void save(QSettings& settings) const;
   void load(QSettings& settings);
@@ -44,11 +51,14 @@ class EngineSettingsPanel : public QWidget {
   QWidget* parameterEditor(EngineKind engine, const QString& key) const;
   // The button that shows or hides an engine's "Advanced" section.
   QToolButton* advancedToggle(EngineKind engine) const;
+  // The button that puts every parameter of an engine back to its default.
+  QToolButton* resetButton(EngineKind engine) const;
 
  signals:
   void changed();
   void roiChanged(const std::optional<cv::Rect>& roi);
   void shoulderChanged(const std::optional<cv::Point2d>& shoulder_px);
+  void autoCalibrateRequested();
 
  private:
   QWidget* makeInputs();
@@ -60,7 +70,7 @@ class EngineSettingsPanel : public QWidget {
 
   QComboBox* engine_;
   QStackedWidget* pages_;
-  ParameterForm* forms_[3] = {};  // indexed by EngineKind
+  ParameterForm* forms_[4] = {};  // indexed by EngineKind
   // Inputs.
   QComboBox* bg_mode_;
   QLineEdit* background_;
@@ -74,6 +84,10 @@ class EngineSettingsPanel : public QWidget {
   QGroupBox* shoulder_box_;
   QDoubleSpinBox* shoulder_x_;
   QDoubleSpinBox* shoulder_y_;
+  QGroupBox* elbow_wrist_box_;
+  QDoubleSpinBox* elbow_[2];
+  QDoubleSpinBox* wrist_[2];
+  QPushButton* auto_calibrate_;
   QGroupBox* roi_box_;
   QSpinBox* roi_[4];
 };

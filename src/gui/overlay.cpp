@@ -1,5 +1,7 @@
 #include "overlay.h"
 
+#include "armmimic/engines/pose.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -86,6 +88,36 @@ void PaintOverlay(QPainter& p, QSize image_size, const ArmMeasurement* m, int fr
                     frame_index, frame_count, o);
 }
 
+// The pose engine's 17 keypoints: bones between keypoints both scored 0.2 or more, each keypoint
+// a dot with its score beside it (grey below 0.2, where the network does not see it).
+void PaintSkeleton(QPainter& p, const ArmMeasurement& m, double unit) {
+  if (m.pose_keypoints.size() != kPoseKeypointCount || m.pose_scores.size() != kPoseKeypointCount) {
+    return;
+  }
+  constexpr double kSeen = 0.2;
+  p.setBrush(Qt::NoBrush);
+  p.setPen(QPen(QColor(120, 230, 255, 200), 1.2 * unit, Qt::SolidLine, Qt::RoundCap));
+  for (const auto& [a, b] : kPoseBones) {
+    if (m.pose_scores[a] >= kSeen && m.pose_scores[b] >= kSeen) {
+      p.drawLine(Q(m.pose_keypoints[a]), Q(m.pose_keypoints[b]));
+    }
+  }
+  QFont font = p.font();
+  font.setPointSizeF(5.0 * unit);
+  p.setFont(font);
+  for (int i = 0; i < kPoseKeypointCount; ++i) {
+    const bool seen = m.pose_scores[i] >= kSeen;
+    const QColor colour = seen ? QColor(120, 230, 255) : QColor(150, 150, 150);
+    const QPointF c = Q(m.pose_keypoints[i]);
+    p.setPen(Qt::NoPen);
+    p.setBrush(colour);
+    p.drawEllipse(c, 1.8 * unit, 1.8 * unit);
+    p.setBrush(Qt::NoBrush);
+    HaloText(p, c + QPointF(3 * unit, -2 * unit), QString::number(m.pose_scores[i], 'f', 2),
+             colour);
+  }
+}
+
 void PaintOverlayShapes(QPainter& p, QSize image_size, const ArmMeasurement* m,
                         const OverlayOptions& o) {
   p.save();
@@ -147,6 +179,7 @@ void PaintOverlayShapes(QPainter& p, QSize image_size, const ArmMeasurement* m,
       for (const auto& f : m->fore_features) p.drawEllipse(QPointF(f.x, f.y), unit, unit);
       p.setBrush(Qt::NoBrush);
     }
+    if (o.skeleton) PaintSkeleton(p, *m, unit);
     if (o.segments && m->shoulder_px && m->elbow_px) {
       p.setPen(QPen(kUpper, 2 * unit, Qt::SolidLine, Qt::RoundCap));
       p.drawLine(Q(*m->shoulder_px), Q(*m->elbow_px));

@@ -1,8 +1,8 @@
 // The thesis overlay (appendix B, Fig. 4-3): frame count upper left, yaw middle right, upper-arm
 // and forearm orientation lower right, centres of mass as circles, the segments, elbow and
-// shoulder, and for the marker engine the markers, candidate boxes, the lower part's fitted
-// cylinder (silhouette and axis) and the signed yaw. Painted in image pixels, so the same code
-// draws the view and the saved frame.
+// shoulder, for the marker engine the markers, candidate boxes, the lower part's fitted cylinder
+// (silhouette and axis) and the signed yaw, and for the pose engine the skeleton with each
+// keypoint's score. Painted in image pixels, so the same code draws the view and the saved frame.
 #pragma once
 
 #include <QPainter>
@@ -24,6 +24,7 @@ struct OverlayOptions {
   bool markers = true;   // marker centres, candidate boxes and the fitted cylinder
   bool features = true;  // LK features
   bool contour = false;  // arm contour and hull
+  bool skeleton = true;  // pose engine: the keypoints, bones and keypoint scores
 };
 
 // The texts the overlay shows, so tests and the status bar read the same values.

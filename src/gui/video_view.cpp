@@ -49,6 +49,7 @@ void VideoView::setShoulder(const std::optional<QPointF>& shoulder_px) {
 }
 
 void VideoView::setTool(Tool tool) {
+  next_joint_ = 0;
   tool_ = tool;
   setCursor(tool == Tool::kPan ? Qt::OpenHandCursor : Qt::CrossCursor);
 }
@@ -161,12 +162,19 @@ void VideoView::mousePressEvent(QMouseEvent* event) {
     setCursor(Qt::ClosedHandCursor);
   } else if (event->button() == Qt::LeftButton && tool_ == Tool::kRoi) {
     rubber_ = QRectF(px, px);
-  } else if (event->button() == Qt::LeftButton && tool_ == Tool::kShoulder) {
+  } else if (event->button() == Qt::LeftButton &&
+             (tool_ == Tool::kShoulder || tool_ == Tool::kJoints)) {
     const QPointF clamped(std::clamp(px.x(), 0.0, image_.width() - 1.0),
                           std::clamp(px.y(), 0.0, image_.height() - 1.0));
-    shoulder_ = clamped;
+    const int joint = tool_ == Tool::kJoints ? next_joint_ : 0;
+    if (joint == 0) shoulder_ = clamped;
     update();
-    emit shoulderPicked(clamped);
+    if (tool_ == Tool::kShoulder) {
+      emit shoulderPicked(clamped);
+    } else {
+      next_joint_ = (next_joint_ + 1) % 3;
+      emit jointPicked(joint, clamped);
+    }
   }
 }
 

@@ -15,7 +15,8 @@ namespace armmimic::gui {
 class VideoView : public QWidget {
   Q_OBJECT
  public:
-  enum class Tool { kPan, kRoi, kShoulder };
+  // kJoints: clicks pick the shoulder, the elbow and the wrist in turn.
+  enum class Tool { kPan, kRoi, kShoulder, kJoints };
 
   explicit VideoView(QWidget* parent = nullptr);
 
@@ -56,6 +57,7 @@ class VideoView : public QWidget {
  signals:
   void roiSelected(const QRect& roi_px);
   void shoulderPicked(const QPointF& shoulder_px);
+  void jointPicked(int joint, const QPointF& joint_px);  // 0 shoulder, 1 elbow, 2 wrist
 
  protected:
   void paintEvent(QPaintEvent*) override;
@@ -78,6 +80,7 @@ class VideoView : public QWidget {
   std::optional<QRect> roi_;
   std::optional<QPointF> shoulder_;
   Tool tool_ = Tool::kPan;
+  int next_joint_ = 0;  // kJoints: the joint the next click picks
   bool fit_ = true;
   double zoom_ = 1.0;
   QPointF offset_;  // widget position of image pixel (0,0)

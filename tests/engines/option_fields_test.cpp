@@ -102,6 +102,8 @@ TEST(OptionFieldsTest, MarkerTableMatchesItsStruct) {
   CheckTable(MarkerOptionFields(), "MarkerOptions");
 }
 
+TEST(OptionFieldsTest, PoseTableMatchesItsStruct) { CheckTable(PoseOptionFields(), "PoseOptions"); }
+
 TEST(OptionFieldsTest, ChecksRefuseWhatTheRelationsForbid) {
   // The relations the tables declare are the ones Check() enforces.
   MarkerOptions m;

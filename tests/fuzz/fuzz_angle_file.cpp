@@ -26,7 +26,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       if (!row.ok() && !std::isnan(v)) std::abort();
     }
     // What was read must be writable again.
-    (void)armmimic::FormatAngleRow(row, file.has_file_column, file.has_signed_yaw_column);
+    (void)armmimic::FormatAngleRow(row, file.has_file_column, file.has_confidence_column,
+                                   file.has_signed_yaw_column);
   }
   return 0;
 }

@@ -118,9 +118,10 @@ TEST_F(EngineSettingsTest, EveryParameterIsEditableAndSurvivesSettings) {
 
   const int n = EditAll(panel, EngineKind::kBgsub, BgsubOptionFields(), &EngineOptions::bgsub) +
                 EditAll(panel, EngineKind::kLk, LkOptionFields(), &EngineOptions::lk) +
-                EditAll(panel, EngineKind::kMarker, MarkerOptionFields(), &EngineOptions::marker);
+                EditAll(panel, EngineKind::kMarker, MarkerOptionFields(), &EngineOptions::marker) +
+                EditAll(panel, EngineKind::kPose, PoseOptionFields(), &EngineOptions::pose);
   EXPECT_EQ(n, static_cast<int>(BgsubOptionFields().size() + LkOptionFields().size() +
-                                MarkerOptionFields().size()) -
+                                MarkerOptionFields().size() + PoseOptionFields().size()) -
                    1);  // bgsub background_frames is an input
   const AnalysisOptions edited = panel.options();
   EXPECT_TRUE(edited.engine.bgsub.Check().ok()) << edited.engine.bgsub.Check().message();
@@ -139,6 +140,7 @@ TEST_F(EngineSettingsTest, EveryParameterIsEditableAndSurvivesSettings) {
   ExpectSame(BgsubOptionFields(), edited.engine.bgsub, back.engine.bgsub);
   ExpectSame(LkOptionFields(), edited.engine.lk, back.engine.lk);
   ExpectSame(MarkerOptionFields(), edited.engine.marker, back.engine.marker);
+  ExpectSame(PoseOptionFields(), edited.engine.pose, back.engine.pose);
   EXPECT_EQ(restored.parameterEditor(EngineKind::kLk, "side")->property("currentText"),
             panel.parameterEditor(EngineKind::kLk, "side")->property("currentText"));
 }

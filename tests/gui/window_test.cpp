@@ -10,6 +10,7 @@
 #include <QImage>
 #include <QLabel>
 #include <QMenuBar>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
@@ -19,6 +20,8 @@
 #include <QTimer>
 
 #include "app_actions.h"
+#include "armmimic/core/angles.h"
+#include "armmimic/synth/truth_file.h"
 #include "engine_settings_panel.h"
 #include "gui_fixture.h"
 #include "log_view.h"
@@ -123,6 +126,58 @@ TEST_F(WindowTest, RoiAndShoulderToolsFillTheAnalysisOptions) {
   w.actions()->zoomFit->trigger();
   EXPECT_DOUBLE_EQ(v->zoom(), before);
 }
+
+// The joints tool: three clicks on the start frame give the shoulder, the elbow and the wrist
+// that --shoulder/--elbow/--wrist give the tracking engine.
+TEST_F(WindowTest, TheJointsToolClicksShoulderElbowAndWrist) {
+  MainWindow w;
+  Open(w);
+  auto* engine = w.settingsPanel()->findChild<QComboBox*>("engineCombo");
+  engine->setCurrentIndex(engine->findData(int(EngineKind::kLk)));
+  gui::VideoView* v = w.view();
+  w.actions()->toolJoints->trigger();
+  const QPointF joints[3] = {{180, 90}, {190, 130}, {200, 170}};
+  for (const QPointF& j : joints) {
+    QTest::mouseClick(v, Qt::LeftButton, {}, v->toWidget(j).toPoint());
+  }
+  AnalysisOptions o = w.settingsPanel()->options();
+  o.inputs = {scenes().video()};
+  ASSERT_TRUE(o.shoulder_px && o.elbow_px && o.wrist_px);
+  EXPECT_NEAR(o.shoulder_px->x, 180, 1.5);
+  EXPECT_NEAR(o.elbow_px->y, 130, 1.5);
+  EXPECT_NEAR(o.wrist_px->x, 200, 1.5);
+  EXPECT_TRUE(o.Check().ok()) << o.Check().message();
+  // The pose engine needs none of them, and its entry is in the engine list.
+  engine->setCurrentIndex(engine->findData(int(EngineKind::kPose)));
+  ASSERT_GE(engine->currentIndex(), 0);
+  EXPECT_EQ(w.settingsPanel()->options().engine.kind, EngineKind::kPose);
+  EXPECT_FALSE(w.settingsPanel()->options().elbow_px.has_value());
+}
+
+#ifdef ARMMIMIC_HAVE_POSE_MODEL
+// The Auto-calibrate button: the pose network's shoulder, elbow and wrist in the start frame of
+// the generated person, near the truth.
+TEST_F(WindowTest, AutoCalibrateFillsTheJointsFromThePoseNetwork) {
+  MainWindow w;
+  Open(w);
+  auto* engine = w.settingsPanel()->findChild<QComboBox*>("engineCombo");
+  engine->setCurrentIndex(engine->findData(int(EngineKind::kLk)));
+  const int start = scenes().background_frames + scenes().standstill_frames;
+  w.settingsPanel()->findChild<QSpinBox*>("startFrame")->setValue(start);
+  auto* button = w.settingsPanel()->findChild<QPushButton*>("autoCalibrate");
+  ASSERT_NE(button, nullptr);
+  ASSERT_TRUE(button->isEnabled());
+  button->click();
+  const AnalysisOptions o = w.settingsPanel()->options();
+  ASSERT_TRUE(o.shoulder_px && o.elbow_px && o.wrist_px);
+  synth::TruthFile truth;
+  ASSERT_TRUE(synth::ReadTruthFile(scenes().arm_dir + "/truth.tsv", &truth).ok());
+  const synth::TruthRow* t = truth.Find(start);
+  ASSERT_NE(t, nullptr);
+  EXPECT_NEAR(DirectionDeg(*o.shoulder_px, *o.elbow_px), t->upper_deg, 15);
+  EXPECT_NEAR(DirectionDeg(*o.elbow_px, *o.wrist_px), t->fore_deg, 15);
+}
+#endif
 
 TEST_F(WindowTest, SaveFrameWritesTheOverlayAtVideoResolution) {
   MainWindow w;

@@ -27,7 +27,8 @@ struct AngleRow {
   double upper_cy = kNaN;
   double fore_cx = kNaN;
   double fore_cy = kNaN;
-  std::string file;  // marker engine only: the image's file name
+  std::string file;          // marker engine only: the image's file name
+  double confidence = kNaN;  // optional trailing column, 0..1 (pose engine)
   // Marker engine only: the signed yaw, positive when the joint turns its right side towards the
   // camera (the trailing yaw_signed_deg column); yaw_deg is its magnitude.
   double yaw_signed_deg = kNaN;
@@ -42,6 +43,7 @@ using AngleMeta = std::vector<std::pair<std::string, std::string>>;
 struct AngleFile {
   AngleMeta meta;
   bool has_file_column = false;
+  bool has_confidence_column = false;
   bool has_signed_yaw_column = false;  // a yaw_signed_deg column after the listed ones
   bool complete = true;  // false when the header says complete=no (an interrupted run)
   std::vector<AngleRow> rows;
@@ -66,7 +68,8 @@ Status ReadAngleFile(const std::string& path, AngleFile* out);
 // Formats a number the way the file stores it: '.' decimals whatever the locale, "nan" for NaN.
 std::string FormatNumber(double value, int decimals);
 // Formats one data row (no trailing newline).
-std::string FormatAngleRow(const AngleRow& row, bool file_column, bool signed_yaw_column = false);
+std::string FormatAngleRow(const AngleRow& row, bool file_column, bool confidence_column = false,
+                           bool signed_yaw_column = false);
 // The "# k=v k=v" meta line; spaces and '%' in values are percent-encoded.
 std::string FormatMetaLine(const AngleMeta& meta);
 
@@ -79,8 +82,10 @@ class AngleFileWriter {
   AngleFileWriter(const AngleFileWriter&) = delete;
   AngleFileWriter& operator=(const AngleFileWriter&) = delete;
 
+  // confidence_column: the optional trailing confidence column after the contract's columns;
+  // signed_yaw_column: the marker engine's yaw_signed_deg, last.
   Status Open(const std::string& path, const AngleMeta& meta, bool file_column,
-              bool signed_yaw_column = false);
+              bool confidence_column = false, bool signed_yaw_column = false);
   Status Write(const AngleRow& row);
   // complete=false rewrites the header with complete=no (rows so far are kept).
   Status Commit(bool complete = true);

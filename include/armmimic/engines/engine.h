@@ -19,15 +19,16 @@ namespace armmimic {
 struct EngineContext {
   cv::Size frame_size;
   double fps = 0;
-  cv::Mat background;                       // bgsub, lk (optional): empty scene
-  cv::Mat arm_length;                       // bgsub: straight horizontal arm at zero yaw
-  cv::Mat reference;                        // marker: joint at zero yaw and zero bend
-  std::optional<cv::Point2d> shoulder_px;   // fixed shoulder instead of the body-box rule
+  cv::Mat background;                      // bgsub, lk (optional): empty scene
+  cv::Mat arm_length;                      // bgsub: straight horizontal arm at zero yaw
+  cv::Mat reference;                       // marker: joint at zero yaw and zero bend
+  std::optional<cv::Point2d> shoulder_px;  // fixed shoulder instead of the body-box rule
   // lk: the elbow and wrist in the start frame (given with shoulder_px): the starting directions
   // and the segment lengths, measured instead of assumed.
   std::optional<cv::Point2d> elbow_px;
   std::optional<cv::Point2d> wrist_px;
-  std::optional<cv::Rect> roi;              // analyse only this rectangle
+  std::optional<cv::Rect> roi;  // analyse only this rectangle
+  std::string model_dir;        // pose: --model DIR (empty: the usual places)
 };
 
 class Engine {

@@ -36,6 +36,7 @@ struct ArmMeasurement {
       kNaN;  // marker engine: positive turns the joint's right side to the camera
   cv::Point2d upper_com_px{kNaN, kNaN};
   cv::Point2d fore_com_px{kNaN, kNaN};
+  double confidence = kNaN;  // pose: 0..1, the angle file's confidence column
 
   // Overlay (all in full-image pixels).
   std::optional<cv::Point2d> shoulder_px;
@@ -52,9 +53,13 @@ struct ArmMeasurement {
   std::vector<cv::Point2d> marker_centres;
   std::vector<cv::Point2d> cylinder_axis_px;   // marker: the lower part's axis, bottom to pivot
   std::vector<cv::Point2d> cylinder_edges_px;  // marker: silhouette, left top/bottom, right ...
+  std::vector<cv::Point2d> pose_keypoints;     // pose: the 17 keypoints (pose.h order)
+  std::vector<double> pose_scores;             // pose: their scores, 0..1
 
   bool row() const { return phase != MeasurementPhase::kSetup; }
   AngleRow ToRow() const;
+  // A row of an angle file as a measurement: its angles and centres, no overlay shapes.
+  static ArmMeasurement FromRow(const AngleRow& row);
 };
 
 }  // namespace armmimic

@@ -14,6 +14,7 @@
 #include "armmimic/engines/engine_options.h"
 #include "armmimic/engines/lk_options.h"
 #include "armmimic/engines/marker_options.h"
+#include "armmimic/engines/pose_options.h"
 
 namespace armmimic {
 
@@ -47,6 +48,7 @@ struct OptionField {
 const std::vector<OptionField<BgsubOptions>>& BgsubOptionFields();
 const std::vector<OptionField<LkOptions>>& LkOptionFields();
 const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields();
+const std::vector<OptionField<PoseOptions>>& PoseOptionFields();
 
 // The field named `key` in `fields`, or nullptr.
 template <typename Options>
@@ -66,6 +68,11 @@ Status SetEngineOption(const std::string& assignment, EngineOptions* o);
 // The parameters of `o`'s engine that differ from their defaults, as ("ENGINE.KEY", "VALUE")
 // pairs that SetEngineOption reads back exactly (the angle file's header records them).
 std::vector<std::pair<std::string, std::string>> ChangedEngineOptions(const EngineOptions& o);
+
+// Every parameter of `o`'s engine, changed or not, in table order, the same way: the angle
+// file's header records them all, so `analyze --params-from` repeats a run exactly even if a
+// default changes later.
+std::vector<std::pair<std::string, std::string>> EngineOptionValues(const EngineOptions& o);
 
 // Every ENGINE.KEY=DEFAULT, one engine per paragraph, wrapped to `width` columns.
 std::string DescribeEngineOptions(int width = 78);
