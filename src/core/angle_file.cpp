@@ -303,9 +303,9 @@ Status AngleFileWriter::Write(const AngleRow& row) {
     return Status::Error(impl_->path + ": file name \"" + row.file +
                          "\" contains a tab or newline");
   }
-  const std::string s = FormatAngleRow(row, impl_->file_column, impl_->confidence_column,
-                                      impl_->signed_yaw_column) +
-                        "\n";
+  const std::string s =
+      FormatAngleRow(row, impl_->file_column, impl_->confidence_column, impl_->signed_yaw_column) +
+      "\n";
   if (std::fputs(s.c_str(), impl_->file.file()) < 0) {
     return Status::Error(impl_->path + ": write failed (" + std::strerror(errno) + ")");
   }
