@@ -40,6 +40,7 @@ bool CalibrateMarkerJoint(const cv::Mat& gray, const MarkerTriple& t, const Mark
   u.face_area_px = t.upper.coverage_px;
   u.stretch_level = SampleStretch(gray, ProjectPivot(cyl, u), t.upper.centre).level;
   u.support = UpperSilhouetteSupport(gray, cyl, u, 0, 0);
+  u.darkness = UpperMarkerDarkness(gray, t.upper.centre, u.marker_height_px);
   return true;
 }
 

@@ -20,6 +20,7 @@ struct UpperCalibration {
   int marker_height_px = 0;    // the upper marker's height in the reference
   double face_area_px = 0;     // its dark area there, facing the camera
   double support = 0;          // UpperSilhouetteSupport of the straight reference
+  double darkness = 0;         // UpperMarkerDarkness of its upper marker
   double stretch_level = 0;    // grey level between the pivot and the upper marker (reference)
 };
 
@@ -63,6 +64,10 @@ double UpperSilhouetteSupport(const cv::Mat& gray, const CylinderView& cyl,
 // marker along the axis. False when the window leaves the image.
 bool UpperCentroid(const cv::Mat& gray, const CylinderView& cyl, const UpperCalibration& cal,
                    double yaw, double bend, cv::Point2d* centre);
+
+// How dark a spot is against its surroundings: the mean of the 3x3 pixels at `centre` over the
+// level of a ring about a marker's size round it (0 when the ring leaves the image).
+double UpperMarkerDarkness(const cv::Mat& gray, cv::Point2d centre, int marker_height_px);
 
 // The bend that puts the model's upper marker nearest to `centroid_px`.
 double SolveBend(const CylinderView& cyl, const UpperCalibration& cal, double yaw,

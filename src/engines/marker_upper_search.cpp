@@ -132,6 +132,15 @@ bool WeighSpot(const cv::Mat& gray, const CylinderView& cyl, const UpperCalibrat
 
 }  // namespace
 
+double UpperMarkerDarkness(const cv::Mat& gray, cv::Point2d centre, int marker_height_px) {
+  const int h = std::max(3, marker_height_px);
+  const int ring = std::max(3, static_cast<int>(std::lround(0.85 * h)));
+  double score = 0;
+  const cv::Point p(static_cast<int>(std::lround(centre.x)),
+                    static_cast<int>(std::lround(centre.y)));
+  return Darkness(gray, p, ring, &score) ? score : 0;
+}
+
 UpperMeasurement MeasureUpperMarker(const cv::Mat& gray, const CylinderView& cyl,
                                     const UpperCalibration& cal, double yaw, double tolerance) {
   UpperMeasurement out;
@@ -149,18 +158,17 @@ UpperMeasurement MeasureUpperMarker(const cv::Mat& gray, const CylinderView& cyl
     out.note = "no dark spot where the model puts the upper marker";
     return out;
   }
-  // Dark spots beside the upper part (clutter) put its silhouette where the image shows none:
-  // the spot whose bend the silhouette bears out clearly best wins; otherwise the darkest, if
-  // clearly the darkest.
+  // Dark spots beside the upper part (clutter) put its silhouette where the image shows none,
+  // and are seldom as dark as the marker's paper: the spot whose silhouette is as plain as the
+  // reference's and whose darkness is the reference marker's wins, clearly or not at all.
+  auto quality = [&](const Candidate& c) {
+    const double plain = cal.support > 0 ? std::min(c.support / cal.support, 1.2) : 1;
+    return plain - 2 * std::abs(c.score - cal.darkness);
+  };
   std::sort(found.begin(), found.end(),
-            [](const Candidate& a, const Candidate& b) { return a.support > b.support; });
+            [&](const Candidate& a, const Candidate& b) { return quality(a) > quality(b); });
   const Candidate* pick = &found[0];
-  if (found.size() > 1 && !(found[0].support >= 4 && found[0].support >= 1.5 * found[1].support)) {
-    std::sort(found.begin(), found.end(),
-              [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
-    pick = &found[0];
-    out.ambiguous = found[1].score < found[0].score + 0.1;
-  }
+  out.ambiguous = found.size() > 1 && quality(found[1]) > quality(found[0]) - 0.15;
   out.found = true;
   out.bend = pick->bend;
   out.support = pick->support;
