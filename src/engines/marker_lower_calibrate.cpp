@@ -308,8 +308,16 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
     const double known = weak == 0 ? cal->right_edge_px : cal->left_edge_px;
     const double edge = HiddenEdge(camera, known, weak, left_px, right_px, upper_px);
     double& fitted = weak == 0 ? cal->left_edge_px : cal->right_edge_px;
+    // A faint step that both bands place alike is the limb or the shading inside it, never
+    // beyond: the symmetry moves it only outwards (the markers' centroids shift a little under
+    // side light, which would otherwise narrow a plainly seen joint).
+    const bool agree = !(bands[0].strength[weak] != 0 && bands[1].strength[weak] != 0 &&
+                         std::abs(bands[0].edge_px[weak] - bands[1].edge_px[weak]) > 1);
+    const bool outwards = (weak == 0 ? fitted - edge : edge - fitted) > 0;
     if (!std::isnan(edge)) {
-      if (steepest(weak) == 0 || std::abs(edge - fitted) > 1) fitted = edge;
+      if (steepest(weak) == 0 || (std::abs(edge - fitted) > 1 && (outwards || !agree))) {
+        fitted = edge;
+      }
     } else if (steepest(weak) == 0) {
       *message = "the joint's silhouette does not stand out from the background on one side";
       return false;

@@ -210,6 +210,30 @@ TEST(MarkerEngine, AWallAsBrightAsTheLimbStillGivesTheYaw) {
   }
 }
 
+TEST(MarkerEngine, SideLightKeepsAFaintLitLimbWhereItIs) {
+  // Seed 215 of the hard tier: side light makes the lit limb's step faint, and the reference's
+  // markers (their centroids shifted by the shading) put the symmetric edge 4 px inside it.
+  synth::MarkerSceneOptions o;
+  o.seed = 215;
+  o.background = "mixed";
+  o.lighting = "mixed";
+  o.clutter = 8;
+  o.noise_sigma = 3;
+  o.views = 1;
+  const synth::MarkerSceneRenderer scene(o);
+  auto engine = MarkerEngine();
+  EngineContext context;
+  context.reference = scene.Reference();
+  ASSERT_TRUE(engine->Begin(context).ok());
+  for (double yaw : {-38.0, -3.0, 14.0, 55.0, 84.0}) {
+    Frame frame;
+    frame.image = scene.RenderPose({yaw, -30}, 5);
+    const ArmMeasurement m = engine->Process(frame);
+    ASSERT_EQ(m.phase, MeasurementPhase::kOk) << yaw << ": " << m.note;
+    EXPECT_NEAR(m.yaw_signed_deg, yaw, 1.0) << m.note;
+  }
+}
+
 TEST(MarkerEngine, ImageOfAnotherSizeIsLost) {
   const synth::MarkerSceneRenderer scene(PlainScene());
   auto engine = MarkerEngine();
