@@ -1,7 +1,7 @@
 // Marker engine speed per image at 320x240 after decoding (target: >= 1000 images/s on one
-// core), on ray-cast views with yaw over +-110 degrees (both lower markers, one, or none
-// readable) with and without dark clutter, the thesis' acos path, and for scale the PNG decoding
-// of the same views. Run: build/bench/marker_bench
+// core), on ray-cast views with yaw over +-110 degrees (both lower markers readable, or one)
+// with and without dark clutter, the thesis' acos path, and for scale the PNG decoding of the
+// same views. Run: build/bench/marker_bench
 #include <memory>
 #include <vector>
 
