@@ -72,7 +72,7 @@ Status PreparePose(const AnalysisOptions& options, const VideoInfo& info,
     PoseArm arm;
     PoseSide side = options.calibrate_side;
     Status st = DetectArmJoints(options.inputs, options.start, options.calibrate_side,
-                                options.model_dir, options.engine.pose.min_score, &arm, &side);
+                                options.model_dir, options.engine.pose, &arm, &side);
     if (!st) return Status::Error("--auto-calibrate: " + st.message());
     resolved->shoulder_px = arm.shoulder;
     resolved->elbow_px = arm.elbow;

@@ -184,7 +184,7 @@ TEST(PoseEngineTest, AutoCalibrateFindsTheGeneratedArmsJoints) {
   PoseArm arm;
   PoseSide side = PoseSide::kAuto;
   const Status st = DetectArmJoints({dir.file("scene.avi")}, o.first_motion_frame(),
-                                    PoseSide::kLeft, "", 0.4, &arm, &side);
+                                    PoseSide::kLeft, "", PoseOptions(), &arm, &side);
   ASSERT_TRUE(st.ok()) << st.message();
   EXPECT_EQ(side, PoseSide::kLeft);
   const double upper = cv::norm(truth.elbow_px - truth.shoulder_px);
