@@ -57,7 +57,7 @@ Status DetectArmJoints(const std::vector<std::string>& inputs, int frame, PoseSi
                                                                                : PoseSide::kRight;
   }
   const internal::PoseLooks looks =
-      internal::TakeLooks(net.get(), f.image, k, take_closer ? near : whole, options);
+      internal::TakeLooks(net.get(), f.image, k, take_closer ? near : whole, side, options);
   *arm = ArmOf(looks.Combined(), side);
   *chosen = side;
   if (arm->score < options.min_score) {

@@ -60,7 +60,7 @@ class PoseEngine : public Engine {
     }
     crop_ = NextCrop(k, image.size(), o_.crop_score);
     tracking_ = crop_.size > 0;
-    internal::PoseLooks looks = internal::TakeLooks(net_.get(), image, k, used, o_);
+    internal::PoseLooks looks = internal::TakeLooks(net_.get(), image, k, used, o_.side, o_);
     looks.Shift(cv::Point2d(area_.tl()));
     gate_.Decide(looks, o_.side, &m);
     return m;

@@ -38,9 +38,10 @@ void PoseLooks::Shift(const cv::Point2d& offset) {
 }
 
 PoseLooks TakeLooks(PoseNetwork* net, const cv::Mat& image, const PoseKeypoints& body,
-                    const PoseCrop& body_crop, const PoseOptions& options) {
+                    const PoseCrop& body_crop, PoseSide side, const PoseOptions& options) {
   PoseLooks looks;
   looks.body = body;
+  if (ArmOf(body, side).score < options.min_score) return looks;
   PoseCrop crop = body_crop;
   if (options.arm_crop > 0 && ArmLookCrop(body, options.arm_crop, options.crop_score, &crop)) {
     looks.closer.push_back(net->Run(image, crop));

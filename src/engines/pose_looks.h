@@ -29,8 +29,9 @@ struct PoseLooks {
   void Shift(const cv::Point2d& offset);
 };
 
-// Takes the closer looks at `image` after the body look `body`, seen through `body_crop`.
+// Takes the closer looks at `image` after the body look `body`, seen through `body_crop`; none
+// when the body look does not see `side`'s arm (the row is lost whatever they would show).
 PoseLooks TakeLooks(PoseNetwork* net, const cv::Mat& image, const PoseKeypoints& body,
-                    const PoseCrop& body_crop, const PoseOptions& options);
+                    const PoseCrop& body_crop, PoseSide side, const PoseOptions& options);
 
 }  // namespace armmimic::internal
