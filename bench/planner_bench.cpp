@@ -6,6 +6,7 @@
 
 #include "armmimic/core/angles.h"
 #include "armmimic/robot/planner.h"
+#include "armmimic/robot/stream_planner.h"
 #include "armmimic/robot/val_program.h"
 
 namespace armmimic::robot {
@@ -64,6 +65,29 @@ void BM_FormatAndCheckValProgram(benchmark::State& state) {
   state.counters["keyframes"] = static_cast<double>(tr.keyframes.size());
 }
 BENCHMARK(BM_FormatAndCheckValProgram)->Unit(benchmark::kMillisecond);
+
+// Live mimicking's planning per frame (docs/live.md's "planning" stage): one row pushed, then
+// the command decision and its line, as the live stream does for every analysed frame.
+void BM_StreamPlannerPerFrame(benchmark::State& state) {
+  const AngleFile f = Recording(1800);
+  StreamPlanner p;
+  if (!p.Begin(PlannerOptions(), SourceKind::kArm, 30).ok()) state.SkipWithError("begin failed");
+  const ControllerProfile profile;
+  std::size_t i = 0;
+  double now = 0;
+  for (auto _ : state) {
+    const AngleRow& r = f.rows[i++ % f.rows.size()];
+    now += 1 / 30.0;
+    p.Push(r, now);
+    StreamCommand c;
+    if (p.Next(now, &c)) {
+      benchmark::DoNotOptimize(FormatMoveLine(c.joint_deg, profile));
+      p.Sent(c);
+    }
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_StreamPlannerPerFrame);
 
 }  // namespace
 }  // namespace armmimic::robot

@@ -8,6 +8,9 @@ shift || true
 scripts/deps.sh
 if [[ ! -f "$BUILD_DIR/build.ninja" ]]; then
   cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
+elif grep -q '^ARMMIMIC_CLI_ONLY:BOOL=ON' "$BUILD_DIR/CMakeCache.txt"; then
+  # scripts/demo.sh configured the CLI alone; the whole build reuses what it compiled.
+  cmake "$BUILD_DIR" -DARMMIMIC_CLI_ONLY=OFF "$@" >/dev/null
 elif (($# > 0)); then
   cmake "$BUILD_DIR" "$@" >/dev/null
 fi

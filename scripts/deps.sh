@@ -1,20 +1,27 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages armmimic needs, if any is missing. Safe to run again.
-#   scripts/deps.sh [--with-extras] [--with-model]
+#   scripts/deps.sh [--cli] [--with-extras] [--with-model]
+#   (none)         what the whole build needs: CLI, GUI, tests, benchmarks and the .deb
+#   --cli          only what armmimic-cli needs (scripts/demo.sh builds the CLI alone)
 #   --with-extras  the sanitizer, fuzzing and screenshot tools too
-#   --with-model   fetch the pose engine's model (MoveNet Lightning, from the npm package
+#   --with-model   an optional extra beyond Debian packages: fetch the pose engine's model (MoveNet Lightning, from the npm package
 #                  @vladmandic/human 3.3.6), check its SHA-256 and put it in .cache/armmimic
 #                  (or $ARMMIMIC_MODEL_DIR), where armmimic finds it without flags
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+CLI_ONLY=0
 WITH_EXTRAS=0
 WITH_MODEL=0
 for arg in "$@"; do
   case "$arg" in
+    --cli) CLI_ONLY=1 ;;
     --with-extras) WITH_EXTRAS=1 ;;
     --with-model) WITH_MODEL=1 ;;
-    *) echo "scripts/deps.sh: unknown option $arg (--with-extras, --with-model)" >&2; exit 2 ;;
+    *)
+      echo "scripts/deps.sh: unknown option $arg (--cli, --with-extras, --with-model)" >&2
+      exit 2
+      ;;
   esac
 done
 
@@ -63,17 +70,25 @@ LICENSE-vladmandic-human). Fetched and checked by armmimic's scripts/deps.sh --w
 TXT
 }
 
-PACKAGES=(
+# armmimic-cli: compiler, CMake, Qt Core + SerialPort (moc from qt6-base-dev-tools), OpenCV, Eigen.
+CLI_PACKAGES=(
   cmake ninja-build g++ pkg-config
-  qt6-base-dev qt6-base-dev-tools qt6-serialport-dev qt6-charts-dev qt6-qpa-plugins
-  libqt6opengl6-dev libgl1-mesa-dev libglx-dev
+  qt6-base-dev qt6-base-dev-tools qt6-serialport-dev
   libopencv-dev libeigen3-dev
+)
+# The rest of the build: the GUI, the test and benchmark libraries, and the package tools
+# (help2man makes the man pages; dpkg-dev and file let `cpack -G DEB` find library dependencies).
+PACKAGES=(
+  "${CLI_PACKAGES[@]}"
+  qt6-charts-dev qt6-svg-dev qt6-qpa-plugins libqt6opengl6-dev libgl1-mesa-dev libglx-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  help2man dpkg-dev file
 )
 # Extra tools for the sanitizer/fuzz runs and the screenshots; installed with --with-extras.
-EXTRAS=(clang libclang-rt-14-dev xvfb xauth locales)
+EXTRAS=(clang libclang-rt-14-dev xvfb xauth)
 
 wanted=("${PACKAGES[@]}")
+if ((CLI_ONLY)); then wanted=("${CLI_PACKAGES[@]}"); fi
 if ((WITH_EXTRAS)); then wanted+=("${EXTRAS[@]}"); fi
 
 missing=()
@@ -82,16 +97,6 @@ for p in "${wanted[@]}"; do
     missing+=("$p")
   fi
 done
-# A comma-decimal locale, so the tests can prove numbers are written with '.' whatever the locale.
-ensure_test_locale() {
-  ((WITH_EXTRAS)) || return 0
-  locale -a 2>/dev/null | grep -qi '^de_DE\.utf-\?8$' && return 0
-  [[ $(id -u) -eq 0 ]] || return 0
-  sed -i 's/^# *de_DE.UTF-8 UTF-8/de_DE.UTF-8 UTF-8/' /etc/locale.gen
-  grep -q '^de_DE.UTF-8 UTF-8' /etc/locale.gen || echo 'de_DE.UTF-8 UTF-8' >> /etc/locale.gen
-  locale-gen >/dev/null
-}
-
 install_packages() {
   echo "armmimic: installing $*" >&2
   local sudo=""
@@ -107,5 +112,4 @@ install_packages() {
 }
 
 if ((${#missing[@]} > 0)); then install_packages "${missing[@]}"; fi
-ensure_test_locale
 if ((WITH_MODEL)); then fetch_model; fi

@@ -24,7 +24,8 @@ own `--help` texts by `scripts/gen-cli-doc.sh`.
 ## Conventions
 
 - **Exit codes:** 0 ok; 1 runtime failure (unreadable video, bad file content, port error,
-  robot error, a refused plan); 2 usage error (unknown or malformed flag, missing argument).
+  robot error, a refused plan, an interrupt); 2 usage error (unknown or malformed flag, missing
+  argument, an output that is one of the inputs).
 - Every message names the file, line or flag it is about, e.g.
   `armmimic-cli analyze: --threshold: 'abc' is not a whole number`.
 - **Global options**, accepted before or after the subcommand: `-q` (quiet: only errors),
@@ -33,8 +34,52 @@ own `--help` texts by `scripts/gen-cli-doc.sh`.
 - `--help` works on every subcommand.
 - Outputs (angle files, images, `.val` programs) are written to a temporary file beside the
   target and renamed into place: an interrupted run never leaves half a file.
+- **No output replaces an input.** `analyze`, `background`, `plan` and `score --plot` refuse,
+  before reading anything, an output that is the same file as one of their inputs (the video,
+  `--background`, `--arm-length`, `--reference`, `--params-from`, `--list`, the images an earlier
+  run's header names, `ANGLES.tsv`, `--profile`, `TRUTH.tsv`): exit 2, naming both. Files are
+  compared by device and inode, so `./a.tsv` for `a.tsv`, a symlink or a hard link is caught
+  too. `send` refuses a journal (`INPUT.journal`) that is its `--profile`; `synth` reads no
+  file. The desktop application refuses its exports the same way.
+- **Signals.** SIGINT (Ctrl-C), SIGTERM (`timeout`, systemd, GNU parallel, Slurm) and SIGHUP (a
+  closed terminal) stop every command the same way, and the message names the signal
+  (`analyze: interrupted (SIGTERM); 120 rows kept in a.tsv (marked complete=no)`). An angle file
+  keeps the rows analysed so far in a valid file marked `complete=no`; an image, a `.val`
+  program or a `synth` scene is written whole or not at all; no temporary file is left; the
+  exit code is 1. `send` stops the stream (its journal lets `--resume` continue); `puma-sim`
+  prints its final joints and exits 0. Further signals while a command is stopping change
+  nothing (GNU parallel sends SIGTERM more than once).
+- **Repeating a run.** The header of an angle file records the engine, every engine setting
+  under its `ENGINE.KEY` name (the one `--param` takes, changed or not) and the inputs besides
+  the video (`background`, `background_frames`, `arm_length`, `reference`, `start`, `shoulder`,
+  `elbow`, `wrist`, `roi`). `armmimic-cli analyze VIDEO -o NEW.tsv --params-from OLD.tsv`
+  repeats that run on VIDEO; flags given as well override what the header says. The older keys
+  (`threshold=45`, `window=15`, ...) stay in the header as before.
+- **Text files** (angle files, VAL programs, controller profiles, truth files, `--list`) may
+  start with a UTF-8 byte order mark and may end their lines with CRLF.
 - Numbers on the command line use `.` decimals whatever the locale. Points are `X,Y` and
   rectangles `X,Y,W,H`, in full-image pixels.
+
+## Many videos
+
+`armmimic-cli analyze VIDEO... --output-dir DIR` (or `--list FILE`, one video per line) analyses
+each video on its own into `DIR/NAME.tsv` and writes `DIR/summary.tsv`: one line per video with
+`video`, `angles`, `frames`, `ok`, `lost`, `coverage` (ok / frames, 0..1), `seconds`, `status`
+(`ok`, `failed`, `interrupted`, `skipped`) and `error`. A failing video does not stop the others;
+the exit code is 0 only when every video was analysed, 1 otherwise, 2 for a usage error (found
+before any video runs). [docs/batch.md](batch.md) shows how to spread the videos over the cores
+of one machine or over many machines with GNU parallel or a Slurm job array.
+
+## The desktop application's command line
+
+```
+armmimic [--help] [--version] [VIDEO...]
+```
+
+`armmimic VIDEO` opens a video (or image files, or a folder of images) at start. `--help` and
+`--version` print and exit 0 without a display (they work over ssh or in a package check); an
+unknown option prints the error and `Try 'armmimic --help'.` and exits 2. Qt's own options
+(`-platform offscreen`, `-style fusion`, ...) are accepted. `--` ends the options.
 
 ## A whole run
 
@@ -47,6 +92,8 @@ armmimic-cli score scene/truth.tsv angles.tsv --plot err.png
 armmimic-cli plan angles.tsv -o arm.val
 armmimic-cli puma-sim --link /tmp/puma &
 armmimic-cli send arm.val --port /tmp/puma
+armmimic-cli mimic scene/scene.avi --realtime --engine bgsub --background bg.png \
+    --arm-length scene/armlength.png --start 45 --port /tmp/puma -o live.tsv
 ```
 
 ## Commands
@@ -55,7 +102,7 @@ HEAD
   echo '```'
   "$CLI" --help
   echo '```'
-  for cmd in background analyze synth "synth arm" "synth marker" score plan send puma-sim; do
+  for cmd in background analyze synth "synth arm" "synth marker" score plan send mimic puma-sim; do
     echo
     echo "### $cmd"
     echo

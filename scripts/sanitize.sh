@@ -12,5 +12,5 @@ export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$PWD/scripts/lsan.supp:print_s
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 export QT_QPA_PLATFORM="${QT_QPA_PLATFORM:-offscreen}"
 scripts/build.sh "$BUILD_DIR" -DARMMIMIC_SANITIZE=ON -DARMMIMIC_BUILD_BENCH=OFF "$@" >&2
-ctest --test-dir "$BUILD_DIR" --output-on-failure -j "${ARMMIMIC_TEST_JOBS:-$(nproc)}" \
+scripts/run-ctest.sh "$BUILD_DIR" --output-on-failure -j "${ARMMIMIC_TEST_JOBS:-$(nproc)}" \
   --timeout "${ARMMIMIC_TEST_TIMEOUT:-300}"

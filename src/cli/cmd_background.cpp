@@ -5,9 +5,11 @@
 
 #include "args.h"
 #include "armmimic/core/image_io.h"
+#include "armmimic/core/same_file.h"
 #include "armmimic/engines/analysis.h"
 #include "armmimic/engines/bgsub_options.h"
 #include "command.h"
+#include "interrupt.h"
 #include "progress.h"
 
 namespace armmimic::cli {
@@ -31,12 +33,23 @@ int RunBackground(const std::vector<std::string>& args, const GlobalOptions& glo
     return p.UsageError("-o " + output + ": use an image extension (.png, .bmp, .tif, .jpg)");
   }
 
+  if (Status st = CheckOutputsAreNotInputs({{"VIDEO", inputs[0]}}, {{"-o", output}}); !st) {
+    return p.UsageError(st.message());
+  }
+
+  InterruptGuard guard;
   ProgressBar bar("background", frames, global.ShowProgress());
   AnalysisCallbacks cb;
+  cb.cancel = InterruptGuard::flag();
   cb.on_progress = [&](int done, int) { bar.Update(done); };
   cv::Mat background;
   Status st = EstimateBackground(inputs, start, frames, &background, cb);
   bar.Finish();
+  if (st && InterruptGuard::interrupted()) {
+    std::cerr << "background: " << InterruptGuard::Message() << "; " << output
+              << " not written (a mean of only some frames is no background)\n";
+    return kExitFailure;
+  }
   if (st) st = WriteImageAtomically(output, background);
   if (!st) {
     std::cerr << "armmimic-cli background: " << st.message() << "\n";

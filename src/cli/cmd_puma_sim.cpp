@@ -1,33 +1,31 @@
 // armmimic-cli puma-sim [--link PATH]: the VAL controller emulator on a pseudo-terminal.
 #include <chrono>
-#include <csignal>
 #include <iostream>
 #include <thread>
 
 #include "args.h"
 #include "armmimic/sim/pty_server.h"
 #include "command.h"
+#include "interrupt.h"
 
 namespace armmimic::cli {
 namespace {
-
-volatile std::sig_atomic_t g_stop = 0;
-void OnStopSignal(int) { g_stop = 1; }
 
 int RunPumaSim(const std::vector<std::string>& args, const GlobalOptions& global) {
   sim::EmulatorOptions options;
   std::string link_path, log_path;
   double exit_after_idle_s = 0;
-  ArgParser p("puma-sim",
-              "  armmimic-cli puma-sim [--link PATH] [--log FILE] [--time-scale X]\n"
-              "          [--fail-after N] [--silent-after N] [--garble-after N] "
-              "[--exit-after-idle S]",
-              "Emulates a PUMA 760 VAL II controller on a pseudo-terminal and prints the device "
-              "path to connect to (first line of standard output). It echoes, prompts with '.', "
-              "takes CR-ended lines of at most 80 characters and interprets SPEED, DO MOVE "
-              "#PPOINT(...), DO DRIVE, HERE, WHERE, EDIT/E, EXECUTE and ABORT within the joint "
-              "limits (docs/val-dialect.md). Runs until SIGINT/SIGTERM, then prints the final "
-              "joint angles.");
+  ArgParser p(
+      "puma-sim",
+      "  armmimic-cli puma-sim [--link PATH] [--log FILE] [--time-scale X] [--line-baud N]\n"
+      "          [--fail-after N] [--silent-after N] [--garble-after N] "
+      "[--exit-after-idle S]",
+      "Emulates a PUMA 760 VAL II controller on a pseudo-terminal and prints the device "
+      "path to connect to (first line of standard output). It echoes, prompts with '.', "
+      "takes CR-ended lines of at most 80 characters and interprets SPEED, DO MOVE "
+      "#PPOINT(...), DO DRIVE, HERE, WHERE, EDIT/E, EXECUTE and ABORT within the joint "
+      "limits (docs/val-dialect.md). Runs until SIGINT, SIGTERM or SIGHUP, then prints "
+      "the final joint angles.");
   p.String("--link", &link_path, "PATH", "also make PATH a symlink to the device");
   p.String("--log", &log_path, "FILE", "write one line per executed move (seq, joints, command)");
   p.Double("--time-scale", &options.time_scale, "X",
@@ -40,6 +38,10 @@ int RunPumaSim(const std::vector<std::string>& args, const GlobalOptions& global
         "fault: run line N+1, then answer nothing until the client reconnects", 0);
   p.Int("--garble-after", &options.garble_after, "N",
         "fault: a line of noise bytes before every prompt after line N", 0);
+  p.Int("--line-baud", &options.line_baud, "N",
+        "answer like a VAL terminal on an N-baud RS-232 line: every byte in and out takes a "
+        "character time (10 bits), e.g. 9600 (default 0: the pseudo-terminal's speed)",
+        0, 4000000);
   p.Double("--exit-after-idle", &exit_after_idle_s, "S",
            "exit after S seconds without traffic or motion (for scripts and tests)");
   if (auto code = p.Parse(args)) return *code;
@@ -50,20 +52,19 @@ int RunPumaSim(const std::vector<std::string>& args, const GlobalOptions& global
     if (!s.ok()) return p.UsageError("--limits: " + s.message());
   }
 
+  InterruptGuard guard;  // before the device exists: whoever sees it may signal at once
   sim::PtyServer server(options);
   const Status s = server.Start(link_path, log_path);
   if (!s.ok()) {
     std::cerr << "armmimic-cli puma-sim: " << s.message() << "\n";
     return kExitFailure;
   }
-  std::signal(SIGINT, OnStopSignal);
-  std::signal(SIGTERM, OnStopSignal);
   std::cout << server.device_path() << std::endl;
   if (!global.quiet) {
     std::cerr << "puma-sim: VAL controller emulator on " << server.device_path()
               << (link_path.empty() ? "" : " (" + link_path + ")") << "; Ctrl-C to stop\n";
   }
-  while (!g_stop) {
+  while (!InterruptGuard::interrupted()) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     if (exit_after_idle_s > 0 && server.idle_s() > exit_after_idle_s) break;
   }

@@ -5,8 +5,10 @@
 #include "args.h"
 #include "armmimic/core/angle_file.h"
 #include "armmimic/core/image_io.h"
+#include "armmimic/core/same_file.h"
 #include "armmimic/synth/score.h"
 #include "command.h"
+#include "interrupt.h"
 
 namespace armmimic::cli {
 namespace {
@@ -21,10 +23,11 @@ int RunScore(const std::vector<std::string>& args, const GlobalOptions& global) 
               "Compares an angle file with the truth of a generated scene, frame by frame (rows\n"
               "are matched by frame index). Prints a table like thesis Table 5-1 (truth,\n"
               "calculated and error of the upper arm and forearm directions; yaw and bend for\n"
-              "marker scenes) and a summary: coverage, mean absolute direction error per segment,\n"
-              "the axis error (difference mod 180, as the thesis measured orientation), maximum,\n"
-              "yaw and bend errors. Exit status 0 whatever the errors; 1 when a file cannot be\n"
-              "read or is malformed.");
+              "marker scenes) and a summary: coverage, the confidently wrong rate (rows ok with\n"
+              "an error over 15 degrees), mean absolute direction error per segment, the axis\n"
+              "error (difference mod 180, as the thesis measured orientation), maximum, yaw and\n"
+              "bend errors. Exit status 0 whatever the errors; 1 when a file cannot be read or\n"
+              "is malformed.");
   p.Positionals(&files, "TRUTH.tsv ANGLES.tsv", 2, 2);
   p.String("--plot", &plot, "FILE", "also draw the error against the frame into an image (.png)");
   p.String("--plot-size", &plot_size, "WxH", "size of the plot (default 800x400)");
@@ -44,6 +47,12 @@ int RunScore(const std::vector<std::string>& args, const GlobalOptions& global) 
     }
     size = {w, h};
   }
+  if (!plot.empty()) {
+    const Status same = CheckOutputsAreNotInputs(
+        {{"TRUTH.tsv", files[0]}, {"ANGLES.tsv", files[1]}}, {{"--plot", plot}});
+    if (!same) return p.UsageError(same.message());
+  }
+  InterruptGuard guard;
   synth::TruthFile truth;
   Status st = synth::ReadTruthFile(files[0], &truth);
   if (!st.ok()) {
@@ -62,6 +71,10 @@ int RunScore(const std::vector<std::string>& args, const GlobalOptions& global) 
   if (report.summary.matched_frames == 0 && !global.quiet) {
     std::cerr << "armmimic-cli score: warning: no frame of " << files[1]
               << " matches a truth frame with angles in " << files[0] << "\n";
+  }
+  if (!plot.empty() && InterruptGuard::interrupted()) {
+    std::cerr << "score: " << InterruptGuard::Message() << "; " << plot << " not written\n";
+    return kExitFailure;
   }
   if (!plot.empty()) {
     st = WriteImageAtomically(plot, synth::PlotScore(report, size));

@@ -3,26 +3,85 @@
 
 #include "args.h"
 #include "armmimic/synth/arm_scene.h"
+#include "armmimic/synth/random_arm_scene.h"
+#include "interrupt.h"
 #include "progress.h"
 #include "synth_commands.h"
 
 namespace armmimic::cli {
+namespace {
+
+// The flags a random scene draws from its seed instead.
+const char* const kDrawnFlags[] = {"--fps",
+                                   "--background-frames",
+                                   "--standstill-frames",
+                                   "--frames",
+                                   "--noise",
+                                   "--codec",
+                                   "--quality",
+                                   "--contrast",
+                                   "--drift",
+                                   "--shadow",
+                                   "--head-motion",
+                                   "--motion",
+                                   "--side"};
+
+int WriteRandom(const synth::RandomArmSceneOptions& o, const std::string& outdir,
+                const GlobalOptions& global) {
+  const synth::RandomArmScene scene(o);
+  InterruptGuard guard;
+  ProgressBar bar("synth arm", scene.frame_count(), global.ShowProgress());
+  const Status st = synth::WriteSceneFolder(
+      scene, {"MJPG", scene.params().jpeg_quality}, synth::RandomSceneMeta(scene), outdir,
+      [&bar](int done, int) { bar.Update(done); }, InterruptGuard::flag());
+  bar.Finish();
+  if (!st.ok() && InterruptGuard::interrupted()) {
+    std::cerr << "synth arm: " << InterruptGuard::Message() << "; " << outdir
+              << " unchanged (the scene is written whole or not at all)\n";
+    return kExitFailure;
+  }
+  if (!st.ok()) {
+    std::cerr << "armmimic-cli synth arm: " << st.message() << "\n";
+    return kExitFailure;
+  }
+  if (!global.quiet) {
+    const synth::RandomSceneParams& p = scene.params();
+    std::cerr << "synth arm: random " << synth::SceneTierName(o.tier) << " scene, seed " << o.seed
+              << ": " << scene.frame_count() << " frames (" << p.background_frames
+              << " background, " << p.standstill_frames << " standstill, " << p.motion_frames
+              << " motion) at " << p.fps << " fps, " << synth::ArmSideName(p.side) << " arm, "
+              << (p.short_sleeves ? "short" : "long") << " sleeves, camouflage " << p.camouflage
+              << " -> " << outdir << "/{scene.avi,armlength.png,background.png,truth.tsv}\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace
 
 int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& global) {
   synth::ArmSceneOptions o;
   std::vector<std::string> outdir;
   std::string codec = o.codec;
+  bool random = false;
+  synth::SceneTier tier = synth::SceneTier::kMedium;
   ArgParser p(
       "synth arm",
       "  armmimic-cli synth arm OUTDIR [--seed N] [--size WxH] [--fps F]\n"
       "      [--background-frames K] [--standstill-frames M] [--frames N] [--noise S]\n"
       "      [--codec MJPG|XVID|H264] [--quality Q] [--contrast C] [--drift D] [--shadow]\n"
-      "      [--head-motion] [--motion swing|bend|yaw|mixed] [--side left|right]",
+      "      [--head-motion] [--motion swing|bend|yaw|mixed] [--side left|right]\n"
+      "  armmimic-cli synth arm OUTDIR --random [--tier easy|medium|hard] [--seed N] [--size WxH]",
       "Renders a person in a room following the thesis protocol: K frames of the empty scene,\n"
       "M standstill frames with both arms hanging, then N frames of one arm moving with known\n"
       "upper-arm and forearm directions. Writes OUTDIR/scene.avi, armlength.png (the moving arm\n"
       "straight and horizontal, thesis 5.2.3), background.png (the empty scene) and truth.tsv.\n"
-      "OUTDIR is created if missing. The same seed and options give the same files.");
+      "OUTDIR is created if missing. The same seed and options give the same files.\n"
+      "With --random the seed and the tier draw the whole scene (the person's place, size,\n"
+      "proportions and clothing, the room and its furniture, the camera, the light, the frame\n"
+      "rate and the motion; docs/synth.md); only --seed and --size go with it. Seeds " +
+          std::to_string(synth::kTuningSeedFirst) + "-" + std::to_string(synth::kTuningSeedLast) +
+          "\nare for tuning, seeds " + std::to_string(synth::kHeldOutSeedFirst) + "-" +
+          std::to_string(synth::kHeldOutSeedLast) + " are held out for measurement only.");
   p.Positionals(&outdir, "OUTDIR", 1, 1);
   p.Custom("--seed", "N", "random seed for textures, colours, noise and mixed motion (default 1)",
            [&o](const std::string& v) { return ParseSeedArg(v, &o.seed); });
@@ -60,7 +119,28 @@ int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& globa
              if (!synth::ParseArmSide(v, &o.side)) return "'" + v + "' is not left or right";
              return "";
            });
+  p.Flag("--random", &random, "draw the whole scene from the seed and the tier (docs/synth.md)");
+  p.Custom("--tier", "TIER", "with --random: easy, medium (default) or hard",
+           [&tier](const std::string& v) -> std::string {
+             if (!synth::ParseSceneTier(v, &tier)) return "'" + v + "' is not easy, medium or hard";
+             return "";
+           });
   if (auto code = p.Parse(args)) return *code;
+  if (p.Given("--tier") && !random) return p.UsageError("--tier goes with --random");
+  if (random) {
+    for (const char* flag : kDrawnFlags) {
+      if (p.Given(flag)) {
+        return p.UsageError(std::string(flag) +
+                            " cannot be combined with --random: the seed draws it");
+      }
+    }
+    synth::RandomArmSceneOptions ro;
+    ro.seed = o.seed;
+    ro.tier = tier;
+    ro.size = o.size;
+    if (Status st = ro.Check(); !st.ok()) return p.UsageError("--size: " + st.message());
+    return WriteRandom(ro, outdir[0], global);
+  }
   for (char& c : codec) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   if (codec == "AVC1" || codec == "X264") codec = "H264";
   o.codec = codec;
@@ -89,9 +169,16 @@ int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& globa
     return p.UsageError(flag + ": " + m);
   }
 
+  InterruptGuard guard;
   ProgressBar bar("synth arm", o.frame_count(), global.ShowProgress());
-  const Status st = synth::WriteArmScene(o, outdir[0], [&bar](int done, int) { bar.Update(done); });
+  const Status st = synth::WriteArmScene(
+      o, outdir[0], [&bar](int done, int) { bar.Update(done); }, InterruptGuard::flag());
   bar.Finish();
+  if (!st.ok() && InterruptGuard::interrupted()) {
+    std::cerr << "synth arm: " << InterruptGuard::Message() << "; " << outdir[0]
+              << " unchanged (the scene is written whole or not at all)\n";
+    return kExitFailure;
+  }
   if (!st.ok()) {
     std::cerr << "armmimic-cli synth arm: " << st.message() << "\n";
     return kExitFailure;

@@ -4,6 +4,7 @@
 
 #include "args.h"
 #include "armmimic/synth/marker_scene.h"
+#include "interrupt.h"
 #include "progress.h"
 #include "synth_commands.h"
 
@@ -49,10 +50,16 @@ int RunSynthMarker(const std::vector<std::string>& args, const GlobalOptions& gl
   if (auto code = p.Parse(args)) return *code;
   if (Status st = o.Check(); !st.ok()) return p.UsageError(st.message());
 
+  InterruptGuard guard;
   ProgressBar bar("synth marker", o.views, global.ShowProgress());
-  const Status st =
-      synth::WriteMarkerScene(o, outdir[0], [&bar](int done, int) { bar.Update(done); });
+  const Status st = synth::WriteMarkerScene(
+      o, outdir[0], [&bar](int done, int) { bar.Update(done); }, InterruptGuard::flag());
   bar.Finish();
+  if (!st.ok() && InterruptGuard::interrupted()) {
+    std::cerr << "synth marker: " << InterruptGuard::Message() << "; " << outdir[0]
+              << " has no truth.tsv (not a whole scene)\n";
+    return kExitFailure;
+  }
   if (!st.ok()) {
     std::cerr << "armmimic-cli synth marker: " << st.message() << "\n";
     return kExitFailure;

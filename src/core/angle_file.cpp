@@ -110,6 +110,7 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
                  "line is longer than " + std::to_string(kMaxAngleLineLength) + " characters");
     }
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line_no == 1) StripUtf8Bom(&line);
     if (line.find('\0') != std::string::npos) return err(line_no, "line contains a NUL byte");
 
     if (!line.empty() && line[0] == '#') {

@@ -64,6 +64,10 @@ bool ParseFiniteDouble(const std::string& text, double* out) {
   return true;
 }
 
+void StripUtf8Bom(std::string* line) {
+  if (line->size() >= 3 && line->compare(0, 3, "\xEF\xBB\xBF") == 0) line->erase(0, 3);
+}
+
 std::string Trim(const std::string& text) {
   const auto a = text.find_first_not_of(" \t\r");
   if (a == std::string::npos) return "";

@@ -8,10 +8,12 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "armmimic/core/frame_pacer.h"
 #include "armmimic/core/image_io.h"
 #include "armmimic/engines/engine.h"
 #include "armmimic/engines/option_fields.h"
 #include "armmimic/engines/pose.h"
+#include "armmimic/engines/run_record.h"
 #include "pose_prepare.h"
 
 namespace armmimic {
@@ -60,6 +62,18 @@ Status LoadSized(const std::string& path, const std::string& flag, const VideoIn
   return Status::Ok();
 }
 
+// The input of a pass: options.open_source when set, else the files named in options.inputs.
+std::unique_ptr<VideoSource> OpenInput(const AnalysisOptions& options, Status* status) {
+  if (options.open_source) return options.open_source(status);
+  return VideoSource::Open(options.inputs, status);
+}
+
+// Averages frames [start, start+count) of `source` (thesis 5.2.1); `open_status` is returned
+// when the source could not be opened.
+Status EstimateBackgroundOf(std::unique_ptr<VideoSource> source, const Status& open_status,
+                            int start, int count, cv::Mat* background,
+                            const AnalysisCallbacks& callbacks);
+
 // The pose network's part before the engine starts: --auto-calibrate's joints, and the pose
 // engine's arm when --side is auto. Decisions go to on_estimate.
 Status PreparePose(const AnalysisOptions& options, const VideoInfo& info,
@@ -71,8 +85,9 @@ Status PreparePose(const AnalysisOptions& options, const VideoInfo& info,
     Phase(callbacks, "auto-calibrate");
     PoseArm arm;
     PoseSide side = options.calibrate_side;
-    Status st = DetectArmJoints(options.inputs, options.start, options.calibrate_side,
-                                options.model_dir, options.engine.pose, &arm, &side);
+    Status st = internal::DetectArmJointsFrom(
+        [&options](Status* s) { return OpenInput(options, s); }, options.start,
+        options.calibrate_side, options.model_dir, options.engine.pose, &arm, &side);
     if (!st) return Status::Error("--auto-calibrate: " + st.message());
     resolved->shoulder_px = arm.shoulder;
     resolved->elbow_px = arm.elbow;
@@ -86,7 +101,8 @@ Status PreparePose(const AnalysisOptions& options, const VideoInfo& info,
   }
   if (options.engine.kind == EngineKind::kPose && options.engine.pose.side == PoseSide::kAuto) {
     std::string why;
-    Status st = internal::ChoosePoseSide(options.inputs, options.start, info.fps, options.model_dir,
+    Status st = internal::ChoosePoseSide([&options](Status* s) { return OpenInput(options, s); },
+                                         options.start, info.fps, options.model_dir,
                                          &resolved->engine.pose.side, &why);
     if (!st) return st;
     tell(why);
@@ -109,10 +125,11 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
   if (!st) return finish(st);
 
   Status open_status;
-  std::unique_ptr<VideoSource> source = VideoSource::Open(given.inputs, &open_status);
+  std::unique_ptr<VideoSource> source = OpenInput(given, &open_status);
   if (!source) return finish(open_status);
   const VideoInfo info = source->info();
   summary->video = info;
+  if (callbacks.on_open) callbacks.on_open(info);
   const EngineKind kind = given.engine.kind;
   const bool arm_engine = kind != EngineKind::kMarker;
 
@@ -163,8 +180,10 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
     } else if (options.background_frames > 0) {
       // A first pass over frames [0, K) of the input itself (thesis 5.2.1).
       Phase(callbacks, "background");
-      st = EstimateBackground(options.inputs, 0, options.background_frames, &context.background,
-                              callbacks);
+      Status bg_open;
+      std::unique_ptr<VideoSource> bg_source = OpenInput(options, &bg_open);
+      st = EstimateBackgroundOf(std::move(bg_source), bg_open, 0, options.background_frames,
+                                &context.background, callbacks);
       if (!st) return finish(Status::Error("--background-frames: " + st.message()));
       if (Cancelled(callbacks)) {
         summary->cancelled = true;
@@ -191,9 +210,9 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
                     {"height", std::to_string(info.size.height)}};
   if (arm_engine) meta.emplace_back("start", std::to_string(options.start));
   for (auto& kv : engine->Describe()) meta.push_back(std::move(kv));
-  // Every parameter changed from its default, under the name `analyze --param` takes, so the
-  // file says how to make it again.
-  for (auto& kv : ChangedEngineOptions(options.engine)) meta.push_back(std::move(kv));
+  // The inputs besides the video and every engine parameter, under the name `analyze --param`
+  // takes, so the file says how to make it again (`analyze --params-from`).
+  for (auto& kv : RunRecordMeta(options)) meta.push_back(std::move(kv));
   summary->meta = meta;
   if (on_ready) {
     st = on_ready(meta);
@@ -224,6 +243,7 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
   const int total =
       info.frame_count >= 0 ? info.frame_count - (arm_engine ? options.start : 0) : -1;
   Phase(callbacks, "analysis");
+  FramePacer pacer(options.realtime && info.kind == SourceKind::kVideo ? info.fps : 0);
   Frame frame;
   int done = 0;
   int setup = 0;
@@ -237,6 +257,8 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
       if (!read_status) return finish(read_status);
       break;
     }
+    const auto captured = pacer.Wait(frame, callbacks.cancel);
+    if (callbacks.on_frame) callbacks.on_frame(frame, captured);
     const ArmMeasurement m = engine->Process(frame);
     summary->last_frame = frame.index;
     ++done;
@@ -344,11 +366,20 @@ Status AnalysisOptions::Check() const {
 
 Status EstimateBackground(const std::vector<std::string>& inputs, int start, int count,
                           cv::Mat* background, const AnalysisCallbacks& callbacks) {
-  if (count < 1) return Status::Error("the background needs at least 1 frame");
-  if (start < 0) return Status::Error("the first background frame must be 0 or more");
   Status st;
   std::unique_ptr<VideoSource> source = VideoSource::Open(inputs, &st);
-  if (!source) return st;
+  return EstimateBackgroundOf(std::move(source), st, start, count, background, callbacks);
+}
+
+namespace {
+
+Status EstimateBackgroundOf(std::unique_ptr<VideoSource> source, const Status& open_status,
+                            int start, int count, cv::Mat* background,
+                            const AnalysisCallbacks& callbacks) {
+  if (count < 1) return Status::Error("the background needs at least 1 frame");
+  if (start < 0) return Status::Error("the first background frame must be 0 or more");
+  if (!source) return open_status;
+  Status st;
   const VideoInfo& info = source->info();
   const std::string range =
       "[" + std::to_string(start) + ", " + std::to_string(start + count) + ")";
@@ -381,6 +412,8 @@ Status EstimateBackground(const std::vector<std::string>& inputs, int start, int
   sum.convertTo(*background, CV_8UC3, 1.0 / count);
   return Status::Ok();
 }
+
+}  // namespace
 
 Status RunAnalysis(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
                    AnalysisSummary* summary) {

@@ -16,9 +16,16 @@ const char* EngineName(EngineKind kind) {
   return "?";
 }
 
+const std::vector<EngineKind>& AllEngineKinds() {
+  static const std::vector<EngineKind> kinds = {EngineKind::kBgsub, EngineKind::kLk,
+                                                EngineKind::kMarker, EngineKind::kPose};
+  return kinds;
+}
+
+bool IsArmEngine(EngineKind kind) { return kind != EngineKind::kMarker; }
+
 bool ParseEngineKind(const std::string& name, EngineKind* out) {
-  for (EngineKind k :
-       {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kMarker, EngineKind::kPose}) {
+  for (EngineKind k : AllEngineKinds()) {
     if (name == EngineName(k)) {
       *out = k;
       return true;

@@ -22,4 +22,19 @@ AngleRow ArmMeasurement::ToRow() const {
   return row;
 }
 
+ArmMeasurement ArmMeasurement::FromRow(const AngleRow& row) {
+  ArmMeasurement m;
+  m.frame = row.frame;
+  m.time_s = row.time_s;
+  m.phase = row.ok() ? MeasurementPhase::kOk : MeasurementPhase::kLost;
+  m.file = row.file;
+  m.upper_deg = row.upper_deg;
+  m.fore_deg = row.fore_deg;
+  m.yaw_deg = row.yaw_deg;
+  m.bend_deg = row.bend_deg;
+  m.upper_com_px = {row.upper_cx, row.upper_cy};
+  m.fore_com_px = {row.fore_cx, row.fore_cy};
+  return m;
+}
+
 }  // namespace armmimic

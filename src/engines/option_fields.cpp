@@ -446,15 +446,15 @@ Status SetEngineOption(const std::string& assignment, EngineOptions* o) {
 
 namespace {
 
-// The exact text of a changed value (doubles in their shortest round-trip form), as
+// The exact text of each value (doubles in their shortest round-trip form), as
 // SetEngineOption reads it back.
 template <typename O>
-void AppendChanged(const std::vector<OptionField<O>>& fields, const std::string& engine, const O& o,
-                   std::vector<std::pair<std::string, std::string>>* out) {
+void AppendValues(const std::vector<OptionField<O>>& fields, const std::string& engine, const O& o,
+                  bool changed_only, std::vector<std::pair<std::string, std::string>>* out) {
   const O defaults;
   for (const auto& f : fields) {
     const double v = f.get(o);
-    if (v == f.get(defaults)) continue;
+    if (changed_only && v == f.get(defaults)) continue;
     std::string text;
     if (f.kind == OptionKind::kDouble) {
       char buf[64];
@@ -467,25 +467,34 @@ void AppendChanged(const std::vector<OptionField<O>>& fields, const std::string&
   }
 }
 
-}  // namespace
-
-std::vector<std::pair<std::string, std::string>> ChangedEngineOptions(const EngineOptions& o) {
+std::vector<std::pair<std::string, std::string>> EngineValues(const EngineOptions& o,
+                                                              bool changed_only) {
   std::vector<std::pair<std::string, std::string>> out;
   switch (o.kind) {
     case EngineKind::kBgsub:
-      AppendChanged(BgsubOptionFields(), "bgsub", o.bgsub, &out);
+      AppendValues(BgsubOptionFields(), "bgsub", o.bgsub, changed_only, &out);
       break;
     case EngineKind::kLk:
-      AppendChanged(LkOptionFields(), "lk", o.lk, &out);
+      AppendValues(LkOptionFields(), "lk", o.lk, changed_only, &out);
       break;
     case EngineKind::kMarker:
-      AppendChanged(MarkerOptionFields(), "marker", o.marker, &out);
+      AppendValues(MarkerOptionFields(), "marker", o.marker, changed_only, &out);
       break;
     case EngineKind::kPose:
-      AppendChanged(PoseOptionFields(), "pose", o.pose, &out);
+      AppendValues(PoseOptionFields(), "pose", o.pose, changed_only, &out);
       break;
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> ChangedEngineOptions(const EngineOptions& o) {
+  return EngineValues(o, true);
+}
+
+std::vector<std::pair<std::string, std::string>> EngineOptionValues(const EngineOptions& o) {
+  return EngineValues(o, false);
 }
 
 std::string DescribeEngineOptions(int width) {

@@ -32,10 +32,20 @@ Status ReadFrame(VideoSource* source, int index, Frame* frame) {
 Status DetectArmJoints(const std::vector<std::string>& inputs, int frame, PoseSide side,
                        const std::string& model_dir, const PoseOptions& options, PoseArm* arm,
                        PoseSide* chosen) {
+  return internal::DetectArmJointsFrom(
+      [&inputs](Status* st) { return VideoSource::Open(inputs, st); }, frame, side, model_dir,
+      options, arm, chosen);
+}
+
+namespace internal {
+
+Status DetectArmJointsFrom(const SourceOpener& open, int frame, PoseSide side,
+                           const std::string& model_dir, const PoseOptions& options, PoseArm* arm,
+                           PoseSide* chosen) {
   Status st;
   std::unique_ptr<PoseNetwork> net = PoseNetwork::Load(model_dir, &st);
   if (!net) return st;
-  std::unique_ptr<VideoSource> source = VideoSource::Open(inputs, &st);
+  std::unique_ptr<VideoSource> source = open(&st);
   if (!source) return st;
   Frame f;
   st = ReadFrame(source.get(), frame, &f);
@@ -71,14 +81,12 @@ Status DetectArmJoints(const std::vector<std::string>& inputs, int frame, PoseSi
   return Status::Ok();
 }
 
-namespace internal {
-
-Status ChoosePoseSide(const std::vector<std::string>& inputs, int start, double fps,
-                      const std::string& model_dir, PoseSide* side, std::string* why) {
+Status ChoosePoseSide(const SourceOpener& open, int start, double fps, const std::string& model_dir,
+                      PoseSide* side, std::string* why) {
   Status st;
   std::unique_ptr<PoseNetwork> net = PoseNetwork::Load(model_dir, &st);
   if (!net) return st;
-  std::unique_ptr<VideoSource> source = VideoSource::Open(inputs, &st);
+  std::unique_ptr<VideoSource> source = open(&st);
   if (!source) return st;
   const int count = source->info().frame_count;
   const int second = std::max(1, static_cast<int>(fps > 0 ? fps + 0.5 : 1));

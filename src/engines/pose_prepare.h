@@ -1,17 +1,29 @@
 // Private: the analysis pipeline's pose steps before the engine starts.
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "armmimic/core/status.h"
+#include "armmimic/core/video_source.h"
+#include "armmimic/engines/pose.h"
 #include "armmimic/engines/pose_options.h"
 
 namespace armmimic::internal {
 
+// Opens the analysed input for one pass (AnalysisOptions::open_source or its files).
+using SourceOpener = std::function<std::unique_ptr<VideoSource>(Status*)>;
+
+// DetectArmJoints (pose.h) on the input `open` gives.
+Status DetectArmJointsFrom(const SourceOpener& open, int frame, PoseSide side,
+                           const std::string& model_dir, const PoseOptions& options, PoseArm* arm,
+                           PoseSide* chosen);
+
 // The arm better seen over frames [start, start + one second): the scores summed over a few
 // frames. *why says what was decided, for the shells to show.
-Status ChoosePoseSide(const std::vector<std::string>& inputs, int start, double fps,
-                      const std::string& model_dir, PoseSide* side, std::string* why);
+Status ChoosePoseSide(const SourceOpener& open, int start, double fps, const std::string& model_dir,
+                      PoseSide* side, std::string* why);
 
 }  // namespace armmimic::internal

@@ -106,6 +106,24 @@ QString AnalysisJob::exportResult(const QString& path) const {
   return st ? QString() : QString::fromStdString(st.message());
 }
 
+void AnalysisJob::adoptResult(const QString& path) {
+  if (running_) return;
+  result_path_ = path;
+  summary_ = AnalysisSummary();
+}
+
+QString AnalysisJob::adoptResultText(const QString& text) {
+  if (running_) return tr("An analysis is running");
+  if (!session_.isValid()) {
+    return tr("cannot create a temporary folder for the results: %1").arg(session_.errorString());
+  }
+  const QString path = QDir(session_.path()).filePath(QString("angles-%1.tsv").arg(++run_));
+  const Status st = WriteFileAtomically(path.toStdString(), text.toStdString());
+  if (!st) return QString::fromStdString(st.message());
+  adoptResult(path);
+  return QString();
+}
+
 QString AnalysisJob::describeResult(bool cancelled) const {
   return tr("Analysis %1: %2 rows, %3 ok, %4 lost in %5 s")
       .arg(cancelled ? tr("cancelled") : tr("done"))

@@ -56,6 +56,11 @@ class AnalysisJob : public QObject {
   QString exportResult(const QString& path) const;
   // "Analysis done: 40 rows, 38 ok, 2 lost in 0.25 s"
   QString describeResult(bool cancelled) const;
+  // Takes an angle file made elsewhere (File > Open angle file) as the result: export copies it.
+  void adoptResult(const QString& path);
+  // Takes angle file text (a session's results) as the result, kept in the session folder.
+  // Returns "" or what went wrong.
+  QString adoptResultText(const QString& text);
   // Forgets the last result (another input was opened): nothing to export until the next run.
   void forgetResult() {
     if (!running_) result_path_.clear();

@@ -1,52 +1,92 @@
 #include "angle_plot.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <QChart>
 #include <QFontMetricsF>
+#include <QGraphicsItem>
 #include <QGraphicsLayout>
 #include <QLegend>
 #include <QLegendMarker>
 #include <QLineSeries>
-#include <QMouseEvent>
+#include <QPainter>
 #include <QScatterSeries>
 #include <QValueAxis>
 
 namespace armmimic::gui {
 
+// One layer of the plot: a path painted in the plot area. Unlike QGraphicsPathItem it never
+// works out the outline of its stroke (shape()), which for a curve of thousands of points cost
+// the view far more than painting it.
+class PlotLayer : public QGraphicsItem {
+ public:
+  explicit PlotLayer(QGraphicsItem* parent) : QGraphicsItem(parent) {}
+  void setPath(const QPainterPath& path) {
+    prepareGeometryChange();
+    path_ = path;
+    bounds_ = path.controlPointRect().adjusted(-3, -3, 3, 3);
+  }
+  void setPen(const QPen& pen) {
+    pen_ = pen;
+    update();
+  }
+  void setBrush(const QBrush& brush) {
+    brush_ = brush;
+    update();
+  }
+  QRectF boundingRect() const override { return bounds_; }
+  QPainterPath shape() const override {
+    QPainterPath p;
+    p.addRect(bounds_);
+    return p;
+  }
+  void paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) override {
+    painter->setPen(pen_);
+    painter->setBrush(brush_);
+    painter->drawPath(path_);
+  }
+
+ private:
+  QPainterPath path_;
+  QRectF bounds_;
+  QPen pen_ = Qt::NoPen;
+  QBrush brush_ = Qt::NoBrush;
+};
+
+namespace {
+
+const QColor kCurveColors[4] = {QColor(0xe0, 0xa0, 0x00), QColor(0x00, 0x9c, 0xd8),
+                                QColor(0x8e, 0x5c, 0xc4), QColor(0x2f, 0xa8, 0x3c)};
+const QColor kLost(0xd0, 0x3b, 0x2f);
+
+// The smallest of 1, 2, 5 x 10^k (k >= `min_decade`) with about six labels over `span`.
+double NiceStep(double span, int min_decade) {
+  for (int decade = min_decade;; ++decade) {
+    for (double m : {1.0, 2.0, 5.0}) {
+      const double step = m * std::pow(10.0, decade);
+      if (step * 6 >= span) return step;
+    }
+  }
+}
+
+}  // namespace
+
 AnglePlot::AnglePlot(QWidget* parent)
-    : QChartView(parent),
-      upper_(new QLineSeries),
-      fore_(new QLineSeries),
-      yaw_(new QLineSeries),
-      bend_(new QLineSeries),
-      lost_(new QScatterSeries),
-      cursor_(new QLineSeries),
-      x_(new QValueAxis),
-      y_(new QValueAxis) {
+    : QChartView(parent), lost_(new QScatterSeries), x_(new QValueAxis), y_(new QValueAxis) {
   setObjectName("anglePlot");
   auto* chart = new QChart;
-  upper_->setName(tr("upper arm"));
-  fore_->setName(tr("forearm"));
-  yaw_->setName(tr("yaw"));
-  bend_->setName(tr("bend"));
-  bend_->setVisible(false);  // shown for marker views
-  lost_->setName(tr("lost"));
-  lost_->setMarkerSize(6);
-  lost_->setColor(QColor(0xd0, 0x3b, 0x2f));
-  lost_->setBorderColor(QColor(0xd0, 0x3b, 0x2f));
-  upper_->setPen(QPen(QColor(0xe0, 0xa0, 0x00), 1.5));
-  fore_->setPen(QPen(QColor(0x00, 0x9c, 0xd8), 1.5));
-  yaw_->setPen(QPen(QColor(0x8e, 0x5c, 0xc4), 1.5));
-  cursor_->setPen(QPen(QColor(0x80, 0x80, 0x80), 1.0, Qt::DashLine));
-  for (QAbstractSeries* s :
-       {static_cast<QAbstractSeries*>(upper_), static_cast<QAbstractSeries*>(fore_),
-        static_cast<QAbstractSeries*>(yaw_), static_cast<QAbstractSeries*>(bend_),
-        static_cast<QAbstractSeries*>(lost_), static_cast<QAbstractSeries*>(cursor_)}) {
-    chart->addSeries(s);
+  const QString names[4] = {tr("upper arm"), tr("forearm"), tr("yaw"), tr("bend")};
+  for (int c = 0; c < 4; ++c) {
+    legend_[c] = new QLineSeries;
+    legend_[c]->setName(names[c]);
+    chart->addSeries(legend_[c]);
   }
+  legend_[int(PlotCurve::kBend)]->setVisible(false);  // shown for marker views
+  lost_->setName(tr("lost"));
+  chart->addSeries(lost_);
   x_->setTitleText(tr("frame"));
-  x_->setLabelFormat("%d");
+  x_->setLabelFormat("%.0f");
   x_->setTickType(QValueAxis::TicksDynamic);
   x_->setTickAnchor(0);
   x_->setRange(0, 1);
@@ -62,16 +102,26 @@ AnglePlot::AnglePlot(QWidget* parent)
     s->attachAxis(y_);
   }
   chart->legend()->setAlignment(Qt::AlignTop);
-  chart->legend()->markers(cursor_).first()->setVisible(false);
   chart->setMargins(QMargins(4, 4, 4, 4));
   chart->layout()->setContentsMargins(0, 0, 0, 0);
   chart->setBackgroundRoundness(0);
   setChart(chart);
+  // The layers the series would draw, drawn here so that gaps stay gaps.
+  clip_ = new QGraphicsRectItem(chart);
+  clip_->setPen(Qt::NoPen);
+  clip_->setFlag(QGraphicsItem::ItemClipsChildrenToShape);
+  clip_->setZValue(5);  // above the grid, below the legend
+  lost_bands_ = new PlotLayer(clip_);
+  lost_ticks_ = new PlotLayer(clip_);
+  for (PlotLayer*& item : curve_items_) item = new PlotLayer(clip_);
+  cursor_ = new QGraphicsLineItem(clip_);
   connect(chart, &QChart::plotAreaChanged, this, &AnglePlot::fitDegreeTicks);
+  connect(chart, &QChart::plotAreaChanged, this, &AnglePlot::redrawLayers);
   setRenderHint(QPainter::Antialiasing);
+  setMouseTracking(true);
+  setContextMenuPolicy(Qt::PreventContextMenu);  // right button: zoom band or the menu on release
   setMinimumHeight(200);
   applyTheme();
-  setCursorFrame(0);
 }
 
 void AnglePlot::applyTheme() {
@@ -80,13 +130,15 @@ void AnglePlot::applyTheme() {
   chart()->setTheme(dark ? QChart::ChartThemeDark : QChart::ChartThemeLight);
   chart()->setBackgroundBrush(pal.color(QPalette::Base));
   // setTheme resets series colours; put ours back.
-  upper_->setPen(QPen(QColor(0xe0, 0xa0, 0x00), 1.5));
-  fore_->setPen(QPen(QColor(0x00, 0x9c, 0xd8), 1.5));
-  yaw_->setPen(QPen(QColor(0x8e, 0x5c, 0xc4), 1.5));
-  bend_->setPen(QPen(QColor(0x2f, 0xa8, 0x3c), 1.5));
-  lost_->setColor(QColor(0xd0, 0x3b, 0x2f));
-  lost_->setBorderColor(QColor(0xd0, 0x3b, 0x2f));
+  for (int c = 0; c < 4; ++c) {
+    legend_[c]->setPen(QPen(kCurveColors[c], 1.5));
+    curve_items_[c]->setPen(QPen(kCurveColors[c], 1.5, Qt::SolidLine, Qt::RoundCap));
+  }
+  lost_->setColor(kLost);
+  lost_->setBorderColor(kLost);
   lost_->setMarkerSize(6);
+  lost_bands_->setBrush(QColor(kLost.red(), kLost.green(), kLost.blue(), dark ? 70 : 45));
+  lost_ticks_->setBrush(kLost);
   cursor_->setPen(QPen(pal.color(QPalette::WindowText), 1.0, Qt::DashLine));
   x_->setLabelsColor(pal.color(QPalette::WindowText));
   y_->setLabelsColor(pal.color(QPalette::WindowText));
@@ -95,18 +147,37 @@ void AnglePlot::applyTheme() {
   chart()->legend()->setLabelColor(pal.color(QPalette::WindowText));
 }
 
-void AnglePlot::setFrameRange(int frame_count) {
-  const int last = std::max(1, frame_count - 1);
-  x_->setRange(0, last);
-  // About six labels, each on a whole frame: 1, 2, 5, 10, 20, 50, ...
-  double step = 1;
-  for (double decade = 1; step * 6 < last; decade *= 10) {
-    for (double m : {1.0, 2.0, 5.0}) {
-      step = m * decade;
-      if (step * 6 >= last) break;
-    }
-  }
+void AnglePlot::setFrameRange(int frame_count, double fps) {
+  last_frame_ = std::max(1, frame_count - 1);
+  fps_ = std::isfinite(fps) && fps > 0 ? fps : 0;
+  if (fps_ <= 0) seconds_ = false;
+  zoom_.reset();
+  applyRanges();
+}
+
+double AnglePlot::xOf(double frame) const { return seconds_ ? frame / fps_ : frame; }
+double AnglePlot::frameOf(double x) const { return seconds_ ? x * fps_ : x; }
+
+void AnglePlot::applyRanges() {
+  const double first = zoom_ ? zoom_->left() : 0;
+  const double last = zoom_ ? zoom_->right() : last_frame_;
+  x_->setTitleText(seconds_ ? tr("time (s)") : tr("frame"));
+  const double span = xOf(last) - xOf(first);
+  const double step = seconds_ ? NiceStep(span, -3) : NiceStep(span, 0);
+  // Qt Charts makes an item per tick: the old interval over the new range (a long video opened
+  // after a short one, a zoom out) would ask for thousands for a moment. One wide enough for
+  // both ranges first.
+  x_->setTickInterval(std::max({x_->tickInterval(), x_->max() - x_->min(), span}));
+  x_->setRange(xOf(first), xOf(last));
   x_->setTickInterval(step);
+  x_->setLabelFormat(
+      QString("%.%1f").arg(seconds_ ? std::max(0, int(-std::floor(std::log10(step)))) : 0));
+  if (y_->tickType() == QValueAxis::TicksDynamic) {  // as above
+    y_->setTickInterval(std::max({y_->tickInterval(), y_->max() - y_->min(), 360.0}));
+  }
+  y_->setRange(zoom_ ? zoom_->top() : -180, zoom_ ? zoom_->bottom() : 180);
+  fitDegreeTicks(chart()->plotArea());
+  redrawLayers();
 }
 
 double AnglePlot::frameTickStep() const { return x_->tickInterval(); }
@@ -124,69 +195,207 @@ void AnglePlot::fitDegreeTicks(const QRectF& plot_area) {
       break;
     }
   }
-  if (ticks != y_->tickCount()) y_->setTickCount(ticks);
+  if (!zoom_) {
+    y_->setTickType(QValueAxis::TicksFixed);
+    y_->setLabelFormat("%.0f");
+    if (ticks != y_->tickCount()) y_->setTickCount(ticks);
+    return;
+  }
+  // Zoomed: labels on round degrees, no more of them than fit.
+  const double span = zoom_->height();
+  double step = 180;
+  for (double s : {0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 15.0, 30.0, 45.0, 90.0, 180.0}) {
+    if (span / s <= ticks - 1) {
+      step = s;
+      break;
+    }
+  }
+  y_->setTickInterval(step);
+  y_->setTickAnchor(0);
+  y_->setTickType(QValueAxis::TicksDynamic);
+  y_->setLabelFormat(step < 1 ? "%.1f" : "%.0f");
 }
 
 void AnglePlot::setResults(const ResultStore& results) {
-  QList<QPointF> upper, fore, yaw, bend, lost;
+  rows_.clear();
+  rows_.reserve(results.all().size());
+  file_column_ = false;
+  has_yaw_ = false;
   for (const auto& [frame, m] : results.all()) {
-    if (m.phase == MeasurementPhase::kLost) {
-      lost.append(QPointF(frame, -175));
-      continue;
-    }
-    if (m.phase != MeasurementPhase::kOk) continue;
-    if (std::isfinite(m.upper_deg)) upper.append(QPointF(frame, m.upper_deg));
-    if (std::isfinite(m.fore_deg)) fore.append(QPointF(frame, m.fore_deg));
-    if (std::isfinite(m.yaw_deg)) yaw.append(QPointF(frame, m.yaw_deg));
+    if (!m.row()) continue;
+    rows_.push_back(m.ToRow());
     // The marker engine (it names each view's image) measures the joint's bend, not segments.
-    if (!m.file.empty() && std::isfinite(m.bend_deg)) bend.append(QPointF(frame, m.bend_deg));
+    file_column_ = file_column_ || !m.file.empty();
+    has_yaw_ = has_yaw_ || (m.phase == MeasurementPhase::kOk && std::isfinite(m.yaw_deg));
   }
-  upper_->replace(upper);
-  fore_->replace(fore);
-  yaw_->replace(yaw);
-  bend_->replace(bend);
-  const bool marker = !bend.isEmpty();
-  upper_->setVisible(!marker);
-  fore_->setVisible(!marker);
-  bend_->setVisible(marker);
+  legend_[int(PlotCurve::kUpper)]->setVisible(!file_column_);
+  legend_[int(PlotCurve::kFore)]->setVisible(!file_column_);
+  legend_[int(PlotCurve::kBend)]->setVisible(file_column_);
   // An engine that measures no yaw (LK) gets no yaw entry in the legend; no results yet, all.
-  yaw_->setVisible(!yaw.isEmpty() || results.size() == 0);
-  lost_->replace(lost);
+  legend_[int(PlotCurve::kYaw)]->setVisible(has_yaw_ || rows_.empty());
+  redrawLayers();
+}
+
+bool AnglePlot::curveShown(PlotCurve c) const { return legend_[int(c)]->isVisible(); }
+
+double AnglePlot::valueOf(const AngleRow& row, PlotCurve c) const {
+  if (!row.ok() || !curveShown(c)) return std::nan("");
+  switch (c) {
+    case PlotCurve::kUpper:
+      return row.upper_deg;
+    case PlotCurve::kFore:
+      return row.fore_deg;
+    case PlotCurve::kYaw:
+      return row.yaw_deg;
+    case PlotCurve::kBend:
+      return row.bend_deg;
+  }
+  return std::nan("");
+}
+
+std::vector<std::pair<int, int>> AnglePlot::runs(PlotCurve c) const {
+  std::vector<std::pair<int, int>> out;
+  for (const AngleRow& row : rows_) {
+    if (!std::isfinite(valueOf(row, c))) continue;
+    if (!out.empty() && out.back().second == row.frame - 1) {
+      out.back().second = row.frame;
+    } else {
+      out.emplace_back(row.frame, row.frame);
+    }
+  }
+  return out;
+}
+
+QPointF AnglePlot::toChart(double frame, double deg) const {
+  const QRectF area = chart()->plotArea();
+  const double x0 = x_->min(), x1 = x_->max(), y0 = y_->min(), y1 = y_->max();
+  return QPointF(area.left() + (xOf(frame) - x0) / (x1 - x0) * area.width(),
+                 area.bottom() - (deg - y0) / (y1 - y0) * area.height());
+}
+
+namespace {
+
+// Adds one run of consecutive frames (screen points, left to right) to `path`. A lone frame is
+// a dot. Where a run has more points than pixel columns, each column keeps its first, lowest,
+// highest and last point (the M4 reduction): the line drawn is the same, the path far shorter.
+void AddRun(const QPolygonF& run, QPainterPath* path) {
+  if (run.size() == 1) {
+    path->addEllipse(run.front(), 2.0, 2.0);
+    return;
+  }
+  if (run.size() <= 4 * (run.back().x() - run.front().x() + 1)) {
+    path->addPolygon(run);
+    return;
+  }
+  QPolygonF reduced;
+  for (int i = 0; i < run.size();) {
+    const double column = std::floor(run[i].x());
+    int j = i, low = i, high = i;
+    for (; j < run.size() && std::floor(run[j].x()) == column; ++j) {
+      if (run[j].y() < run[low].y()) low = j;
+      if (run[j].y() > run[high].y()) high = j;
+    }
+    reduced << run[i] << run[std::min(low, high)] << run[std::max(low, high)] << run[j - 1];
+    i = j;
+  }
+  path->addPolygon(reduced);
+}
+
+}  // namespace
+
+void AnglePlot::redrawLayers() {
+  const QRectF area = chart()->plotArea();
+  clip_->setRect(area);
+  // Only the frames in view (and one beyond each side, so lines run to the edge).
+  const double first = std::floor(frameOf(x_->min())) - 1;
+  const double last = std::ceil(frameOf(x_->max())) + 1;
+  // More frames than pixels: one-pixel lines, which Qt's raster engine draws on a far faster
+  // path than wider ones (bench/gui/plot_bench.cpp), and which look as thick there.
+  const double width = (last - first) > area.width() ? 1.0 : 1.5;
+  for (int c = 0; c < 4; ++c) {
+    curve_items_[c]->setPen(QPen(kCurveColors[c], width, Qt::SolidLine, Qt::RoundCap));
+    QPainterPath path;
+    QPolygonF run;  // consecutive measured frames
+    int previous = -2;
+    for (const AngleRow& row : rows_) {
+      if (row.frame < first || row.frame > last) continue;
+      const double v = valueOf(row, PlotCurve(c));
+      if (!std::isfinite(v) || row.frame != previous + 1) {  // a gap ends the line
+        if (!run.isEmpty()) AddRun(run, &path);
+        run.clear();
+      }
+      if (!std::isfinite(v)) continue;
+      run << toChart(row.frame, v);
+      previous = row.frame;
+    }
+    if (!run.isEmpty()) AddRun(run, &path);
+    curve_items_[c]->setPath(path);
+  }
+  // Each run of lost frames is a red band, with a mark on the bottom edge.
+  QPainterPath bands, ticks;
+  for (std::size_t i = 0; i < rows_.size(); ++i) {
+    if (rows_[i].ok() || rows_[i].frame < first || rows_[i].frame > last) continue;
+    std::size_t j = i;
+    while (j + 1 < rows_.size() && !rows_[j + 1].ok() && rows_[j + 1].frame == rows_[j].frame + 1) {
+      ++j;
+    }
+    const double left = toChart(rows_[i].frame - 0.5, 0).x();
+    const double right = toChart(rows_[j].frame + 0.5, 0).x();
+    const double w = std::max(1.0, right - left);
+    bands.addRect(QRectF(left, area.top(), w, area.height()));
+    ticks.addRect(QRectF(left + w / 2 - std::max(2.0, w / 2 - 1), area.bottom() - 8,
+                         std::max(4.0, w - 2), 8));
+    i = j;
+  }
+  lost_bands_->setPath(bands);
+  lost_ticks_->setPath(ticks);
+  const double cx = toChart(cursor_frame_, 0).x();
+  cursor_->setLine(cx, area.top(), cx, area.bottom());
 }
 
 void AnglePlot::setCursorFrame(int frame) {
   cursor_frame_ = frame;
-  cursor_->replace(QList<QPointF>{QPointF(frame, -180), QPointF(frame, 180)});
+  const QRectF area = chart()->plotArea();
+  const double cx = toChart(frame, 0).x();
+  cursor_->setLine(cx, area.top(), cx, area.bottom());
 }
 
-int AnglePlot::pointCount() const { return static_cast<int>(upper_->count()); }
-int AnglePlot::lostCount() const { return static_cast<int>(lost_->count()); }
-int AnglePlot::bendCount() const { return static_cast<int>(bend_->count()); }
-bool AnglePlot::yawShown() const { return yaw_->isVisible(); }
+int AnglePlot::pointCount() const {
+  int n = 0;
+  for (const auto& [first, last] : runs(PlotCurve::kUpper)) n += last - first + 1;
+  return n;
+}
+
+int AnglePlot::lostCount() const {
+  return int(std::count_if(rows_.begin(), rows_.end(), [](const AngleRow& r) { return !r.ok(); }));
+}
+
+int AnglePlot::bendCount() const {
+  int n = 0;
+  for (const auto& [first, last] : runs(PlotCurve::kBend)) n += last - first + 1;
+  return n;
+}
+
+bool AnglePlot::yawShown() const { return curveShown(PlotCurve::kYaw); }
+
+QPointF AnglePlot::valueAt(const QPointF& widget_pos) const {
+  const QPointF chart_pos = chart()->mapFromScene(mapToScene(widget_pos.toPoint()));
+  const QRectF area = chart()->plotArea();
+  const double x =
+      x_->min() + (chart_pos.x() - area.left()) / area.width() * (x_->max() - x_->min());
+  const double y =
+      y_->min() + (area.bottom() - chart_pos.y()) / area.height() * (y_->max() - y_->min());
+  return QPointF(frameOf(x), y);
+}
 
 int AnglePlot::frameAt(const QPointF& widget_pos) const {
-  const QPointF scene = mapToScene(widget_pos.toPoint());
-  const QPointF value = chart()->mapToValue(chart()->mapFromScene(scene), upper_);
-  return static_cast<int>(std::lround(std::clamp(value.x(), x_->min(), x_->max())));
-}
-
-void AnglePlot::mousePressEvent(QMouseEvent* event) {
-  if (event->button() == Qt::LeftButton && chart()->plotArea().contains(event->position())) {
-    emit frameClicked(frameAt(event->position()));
-  }
-  QChartView::mousePressEvent(event);
+  const double frame = valueAt(widget_pos).x();
+  return static_cast<int>(std::lround(std::clamp(frame, frameOf(x_->min()), frameOf(x_->max()))));
 }
 
 void AnglePlot::changeEvent(QEvent* event) {
   QChartView::changeEvent(event);
   if (event->type() == QEvent::PaletteChange) applyTheme();
-}
-
-void AnglePlot::mouseMoveEvent(QMouseEvent* event) {
-  if ((event->buttons() & Qt::LeftButton) && chart()->plotArea().contains(event->position())) {
-    emit frameClicked(frameAt(event->position()));
-  }
-  QChartView::mouseMoveEvent(event);
 }
 
 }  // namespace armmimic::gui

@@ -40,12 +40,20 @@ AppActions::AppActions(QObject* parent) : QObject(parent) {
   camera = make(tr("Capture from &camera…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O),
                 "actionCamera");
   camera->setIcon(MakeIcon(IconKind::kCamera));
+  openAngles = make(tr("Open &angle file…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A),
+                    "actionOpenAngles");
+  openSession = make(tr("Open se&ssion…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L),
+                     "actionOpenSession");
+  saveSession = make(tr("Save session…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S),
+                     "actionSaveSession");
   saveFrame =
       make(tr("&Save frame with overlay…"), QKeySequence(Qt::CTRL | Qt::Key_S), "actionSaveFrame");
   saveFrame->setIcon(MakeIcon(IconKind::kSaveImage));
   exportAngles =
       make(tr("&Export angle file…"), QKeySequence(Qt::CTRL | Qt::Key_E), "actionExportAngles");
   exportAngles->setIcon(MakeIcon(IconKind::kExport));
+  exportCsv =
+      make(tr("Export &CSV…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C), "actionExportCsv");
   exportVal = make(tr("Export &VAL program…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E),
                    "actionExportVal");
   quit = make(tr("&Quit"), QKeySequence::Quit, "actionQuit");
@@ -93,9 +101,11 @@ AppActions::AppActions(QObject* parent) : QObject(parent) {
 
   analyze = make(tr("&Run analysis"), QKeySequence(Qt::Key_F5), "actionAnalyze");
   analyze->setIcon(MakeIcon(IconKind::kAnalyze));
-  cancel = make(tr("&Cancel analysis"), QKeySequence(Qt::Key_Escape), "actionCancel");
+  cancel = make(tr("&Stop analysis and sending"), QKeySequence(Qt::Key_Escape), "actionCancel");
   cancel->setIcon(MakeIcon(IconKind::kStop));
   cancel->setEnabled(false);
+  // A floating Robot panel is a window of its own: Esc stops from there too.
+  cancel->setShortcutContext(Qt::ApplicationShortcut);
   estimateBackground = make(tr("Estimate &background…"), QKeySequence(Qt::CTRL | Qt::Key_B),
                             "actionEstimateBackground");
   estimateBackground->setIcon(MakeIcon(IconKind::kBackground));
@@ -123,11 +133,11 @@ AppActions::AppActions(QObject* parent) : QObject(parent) {
 void AppActions::populate(QMainWindow* w, const QList<QAction*>& dock_toggles) {
   QMenuBar* bar = w->menuBar();
   QMenu* file = bar->addMenu(tr("&File"));
-  file->addActions({open, openFolder, camera});
+  file->addActions({open, openFolder, camera, openAngles, openSession});
   recent_menu_ = file->addMenu(tr("Open &recent"));
   recent_menu_->setObjectName("recentMenu");
   file->addSeparator();
-  file->addActions({saveFrame, exportAngles, exportVal});
+  file->addActions({saveSession, saveFrame, exportAngles, exportCsv, exportVal});
   file->addSeparator();
   file->addAction(quit);
 

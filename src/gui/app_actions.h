@@ -34,8 +34,12 @@ class AppActions : public QObject {
   QAction* open;
   QAction* openFolder;
   QAction* camera;
+  QAction* openAngles;
+  QAction* openSession;
+  QAction* saveSession;
   QAction* saveFrame;
   QAction* exportAngles;
+  QAction* exportCsv;
   QAction* exportVal;
   QAction* quit;
   // Playback.
@@ -60,6 +64,7 @@ class AppActions : public QObject {
   QAction* clearShoulder;
   // Analysis.
   QAction* analyze;
+  // Esc, wherever the focus is: cancels the analysis and aborts a send to the robot.
   QAction* cancel;
   QAction* estimateBackground;
   // Overlay toggles.

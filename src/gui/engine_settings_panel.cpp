@@ -215,6 +215,10 @@ QToolButton* EngineSettingsPanel::advancedToggle(EngineKind engine) const {
   return forms_[int(engine)]->advancedToggle();
 }
 
+QToolButton* EngineSettingsPanel::resetButton(EngineKind engine) const {
+  return forms_[int(engine)]->resetButton();
+}
+
 void EngineSettingsPanel::updateEnabled() {
   const auto kind = static_cast<EngineKind>(engine_->currentData().toInt());
   const bool marker = kind == EngineKind::kMarker;

@@ -51,6 +51,8 @@ class EngineSettingsPanel : public QWidget {
   QWidget* parameterEditor(EngineKind engine, const QString& key) const;
   // The button that shows or hides an engine's "Advanced" section.
   QToolButton* advancedToggle(EngineKind engine) const;
+  // The button that puts every parameter of an engine back to its default.
+  QToolButton* resetButton(EngineKind engine) const;
 
  signals:
   void changed();

@@ -3,28 +3,32 @@
 #include <cmath>
 
 #include <QApplication>
-#include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QMenu>
-#include <QMimeData>
 #include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
-#include <QVBoxLayout>
 
 #include "analysis_job.h"
+#include "angle_panel.h"
 #include "angle_plot.h"
 #include "app_actions.h"
 #include "engine_settings_panel.h"
 #include "icons.h"
 #include "log_view.h"
+#include "mimic_controller.h"
+#include "mimic_panel.h"
 #include "playback_bar.h"
 #include "prompts.h"
 #include "recent_files.h"
+#include "robot_link.h"
 #include "robot_panel.h"
+#include "session_inputs.h"
+#include "shortcut_guard.h"
 #include "status_line.h"
+#include "ui_main_window.h"
 #include "video_player.h"
 #include "video_view.h"
 
@@ -32,75 +36,60 @@ namespace armmimic::gui {
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
+      ui_(std::make_unique<Ui::MainWindowForm>()),
       actions_(new AppActions(this)),
       player_(new VideoPlayer(this)),
-      view_(new VideoView),
-      bar_(new PlaybackBar),
-      settings_(new EngineSettingsPanel),
-      plot_(new AnglePlot),
-      log_(new LogView),
-      robot_(new RobotPanel),
-      job_(new AnalysisJob(this)),
-      status_(new StatusLine(statusBar())) {
-  setObjectName("mainWindow");
-  setWindowTitle("armmimic");
+      job_(new AnalysisJob(this)) {
+  ui_->setupUi(this);  // the central view and the docks: ui/main_window.ui
+  view_ = ui_->videoView;
+  bar_ = ui_->playbackBar;
+  settings_ = ui_->engineSettings;
+  angles_ = ui_->anglePanel;
+  plot_ = angles_->plot();
+  log_ = ui_->logView;
+  robot_ = ui_->robotPanel;
+  mimic_ = ui_->mimicPanel;  // the live view scrolls, never making the dock column taller
+  status_ = new StatusLine(statusBar());
+  log_dock_ = ui_->logDock;
   setWindowIcon(MakeIcon(IconKind::kApp));
-  setAcceptDrops(true);
-  auto* central = new QWidget;
-  auto* layout = new QVBoxLayout(central);
-  layout->setContentsMargins(0, 0, 0, 0);
-  layout->setSpacing(0);
-  layout->addWidget(view_, 1);
-  layout->addWidget(bar_);
-  setCentralWidget(central);
+  // A tall panel scrolls instead of pushing the window taller.
+  ui_->analysisScroll->setMinimumWidth(settings_->sizeHint().width() + 24);
   bar_->addActions(
       {actions_->first, actions_->stepBack, actions_->play, actions_->stepForward, actions_->last});
 
-  QList<QAction*> toggles;
-  toggles << dock(tr("Analysis"), "analysisDock", settings_, Qt::LeftDockWidgetArea)
-                 ->toggleViewAction();
-  toggles << dock(tr("Angles"), "plotDock", plot_, Qt::BottomDockWidgetArea)->toggleViewAction();
-  toggles << dock(tr("Robot"), "robotDock", robot_, Qt::LeftDockWidgetArea)->toggleViewAction();
-  log_dock_ = dock(tr("Messages"), "logDock", log_, Qt::BottomDockWidgetArea);
-  toggles << log_dock_->toggleViewAction();
-  tabifyDockWidget(findChild<QDockWidget*>("plotDock"), log_dock_);
-  tabifyDockWidget(findChild<QDockWidget*>("analysisDock"), findChild<QDockWidget*>("robotDock"));
-  findChild<QDockWidget*>("analysisDock")->raise();
-  resizeDocks({findChild<QDockWidget*>("plotDock")}, {260}, Qt::Vertical);
-  findChild<QDockWidget*>("plotDock")->raise();
+  const QList<QAction*> toggles = {
+      ui_->analysisDock->toggleViewAction(), ui_->plotDock->toggleViewAction(),
+      ui_->robotDock->toggleViewAction(), ui_->mimicDock->toggleViewAction(),
+      ui_->logDock->toggleViewAction()};
+  tabifyDockWidget(ui_->plotDock, ui_->logDock);
+  tabifyDockWidget(ui_->analysisDock, ui_->robotDock);
+  tabifyDockWidget(ui_->robotDock, ui_->mimicDock);
+  ui_->analysisDock->raise();
+  resizeDocks({ui_->plotDock}, {260}, Qt::Vertical);
+  ui_->plotDock->raise();
   actions_->populate(this, toggles);
   recent_ = new RecentFiles(actions_->recentMenu(), this);
   connect(recent_, &RecentFiles::openRequested, this,
           [this](const QString& p) { openInputs({p}); });
+  GuardShortcuts(this);
 
   throttle_.setSingleShot(true);
   throttle_.setInterval(40);
   connect(&throttle_, &QTimer::timeout, this, &MainWindow::refreshViews);
   wireActions();
+  wireFileActions();
   wireAnalysis();
+  wireMimic();
+  robot_->setInputFiles([this] { return sessionInputs(); });
   restoreSettings();
   updateStatus();
 }
 
-MainWindow::~MainWindow() { job_->cancel(); }
-
-QDockWidget* MainWindow::dock(const QString& title, const QString& name, QWidget* w,
-                              Qt::DockWidgetArea area) {
-  auto* d = new QDockWidget(title, this);
-  d->setObjectName(name);
-  if (w == settings_) {  // a tall panel scrolls instead of pushing the window taller
-    auto* scroll = new QScrollArea;
-    scroll->setObjectName("analysisScroll");
-    scroll->setWidget(w);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setMinimumWidth(w->sizeHint().width() + 24);
-    w = scroll;
-  }
-  d->setWidget(w);
-  addDockWidget(area, d);
-  return d;
+MainWindow::~MainWindow() {
+  job_->cancel();
+  // The Robot panel is deleted with its dock, after this window's members and the objects it
+  // talks to: a send it aborts on the way out must report to nobody.
+  robot_->disconnect();
 }
 
 void MainWindow::wireActions() {
@@ -117,17 +106,17 @@ void MainWindow::wireActions() {
   connect(a->saveFrame, &QAction::triggered, this, [this] {
     const QString path =
         AskSavePath(this, tr("Save frame with overlay"),
-                    RecentFiles::lastDir() + QString("/frame-%1.png").arg(view_->frameIndex()),
+                    suggestedPath(QString("frame-%1.png").arg(view_->frameIndex())),
                     tr("Images (*.png *.jpg)"));
     if (!path.isEmpty()) saveFrame(path);
   });
   connect(a->exportAngles, &QAction::triggered, this, [this] {
-    const QString path =
-        AskSavePath(this, tr("Export angle file"), RecentFiles::lastDir() + "/angles.tsv",
-                    tr("Angle files (*.tsv);;All files (*)"));
+    const QString path = AskSavePath(this, tr("Export angle file"), suggestedPath("tsv"),
+                                     tr("Angle files (*.tsv);;All files (*)"));
     if (!path.isEmpty()) exportAngles(path);
   });
-  connect(a->exportVal, &QAction::triggered, robot_, &RobotPanel::exportValInteractive);
+  connect(a->exportVal, &QAction::triggered, this,
+          [this] { robot_->exportValInteractive(suggestedPath("val")); });
   connect(a->quit, &QAction::triggered, this, &QWidget::close);
   connect(a->play, &QAction::triggered, player_, &VideoPlayer::togglePlay);
   connect(a->stepBack, &QAction::triggered, player_, [this] { player_->step(-1); });
@@ -173,15 +162,19 @@ void MainWindow::wireActions() {
     actions_->play->setIcon(MakeIcon(playing ? IconKind::kPause : IconKind::kPlay));
   });
   connect(player_, &VideoPlayer::opened, this, [this](const VideoInfo& info) {
-    results_.clear();
-    job_->forgetResult();
-    plot_->setResults(results_);
-    view_->setMeasurement(std::nullopt);
-    robot_->setAngleFile(QString());
+    bar_->setFrameCount(info.frame_count, info.fps);
+    plot_->setFrameRange(info.frame_count, info.fps);
+    angles_->updateTimeAxisButton();
+    if (!takePendingResults()) {
+      results_.clear();
+      job_->forgetResult();
+      plot_->setResults(results_);
+      view_->setMeasurement(std::nullopt);
+      robot_->setAngleFile(QString());
+      unsaved_ = false;
+    }
     recent_->addInput(player_->inputs().first());
     setWindowTitle(QString("%1 — armmimic").arg(QFileInfo(player_->inputs().first()).fileName()));
-    bar_->setFrameCount(info.frame_count, info.fps);
-    plot_->setFrameRange(info.frame_count);
     log_->info(tr("Opened %1").arg(DescribeSource(info)));
     statusBar()->clearMessage();  // an earlier error is not about this input
     updateStatus();
@@ -242,18 +235,39 @@ void MainWindow::wireAnalysis() {
     setBusy(false);
     refreshViews();
     if (ok && !job_->resultPath().isEmpty()) {
+      unsaved_ = results_.rows() > 0;
       log_->info(job_->describeResult(cancelled));
       robot_->setAngleFile(job_->resultPath());
-      findChild<QDockWidget*>("plotDock")->raise();  // the angles just measured, not old errors
+      ui_->plotDock->raise();  // the angles just measured, not old errors
     }
   });
+}
+
+void MainWindow::wireMimic() {
+  mimic_->setSources(
+      [this] {
+        AnalysisOptions options = settings_->options();
+        options.inputs.clear();
+        for (const QString& s : player_->inputs()) options.inputs.push_back(s.toStdString());
+        if (player_->isLive()) player_->close();  // the live run reads the camera itself
+        return options;
+      },
+      [this] { return robot_->plannerOptions(); }, robot_->link());
+  // The live frames fill the big view too while the robot follows.
+  connect(mimic_->controller(), &MimicController::frameReady, this,
+          [this](const QImage& image, int index, const ArmMeasurement& m) {
+            view_->setFrame(image, index, -1);
+            view_->setMeasurement(m);
+          });
+  connect(mimic_, &MimicPanel::message, log_, &LogView::info);
+  connect(mimic_, &MimicPanel::errorOccurred, log_, &LogView::error);
 }
 
 void MainWindow::setBusy(bool busy) {
   status_->setBusy(busy);
   actions_->analyze->setEnabled(!busy);
   actions_->estimateBackground->setEnabled(!busy);
-  actions_->cancel->setEnabled(busy);
+  actions_->cancel->setEnabled(busy || robot_->link()->isSending());
   settings_->setEnabled(!busy);
 }
 
@@ -277,10 +291,22 @@ bool MainWindow::startAnalysis() {
   live_ = player_->isLive();
   if (live_) player_->close();  // the analysis reads the camera itself
   results_.clear();
+  pending_.reset();
   return job_->start(options, live_);
 }
 
+std::vector<NamedPath> MainWindow::sessionInputs() const {
+  return SessionInputs(player_->isOpen() ? player_->inputs() : QStringList(), settings_->options());
+}
+
+bool MainWindow::refuseInput(const QString& what, const QString& path) {
+  const QString refusal = SameFileRefusal(sessionInputs(), what, path);
+  if (!refusal.isEmpty()) log_->error(refusal);
+  return !refusal.isEmpty();
+}
+
 bool MainWindow::exportAngles(const QString& path) {
+  if (refuseInput(tr("the angle file"), path)) return false;
   const QString error = job_->exportResult(path);
   if (!error.isEmpty()) {
     log_->error(error);
@@ -288,10 +314,12 @@ bool MainWindow::exportAngles(const QString& path) {
   }
   RecentFiles::rememberDir(path);
   log_->info(tr("Exported the angle file to %1").arg(path));
+  unsaved_ = false;
   return true;
 }
 
 bool MainWindow::saveFrame(const QString& path) {
+  if (refuseInput(tr("the frame image"), path)) return false;
   const QString error = view_->saveWithOverlay(path);
   if (!error.isEmpty()) {
     log_->error(error);
@@ -305,6 +333,13 @@ bool MainWindow::saveFrame(const QString& path) {
 bool MainWindow::estimateBackground(int frames, const QString& path) {
   if (!player_->isOpen() || player_->isLive()) {
     log_->error(tr("Open a video first: the background is the mean of its first frames"));
+    return false;
+  }
+  // The estimate reads only the video; it may replace the background image chosen before.
+  const QString refusal =
+      SameFileRefusal(SessionInputs(player_->inputs(), {}), tr("the background image"), path);
+  if (!refusal.isEmpty()) {
+    log_->error(refusal);
     return false;
   }
   return job_->startBackground(player_->inputs(), 0, frames, path);
@@ -355,28 +390,6 @@ void MainWindow::saveSettings() const {
   actions_->saveSettings(s);
   bar_->saveSettings(s);
   robot_->save(s);
-}
-
-void MainWindow::closeEvent(QCloseEvent* event) {
-  job_->cancel();
-  job_->waitForFinished(5000);
-  saveSettings();
-  event->accept();
-}
-
-void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
-  if (event->mimeData()->hasUrls()) event->acceptProposedAction();
-}
-
-void MainWindow::dropEvent(QDropEvent* event) {
-  QStringList files;
-  for (const QUrl& url : event->mimeData()->urls()) {
-    if (url.isLocalFile()) files << url.toLocalFile();
-  }
-  if (!files.isEmpty()) {
-    openInputs(files);
-    event->acceptProposedAction();
-  }
 }
 
 }  // namespace armmimic::gui

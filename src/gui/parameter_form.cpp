@@ -4,6 +4,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QSettings>
 #include <QSpinBox>
@@ -37,7 +38,10 @@ class FocusWheel : public Base {
 
 ParameterForm::ParameterForm(EngineKind engine, std::vector<OptionField<EngineOptions>> rows,
                              QWidget* parent)
-    : QWidget(parent), engine_(EngineName(engine)), advanced_toggle_(new QToolButton) {
+    : QWidget(parent),
+      engine_(EngineName(engine)),
+      advanced_toggle_(new QToolButton),
+      reset_button_(new QToolButton) {
   auto* v = new QVBoxLayout(this);
   v->setContentsMargins(0, 0, 0, 0);
   auto* main_form = new QFormLayout;
@@ -119,9 +123,21 @@ ParameterForm::ParameterForm(EngineKind engine, std::vector<OptionField<EngineOp
     advanced_toggle_->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
     advanced->setVisible(on);
   });
+  reset_button_->setObjectName(engine_ + "ResetDefaults");
+  reset_button_->setText(tr("Reset to defaults"));
+  reset_button_->setToolTip(tr("Every parameter of this engine back to its documented default"));
+  connect(reset_button_, &QToolButton::clicked, this, &ParameterForm::resetToDefaults);
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(advanced_toggle_);
+  buttons->addStretch();
+  buttons->addWidget(reset_button_);
   v->addLayout(main_form);
-  v->addWidget(advanced_toggle_);
+  v->addLayout(buttons);
   v->addWidget(advanced);
+}
+
+void ParameterForm::resetToDefaults() {
+  for (const Bound& b : bound_) show(b, b.field.default_value);
 }
 
 double ParameterForm::shown(const Bound& b) const {

@@ -66,6 +66,11 @@ class ParameterForm : public QWidget {
 
   QWidget* editor(const QString& key) const;
   QToolButton* advancedToggle() const { return advanced_toggle_; }
+  QToolButton* resetButton() const { return reset_button_; }
+
+ public slots:
+  // Every parameter of the form back to its documented default.
+  void resetToDefaults();
 
  signals:
   void changed();
@@ -82,6 +87,7 @@ class ParameterForm : public QWidget {
   QString engine_;
   std::vector<Bound> bound_;
   QToolButton* advanced_toggle_;
+  QToolButton* reset_button_;
 };
 
 }  // namespace armmimic::gui

@@ -33,6 +33,11 @@ std::optional<QString> AskCamera(QWidget* parent) {
   return is_index ? "camera:" + src : src;
 }
 
+QString AskOpenPath(QWidget* parent, const QString& title, const QString& dir,
+                    const QString& filter) {
+  return QFileDialog::getOpenFileName(parent, title, dir, filter);
+}
+
 QString AskSavePath(QWidget* parent, const QString& title, const QString& suggested,
                     const QString& filter) {
   return QFileDialog::getSaveFileName(parent, title, suggested, filter);

@@ -16,6 +16,9 @@ QStringList AskInputs(QWidget* parent, const QString& dir);
 QString AskImageFolder(QWidget* parent, const QString& dir);
 // "camera:N" for an index, the URL as typed otherwise; nullopt when cancelled.
 std::optional<QString> AskCamera(QWidget* parent);
+// A file to read; "" when cancelled.
+QString AskOpenPath(QWidget* parent, const QString& title, const QString& dir,
+                    const QString& filter);
 // A file to write; "" when cancelled.
 QString AskSavePath(QWidget* parent, const QString& title, const QString& suggested,
                     const QString& filter);

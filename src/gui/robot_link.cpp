@@ -17,7 +17,10 @@ RobotLink::RobotLink(QObject* parent)
     sending_ = false;
     const robot::LinkProtocol& p = link_->protocol();
     const QString source = QString::fromStdString(source_);
-    if (ok) {
+    const Status st = session_ ? session_->Finish(p) : Status::Ok();
+    if (ok && !st) {
+      emit finished(false, QString::fromStdString(st.message()));
+    } else if (ok) {
       emit finished(true, QString("%1: sent %2 lines").arg(source).arg(p.total()));
     } else if (aborted_) {
       emit finished(false, QString("%1: aborted by the operator after %2 of %3 lines")
@@ -25,7 +28,7 @@ RobotLink::RobotLink(QObject* parent)
                                .arg(p.acknowledged())
                                .arg(p.total()));
     } else {
-      emit finished(false, QString::fromStdString(p.error_message()));
+      emit finished(false, QString::fromStdString(st ? p.error_message() : st.message()));
     }
   });
 }
@@ -52,7 +55,11 @@ bool RobotLink::connectPort(const QString& device, int baud) {
 }
 
 void RobotLink::disconnectPort() {
-  if (sending_) link_->Cancel("the port was closed");
+  // A send, or another stream on the link (Mimic live), ends: nothing more is written.
+  const robot::LinkState state = link_->protocol().state();
+  if (sending_ || (state != robot::LinkState::kIdle && !link_->protocol().finished())) {
+    link_->Cancel("the port was closed");
+  }
   if (link_->is_open()) {
     link_->Close();
     emit connectedChanged(false, device_);
@@ -60,37 +67,36 @@ void RobotLink::disconnectPort() {
 }
 
 bool RobotLink::send(const robot::ValProgram& program, const robot::ControllerProfile& profile,
-                     const robot::JointLimits& limits) {
+                     const robot::JointLimits& limits, const robot::SendStart& start,
+                     const std::string& input) {
   if (!link_->is_open()) {
     emit error(tr("not connected: choose a port and connect first"));
     return false;
   }
   if (sending_) return false;
-  std::vector<robot::LinkLine> lines;
-  std::vector<double> times_s;
-  for (const robot::ValLine& l : program.lines) {
-    robot::LinkLine line;
-    line.text = l.text;
-    line.line_no = l.line_no;
-    line.index = static_cast<int>(lines.size());
-    line.timeout_s =
-        robot::IsMotionLine(l.text) ? profile.motion_timeout_s : profile.prompt_timeout_s;
-    lines.push_back(line);
-    times_s.push_back(l.time_s);
+  auto session = std::make_unique<robot::SendSession>();
+  Status st = session->Prepare(program, profile, limits,
+                               input.empty() ? program.source_name : input, start);
+  if (st && session->nothing_to_do()) {
+    emit finished(true, tr("%1: already sent completely; nothing to resume")
+                            .arg(QString::fromStdString(program.source_name)));
+    return true;
   }
-  link_->SetLinkSettings(robot::LinkSettings::FromProfile(profile));
-  safety_ = robot::SafetyState::For(limits, profile);
+  if (st) {
+    link_->SetLinkSettings(robot::LinkSettings::FromProfile(profile));
+    st = session->Attach(&link_->protocol());
+  }
+  if (!st) {
+    emit error(QString::fromStdString(st.message()));
+    return false;
+  }
+  session_ = std::move(session);
   source_ = program.source_name;
-  // The last check before the port: a line the checker refuses is never written.
-  link_->protocol().SetGate([this, times_s](const robot::LinkLine& line) -> std::string {
-    const double t = line.index < static_cast<int>(times_s.size()) ? times_s[line.index] : kNaN;
-    const Status st = robot::CheckLine(line.text, t, safety_);
-    return st ? std::string() : st.message();
-  });
   sending_ = true;
   aborted_ = false;
+  const std::vector<robot::LinkLine> lines = session_->lines();
   emit progress(0, static_cast<int>(lines.size()));
-  link_->Start(std::move(lines), program.source_name);
+  link_->Start(lines, program.source_name);
   return true;
 }
 

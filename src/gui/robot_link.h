@@ -1,14 +1,17 @@
 // RobotLink: the robot panel's handle on the serial link. A thin adapter over
-// serial::SerialLink (the same QSerialPort transport and robot::LinkProtocol the CLI's send
-// uses): it turns a checked VAL program into link lines, gates every line through
-// robot::CheckLine right before it is written, and reports in QString messages. Pause holds the
-// next line back; abort stops after the line in flight.
+// serial::SerialLink and robot::SendSession, the same transport and send logic the CLI's send
+// uses: the program is checked as a whole, every line is gated through robot::CheckLine right
+// before it is written, and the link lines carry the same timeouts. It reports in QString
+// messages. Pause holds the next line back; abort stops after the line in flight.
 #pragma once
+
+#include <memory>
 
 #include <QObject>
 #include <QString>
 
 #include "armmimic/robot/profile.h"
+#include "armmimic/robot/send_session.h"
 #include "armmimic/robot/val_program.h"
 
 namespace armmimic::serial {
@@ -28,9 +31,19 @@ class RobotLink : public QObject {
   bool isConnected() const;
   QString device() const { return device_; }
 
-  // Sends `program` (already checked as a whole) with `profile` and `limits`.
+  // Sends `program` with `profile` and `limits` (tightened by the program's header limits),
+  // as `armmimic-cli send` does. `start` chooses the journal and resume behaviour (default:
+  // from the first line, no journal); the journal is INPUT.journal, `input` defaulting to the
+  // program's source name. A resume whose last line is uncertain needs the WHERE step first
+  // (robot::SendSession::UncertainQuery / ResolveUncertain), as the CLI does.
   bool send(const robot::ValProgram& program, const robot::ControllerProfile& profile,
-            const robot::JointLimits& limits);
+            const robot::JointLimits& limits, const robot::SendStart& start = NoJournal(),
+            const std::string& input = "");
+  static robot::SendStart NoJournal() {
+    robot::SendStart s;
+    s.journal = false;
+    return s;
+  }
   bool isSending() const { return sending_; }
   bool isPaused() const;
   void setPaused(bool paused);
@@ -38,6 +51,9 @@ class RobotLink : public QObject {
   int acknowledged() const;
   // The last send ended because the operator aborted it (not a controller or port fault).
   bool wasAborted() const { return aborted_; }
+  // The transport, for other streams over the same connection (live mimicking). Not while
+  // isSending().
+  serial::SerialLink* serialLink() const { return link_; }
 
  signals:
   void connectedChanged(bool connected, const QString& device);
@@ -52,7 +68,7 @@ class RobotLink : public QObject {
   bool sending_ = false;
   bool aborted_ = false;
   std::string source_;
-  robot::SafetyState safety_;
+  std::unique_ptr<robot::SendSession> session_;
 };
 
 }  // namespace armmimic::gui

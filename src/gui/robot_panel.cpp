@@ -1,28 +1,25 @@
 #include "robot_panel.h"
 
 #include <cmath>
+#include <memory>
 #include <sstream>
+#include <vector>
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFormLayout>
-#include <QGroupBox>
-#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QScrollArea>
 #include <QSettings>
-#include <QTabWidget>
 #include <QTableWidget>
-#include <QVBoxLayout>
 
+#include "arm_view_3d.h"
 #include "armmimic/core/atomic_file.h"
 #include "armmimic/robot/val_program.h"
 #include "armmimic/serial/serial_link.h"
@@ -30,59 +27,37 @@
 #include "robot_link.h"
 #include "robot_preview.h"
 #include "sim_controller.h"
+#include "ui_robot_panel.h"
 #include "wheel_guard.h"
 
 namespace armmimic::gui {
-namespace {
-
-QDoubleSpinBox* DSpin(double lo, double hi, double v, int dec, const QString& tip,
-                      const QString& name) {
-  auto* s = new QDoubleSpinBox;
-  s->setRange(lo, hi);
-  s->setDecimals(dec);
-  s->setValue(v);
-  s->setToolTip(tip);
-  s->setObjectName(name);
-  return s;
-}
-
-}  // namespace
 
 RobotPanel::RobotPanel(QWidget* parent)
     : QWidget(parent),
+      ui_(std::make_unique<Ui::RobotPanelForm>()),
       link_(new RobotLink(this)),
-      sim_(new SimController(this)),
-      preview_(new RobotPreview) {
-  setObjectName("robotPanel");
-  auto* pv = new QWidget;
-  auto* pvl = new QVBoxLayout(pv);
-  pvl->setContentsMargins(0, 0, 0, 0);
-  pvl->addWidget(preview_, 1);
-  animate_button_ = new QPushButton(tr("Animate plan"));
-  animate_button_->setObjectName("animateButton");
-  animate_button_->setCheckable(true);
-  pvl->addWidget(animate_button_);
-  auto scrolled = [](QWidget* w) {
-    auto* scroll = new QScrollArea;
-    scroll->setWidget(w);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    return scroll;
-  };
-  auto* tabs = new QTabWidget;
-  tabs->setObjectName("robotTabs");
-  tabs->addTab(scrolled(makePlanBox()), tr("Plan"));
-  tabs->addTab(scrolled(makeLinkBox()), tr("Controller"));
-  auto* outer = new QVBoxLayout(this);
-  outer->setContentsMargins(2, 2, 2, 2);
-  outer->addWidget(pv, 2);
-  outer->addWidget(tabs, 3);
+      sim_(new SimController(this)) {
+  ui_->setupUi(this);  // the static layout: ui/robot_panel.ui
+  preview_ = ui_->robotPreview;
+  view3d_ = new ArmView3D;
+  ui_->view3dLayout->addWidget(view3d_);
+  animate_button_ = ui_->animateButton;
+  connect(ui_->compactButton, &QPushButton::toggled, this, [this](bool on) {
+    ui_->previewStack->setCurrentIndex(on ? 1 : 0);
+    ui_->resetViewButton->setEnabled(!on && view3d_->drawsIn3D());
+  });
+  connect(ui_->resetViewButton, &QPushButton::clicked, view3d_, &ArmView3D::resetView);
+  // Without OpenGL the 3-D page only says why; the compact views show the arm.
+  ui_->compactButton->setChecked(!view3d_->drawsIn3D());
+  ui_->resetViewButton->setEnabled(view3d_->drawsIn3D() && !ui_->compactButton->isChecked());
+  wirePlanBox();
+  wireLinkBox();
 
   animate_.setInterval(40);
   connect(&animate_, &QTimer::timeout, this, [this] {
     anim_t_ += 0.04;
     if (anim_t_ > plan_.trajectory().duration_s()) anim_t_ = 0;
-    preview_->setPose(plan_.PoseAt(anim_t_), tr("plan t=%1 s").arg(anim_t_, 0, 'f', 1));
+    showArm(plan_.PoseAt(anim_t_), tr("plan t=%1 s").arg(anim_t_, 0, 'f', 1));
   });
   connect(animate_button_, &QPushButton::toggled, this, [this](bool on) {
     if (on) {
@@ -96,7 +71,7 @@ RobotPanel::RobotPanel(QWidget* parent)
   sim_poll_.setInterval(50);
   connect(&sim_poll_, &QTimer::timeout, this, [this] {
     if (!animate_.isActive() && sim_->isRunning() && link_->isConnected()) {
-      preview_->setPose(sim_->joints(), tr("simulated controller"));
+      showArm(sim_->joints(), tr("simulated controller"));
     }
   });
   connect(link_, &RobotLink::connectedChanged, this, [this](bool on, const QString& dev) {
@@ -120,9 +95,12 @@ RobotPanel::RobotPanel(QWidget* parent)
     }
     emit linkStateChanged(tr("robot: %1").arg(link_->device()));
     updateButtons();
+    emit sendingChanged(false);
     emit sendFinished(ok);
   });
-  preview_->setLimits(plannerOptions().limits);
+  const robot::JointLimits limits = plannerOptions().limits;
+  preview_->setLimits(limits);
+  view3d_->setLimits(limits);
   GuardWheel(this);
   updateButtons();
 }
@@ -132,81 +110,51 @@ RobotPanel::~RobotPanel() {
   sim_->stop();
 }
 
-QWidget* RobotPanel::makePlanBox() {
-  const robot::PlannerOptions d;
-  auto* box = new QGroupBox(tr("Plan"));
-  auto* form = new QFormLayout(box);
-  source_ = new QLabel(tr("no angles yet: run the analysis"));
-  source_->setWordWrap(true);
-  source_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  form->addRow(tr("Angles"), source_);
-  mirror_ = new QCheckBox(tr("Mirror (the robot faces the person)"));
-  mirror_->setObjectName("mirror");
-  form->addRow(mirror_);
-  const char* sources[3] = {"J1 = yaw", "J2 = elevation", "J3 = flexion"};
-  const robot::JointMap maps[3] = {d.mapping.j1, d.mapping.j2, d.mapping.j3};
+void RobotPanel::showArm(const robot::JointArray& joint_deg, const QString& caption) {
+  preview_->setPose(joint_deg, caption);
+  view3d_->setPose(joint_deg, caption);
+}
+
+void RobotPanel::wirePlanBox() {
+  Ui::RobotPanelForm& u = *ui_;
+  source_ = u.source;
+  mirror_ = u.mirror;
+  QComboBox* signs[3] = {u.sign1, u.sign2, u.sign3};
+  QDoubleSpinBox* offsets[3] = {u.offset1, u.offset2, u.offset3};
+  QLabel* labels[3] = {u.map1Label, u.map2Label, u.map3Label};
   for (int i = 0; i < 3; ++i) {
-    sign_[i] = new QComboBox;
-    sign_[i]->addItem("+", 1.0);
-    sign_[i]->addItem("−", -1.0);
-    sign_[i]->setCurrentIndex(maps[i].sign > 0 ? 0 : 1);
-    sign_[i]->setObjectName(QString("sign%1").arg(i + 1));
-    offset_[i] = DSpin(-360, 360, maps[i].offset_deg, 1, tr("offset, degrees"),
-                       QString("offset%1").arg(i + 1));
-    auto* row = new QWidget;
-    auto* rl = new QHBoxLayout(row);
-    rl->setContentsMargins(0, 0, 0, 0);
-    rl->addWidget(sign_[i]);
-    rl->addWidget(new QLabel(tr("× source +")));
-    rl->addWidget(offset_[i], 1);
-    map_labels_[i] = new QLabel(tr(sources[i]));
-    form->addRow(map_labels_[i], row);
+    sign_[i] = signs[i];
+    sign_[i]->setItemData(0, 1.0);
+    sign_[i]->setItemData(1, -1.0);
+    offset_[i] = offsets[i];
+    map_labels_[i] = labels[i];
   }
-  cutoff_ = DSpin(0, 50, d.cutoff_hz, 2, tr("low-pass cutoff, Hz (0: off)"), "cutoff");
-  deadband_ =
-      DSpin(0, 90, d.deadband_deg, 1, tr("a new move when a joint changed this much"), "deadband");
-  min_interval_ =
-      DSpin(0.01, 10, d.min_interval_s, 2, tr("seconds between moves at least"), "minInterval");
-  max_gap_ =
-      DSpin(0, 60, d.max_gap_s, 2, tr("longest run of lost frames bridged, seconds"), "maxGap");
-  clamp_ = new QCheckBox(tr("Clamp to the limits instead of refusing"));
-  clamp_->setObjectName("clamp");
-  form->addRow(tr("Filter cutoff (Hz)"), cutoff_);
-  form->addRow(tr("Deadband (°)"), deadband_);
-  form->addRow(tr("Min. interval (s)"), min_interval_);
-  form->addRow(tr("Max. gap (s)"), max_gap_);
-  form->addRow(clamp_);
-  limits_ = new QTableWidget(robot::kJoints, 3);
-  limits_->setObjectName("limitsTable");
-  limits_->setHorizontalHeaderLabels({tr("min °"), tr("max °"), tr("speed °/s")});
-  QStringList rows;
+  cutoff_ = u.cutoff;
+  deadband_ = u.deadband;
+  min_interval_ = u.minInterval;
+  max_gap_ = u.maxGap;
+  clamp_ = u.clamp;
+  limits_ = u.limitsTable;
+  report_ = u.planReport;
   for (int j = 0; j < robot::kJoints; ++j) {
-    rows << QString("J%1").arg(j + 1);
-    limits_->setItem(j, 0, new QTableWidgetItem(QString::number(d.limits.min_deg[j])));
-    limits_->setItem(j, 1, new QTableWidgetItem(QString::number(d.limits.max_deg[j])));
-    limits_->setItem(j, 2, new QTableWidgetItem(QString::number(d.limits.max_speed_deg_s[j])));
+    for (int c = 0; c < 3; ++c) limits_->setItem(j, c, new QTableWidgetItem);
   }
-  limits_->setVerticalHeaderLabels(rows);
   limits_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
   limits_->setMinimumHeight(limits_->verticalHeader()->defaultSectionSize() * 7 + 4);
-  form->addRow(tr("Limits"), limits_);
-  report_ = new QLabel;
-  report_->setObjectName("planReport");
-  report_->setWordWrap(true);
-  report_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  form->addRow(report_);
+  showPlannerDefaults();
   auto replan_later = [this] {
-    if (plan_.loaded()) replan();
+    if (plan_.loaded() || plan_.fromProgram()) replan();
   };
-  for (auto* s : box->findChildren<QDoubleSpinBox*>()) {
+  for (auto* s : u.planBox->findChildren<QDoubleSpinBox*>()) {
     connect(s, &QDoubleSpinBox::valueChanged, this, replan_later);
   }
-  for (auto* c : box->findChildren<QComboBox*>()) {
+  for (auto* c : u.planBox->findChildren<QComboBox*>()) {
     connect(c, &QComboBox::currentIndexChanged, this, replan_later);
   }
-  for (auto* c : box->findChildren<QCheckBox*>())
+  for (auto* c : u.planBox->findChildren<QCheckBox*>()) {
     connect(c, &QCheckBox::toggled, this, replan_later);
-  shown_limits_ = d.limits;
+  }
+  connect(u.planDefaultsButton, &QPushButton::clicked, this, &RobotPanel::resetPlannerDefaults);
   connect(limits_, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
     // A cell holds a number of degrees (or degrees per second); anything else is put back.
     double* columns[3] = {shown_limits_.min_deg.data(), shown_limits_.max_deg.data(),
@@ -228,69 +176,45 @@ QWidget* RobotPanel::makePlanBox() {
       return;
     }
     kept = v;
-    if (plan_.loaded()) replan();
+    if (plan_.loaded() || plan_.fromProgram()) replan();
   });
-  return box;
 }
 
-QWidget* RobotPanel::makeLinkBox() {
-  auto* box = new QGroupBox(tr("Controller"));
-  auto* form = new QFormLayout(box);
-  port_ = new QComboBox;
-  port_->setObjectName("portCombo");
-  port_->setEditable(true);
-  port_->setToolTip(tr("Serial port (or type a device path)"));
-  auto* rescan = new QPushButton(tr("Rescan"));
-  auto* prow = new QWidget;
-  auto* pl = new QHBoxLayout(prow);
-  pl->setContentsMargins(0, 0, 0, 0);
-  pl->addWidget(port_, 1);
-  pl->addWidget(rescan);
-  baud_ = new QComboBox;
-  baud_->setObjectName("baudCombo");
+// The planner's documented defaults, for the kind of angles shown (replans a loaded plan once).
+void RobotPanel::showPlannerDefaults() {
+  robot::PlannerOptions d;
+  d.mapping = robot::MappingOptions::Default(mapping_kind_);
+  std::vector<std::unique_ptr<QSignalBlocker>> quiet;  // one replan at the end, not one per field
+  for (QWidget* w : ui_->planBox->findChildren<QWidget*>()) {
+    quiet.push_back(std::make_unique<QSignalBlocker>(w));
+  }
+  setPlannerOptions(d);
+}
+
+void RobotPanel::resetPlannerDefaults() {
+  showPlannerDefaults();
+  if (!plan_.loaded() && !plan_.fromProgram()) {
+    preview_->setLimits(plannerOptions().limits);
+    view3d_->setLimits(plannerOptions().limits);
+  }
+  emit message(tr("Robot plan settings and limits reset to their defaults"));
+}
+
+void RobotPanel::wireLinkBox() {
+  Ui::RobotPanelForm& u = *ui_;
+  port_ = u.portCombo;
+  baud_ = u.baudCombo;
   for (int b : {1200, 2400, 4800, 9600, 19200, 38400}) baud_->addItem(QString::number(b), b);
   baud_->setCurrentText("9600");
-  sim_speed_ =
-      DSpin(0.01, 1.0, 0.1, 2, tr("simulated motion time as a share of real time"), "simSpeed");
-  sim_button_ = new QPushButton(tr("Start simulated controller"));
-  sim_button_->setObjectName("simButton");
-  connect_button_ = new QPushButton(tr("Connect"));
-  connect_button_->setObjectName("connectButton");
-  send_button_ = new QPushButton(tr("Send to robot…"));
-  send_button_->setObjectName("sendButton");
-  pause_button_ = new QPushButton(tr("Pause"));
-  pause_button_->setCheckable(true);
-  pause_button_->setObjectName("pauseButton");
-  abort_button_ = new QPushButton(tr("Abort"));
-  abort_button_->setObjectName("abortButton");
-  send_progress_ = new QProgressBar;
-  send_progress_->setObjectName("sendProgress");
-  send_progress_->setValue(0);
-  replies_ = new QPlainTextEdit;
-  replies_->setObjectName("replyLog");
-  replies_->setReadOnly(true);
-  replies_->setMaximumBlockCount(2000);
-  replies_->setMinimumHeight(90);
-  replies_->setPlaceholderText(tr("controller replies"));
-  auto* srow = new QWidget;
-  auto* sl = new QHBoxLayout(srow);
-  sl->setContentsMargins(0, 0, 0, 0);
-  sl->addWidget(sim_speed_);
-  sl->addWidget(sim_button_, 1);
-  auto* brow = new QWidget;
-  auto* bl = new QHBoxLayout(brow);
-  bl->setContentsMargins(0, 0, 0, 0);
-  bl->addWidget(send_button_, 1);
-  bl->addWidget(pause_button_);
-  bl->addWidget(abort_button_);
-  form->addRow(tr("Port"), prow);
-  form->addRow(tr("Baud"), baud_);
-  form->addRow(tr("Simulator"), srow);
-  form->addRow(connect_button_);
-  form->addRow(brow);
-  form->addRow(send_progress_);
-  form->addRow(replies_);
-  connect(rescan, &QPushButton::clicked, this, &RobotPanel::refreshPorts);
+  sim_speed_ = u.simSpeed;
+  sim_button_ = u.simButton;
+  connect_button_ = u.connectButton;
+  send_button_ = u.sendButton;
+  pause_button_ = u.pauseButton;
+  abort_button_ = u.abortButton;
+  send_progress_ = u.sendProgress;
+  replies_ = u.replyLog;
+  connect(u.rescanButton, &QPushButton::clicked, this, &RobotPanel::refreshPorts);
   connect(sim_button_, &QPushButton::clicked, this, [this] {
     if (sim_->isRunning()) {
       link_->disconnectPort();
@@ -314,7 +238,6 @@ QWidget* RobotPanel::makeLinkBox() {
   connect(pause_button_, &QPushButton::toggled, link_, &RobotLink::setPaused);
   connect(abort_button_, &QPushButton::clicked, link_, &RobotLink::abort);
   refreshPorts();
-  return box;
 }
 
 void RobotPanel::refreshPorts() {
@@ -391,7 +314,7 @@ void RobotPanel::setPlannerOptions(const robot::PlannerOptions& o) {
     limits_->item(j, 1)->setText(QString::number(o.limits.max_deg[j]));
     limits_->item(j, 2)->setText(QString::number(o.limits.max_speed_deg_s[j]));
   }
-  if (plan_.loaded()) replan();
+  if (plan_.loaded() || plan_.fromProgram()) replan();
 }
 
 void RobotPanel::setAngleFile(const QString& path) {
@@ -414,6 +337,24 @@ void RobotPanel::setAngleFile(const QString& path) {
                        .arg(QString::fromStdString(plan_.angles().Meta("engine", "?"))));
   followFileKind(robot::DetectSourceKind(plan_.angles()));
   replan();
+}
+
+bool RobotPanel::setValProgram(const QString& path) {
+  animate_button_->setChecked(false);
+  const Status st = plan_.LoadProgram(path.toStdString(), profile_);
+  if (!st) {
+    emit errorOccurred(QString::fromStdString(st.message()));
+    source_->setText(tr("no angles yet: run the analysis"));
+    report_->clear();
+    updateButtons();
+    return false;
+  }
+  emit message(tr("Opened the VAL program %1").arg(path));
+  replan();
+  source_->setText(tr("%1: %2 moves, sent as written (the plan settings do not apply)")
+                       .arg(QFileInfo(path).fileName())
+                       .arg(plan_.trajectory().keyframes.size()));
+  return plan_.planned();
 }
 
 void RobotPanel::setMappingKind(robot::SourceKind kind) {
@@ -455,6 +396,7 @@ void RobotPanel::followFileKind(robot::SourceKind kind) {
 bool RobotPanel::replan() {
   const robot::PlannerOptions options = plannerOptions();
   preview_->setLimits(options.limits);
+  view3d_->setLimits(options.limits);
   const std::vector<LimitViolation> bad = plan_.Violations(options);
   QString violations;
   if (!bad.empty()) {
@@ -466,6 +408,7 @@ bool RobotPanel::replan() {
                      .arg(bad.front().deg, 0, 'f', 1);
   }
   const Status st = options.Check() ? plan_.Plan(options) : options.Check();
+  view3d_->setPath(plan_.planned() ? plan_.trajectory() : robot::Trajectory());
   if (!st) {
     report_->setText(tr("<font color='#d03b2f'>Not planned: %1</font>")
                          .arg(QString::fromStdString(st.message()).toHtmlEscaped()) +
@@ -510,17 +453,24 @@ void RobotPanel::showPose() {
   if (sim_->isRunning() && link_->isConnected()) return;  // the poll shows the controller
   robot::JointArray j;
   if (plan_.loaded() && plan_.MappedPose(video_frame_, plannerOptions(), &j)) {
-    preview_->setPose(j, tr("frame %1 (mapped, unfiltered)").arg(video_frame_));
+    showArm(j, tr("frame %1 (mapped, unfiltered)").arg(video_frame_));
   } else if (plan_.planned()) {
     const int k = plan_.KeyframeForFrame(video_frame_);
-    preview_->setPose(plan_.trajectory().keyframes[std::max(0, k)].joint_deg,
-                      tr("plan near frame %1").arg(video_frame_));
+    showArm(plan_.trajectory().keyframes[std::max(0, k)].joint_deg,
+            tr("plan near frame %1").arg(video_frame_));
   }
 }
 
 bool RobotPanel::exportVal(const QString& path) {
+  std::vector<NamedPath> inputs = inputs_ ? inputs_() : std::vector<NamedPath>();
+  if (!plan_.angle_path().empty()) inputs.push_back({"the angle file", plan_.angle_path()});
+  Status st = CheckOutputsAreNotInputs(inputs, {{"the VAL program", path.toStdString()}});
+  if (!st) {
+    emit errorOccurred(QString::fromStdString(st.message()));
+    return false;
+  }
   std::string text;
-  Status st = plan_.ValText(profile_, &text);
+  st = plan_.ValText(profile_, &text);
   if (st) st = WriteFileAtomically(path.toStdString(), text);
   if (!st) {
     emit errorOccurred(QString::fromStdString(st.message()));
@@ -530,14 +480,15 @@ bool RobotPanel::exportVal(const QString& path) {
   return true;
 }
 
-void RobotPanel::exportValInteractive() {
+void RobotPanel::exportValInteractive(const QString& suggested) {
   if (!plan_.planned()) {
     emit errorOccurred(tr("No plan to export: run the analysis, then check the Robot panel"));
     return;
   }
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export VAL program"),
-                                                    RecentFiles::lastDir() + "/program.val",
-                                                    tr("VAL programs (*.val)"));
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Export VAL program"),
+      suggested.isEmpty() ? RecentFiles::lastDir() + "/program.val" : suggested,
+      tr("VAL programs (*.val)"));
   if (!path.isEmpty()) exportVal(path);
 }
 
@@ -578,7 +529,7 @@ bool RobotPanel::sendPlan(bool confirmed) {
     st = robot::ParseValProgram(in, "plan.val", profile_.max_line_length, &program);
   }
   if (st) {
-    robot::SafetyState safety = robot::SafetyState::For(plan_.options().limits, profile_);
+    robot::SafetyState safety = robot::SafetyState::For(plan_.SendLimits(), profile_);
     st = robot::CheckProgram(program, safety);
   }
   if (!st) {
@@ -587,21 +538,24 @@ bool RobotPanel::sendPlan(bool confirmed) {
   }
   if (!confirmed) {
     const QString ranges =
-        QString::fromStdString(DescribeJointRanges(plan_.report(), plan_.options().limits));
+        QString::fromStdString(DescribeJointRanges(plan_.report(), plan_.SendLimits()));
     QMessageBox box(QMessageBox::Warning, tr("Move the robot?"),
                     tr("Send %1 lines to %2? The arm will move through these joint ranges:")
                         .arg(program.lines.size())
                         .arg(link_->device()),
                     QMessageBox::Cancel, this);
     box.setInformativeText("<pre>" + ranges.toHtmlEscaped() + "</pre>");
-    box.addButton(tr("Move the robot"), QMessageBox::AcceptRole);
+    QPushButton* move = box.addButton(tr("Move the robot"), QMessageBox::AcceptRole);
     box.setDefaultButton(QMessageBox::Cancel);
-    if (box.exec() == QMessageBox::Cancel) return false;
+    box.exec();
+    // Only the button that says so moves the arm: Esc, Cancel or closing the question do not.
+    if (box.clickedButton() != static_cast<QAbstractButton*>(move)) return false;
   }
   replies_->clear();
-  const bool ok = link_->send(program, profile_, plan_.options().limits);
+  const bool ok = link_->send(program, profile_, plan_.SendLimits());
   if (ok) emit linkStateChanged(tr("robot: sending to %1").arg(link_->device()));
   updateButtons();
+  if (ok) emit sendingChanged(true);
   return ok;
 }
 

@@ -5,9 +5,14 @@
 // simulator SimController: this widget only edits and shows.
 #pragma once
 
+#include <memory>
+
 #include <QTimer>
 #include <QWidget>
+#include <functional>
+#include <vector>
 
+#include "armmimic/core/same_file.h"
 #include "armmimic/robot/planner.h"
 #include "armmimic/robot/profile.h"
 #include "robot_plan.h"
@@ -21,9 +26,13 @@ class QProgressBar;
 class QPushButton;
 class QSettings;
 class QTableWidget;
+namespace Ui {
+class RobotPanelForm;
+}
 
 namespace armmimic::gui {
 
+class ArmView3D;
 class RobotLink;
 class RobotPreview;
 class SimController;
@@ -39,13 +48,19 @@ class RobotPanel : public QWidget {
   const RobotPlan& plan() const { return plan_; }
   RobotLink* link() const { return link_; }
   SimController* simulator() const { return sim_; }
-  RobotPreview* preview() const { return preview_; }
+  RobotPreview* preview() const { return preview_; }  // the compact 2-D views
+  ArmView3D* view3d() const { return view3d_; }
 
   void save(QSettings& settings) const;
   void load(QSettings& settings);
 
   bool replan();
+  // Refuses (errorOccurred) a path that is the angle file or one of `inputs_` files.
   bool exportVal(const QString& path);
+  // The session's files (video, images), which exportVal never replaces.
+  void setInputFiles(std::function<std::vector<NamedPath>()> inputs) {
+    inputs_ = std::move(inputs);
+  }
   bool startSimulator(double time_scale);
   bool connectTo(const QString& device);
   // Sends the plan. `confirmed` false asks the operator first (showing the joint ranges).
@@ -55,29 +70,40 @@ class RobotPanel : public QWidget {
  public slots:
   // The angle file of the finished analysis ("" clears the plan).
   void setAngleFile(const QString& path);
+  // A VAL program to send as it is written (checked against the limits first).
+  bool setValProgram(const QString& path);
   void setVideoFrame(int frame);
-  void exportValInteractive();
+  // Asks where to write the .val, suggesting `suggested` (default: program.val).
+  void exportValInteractive(const QString& suggested = QString());
+  // Every plan setting and limit back to its documented default.
+  void resetPlannerDefaults();
 
  signals:
   void message(const QString& text);
   void errorOccurred(const QString& text);
   void linkStateChanged(const QString& text);
   void sendFinished(bool ok);
+  void sendingChanged(bool sending);
 
  private:
-  QWidget* makePlanBox();
-  QWidget* makeLinkBox();
+  void wirePlanBox();
+  void wireLinkBox();
+  void showPlannerDefaults();
+  void showArm(const robot::JointArray& joint_deg, const QString& caption);
   void refreshPorts();
   void updateButtons();
   void showPose();
   void followFileKind(robot::SourceKind kind);
   void setMappingKind(robot::SourceKind kind);
 
+  std::unique_ptr<Ui::RobotPanelForm> ui_;  // ui/robot_panel.ui
   RobotPlan plan_;
+  std::function<std::vector<NamedPath>()> inputs_;
   robot::ControllerProfile profile_;
   RobotLink* link_;
   SimController* sim_;
   RobotPreview* preview_;
+  ArmView3D* view3d_;
   QTimer animate_;
   QTimer sim_poll_;
   double anim_t_ = 0;

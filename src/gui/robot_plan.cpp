@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <regex>
+#include <sstream>
 
 #include "armmimic/robot/mapping.h"
 #include "armmimic/robot/val_program.h"
@@ -20,8 +23,44 @@ Status RobotPlan::Load(const std::string& path) {
   return Status::Ok();
 }
 
+Status RobotPlan::LoadProgram(const std::string& path, const robot::ControllerProfile& profile) {
+  Clear();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Status::Error(path + ": cannot open the VAL program");
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::istringstream lines(text.str());
+  robot::ValProgram program;
+  Status st = robot::ParseValProgram(lines, path, profile.max_line_length, &program);
+  if (!st) return st;
+  // The motion lines as keyframes, for the preview: "[DO] MOVE #PPOINT(j1,...,j6)".
+  static const std::regex kMove(R"(^\s*(?:DO\s+)?MO\w*\s+#PPOINT\(([^)]*)\))", std::regex::icase);
+  double t = 0;
+  for (const robot::ValLine& line : program.lines) {
+    std::smatch m;
+    if (!std::regex_search(line.text, m, kMove)) continue;
+    robot::Keyframe k;
+    std::istringstream values(m[1].str());
+    std::string value;
+    int j = 0;
+    while (j < robot::kJoints && std::getline(values, value, ','))
+      k.joint_deg[j++] = std::atof(value.c_str());
+    if (j != robot::kJoints) continue;
+    t = std::isfinite(line.time_s) ? line.time_s : t + 1.0;
+    k.time_s = t;
+    program_trajectory_.keyframes.push_back(k);
+  }
+  program_ = std::move(program);
+  program_text_ = text.str();
+  path_ = path;
+  return Status::Ok();
+}
+
 void RobotPlan::Clear() {
   loaded_ = planned_ = false;
+  program_.reset();
+  program_text_.clear();
+  program_trajectory_ = robot::Trajectory();
   path_.clear();
   angles_ = AngleFile();
   trajectory_ = robot::Trajectory();
@@ -30,6 +69,7 @@ void RobotPlan::Clear() {
 
 Status RobotPlan::Plan(const robot::PlannerOptions& options) {
   planned_ = false;
+  if (program_) return CheckProgram(options);
   if (!loaded_) return Status::Error("no angle file: run the analysis first");
   options_ = options;
   trajectory_ = robot::Trajectory();
@@ -41,6 +81,33 @@ Status RobotPlan::Plan(const robot::PlannerOptions& options) {
   }
   planned_ = true;
   return Status::Ok();
+}
+
+// A program from a file is sent as written: "planning" it is the safety check every line gets
+// again on its way out, against the limits shown and those its header records.
+Status RobotPlan::CheckProgram(const robot::PlannerOptions& options) {
+  options_ = options;
+  trajectory_ = program_trajectory_;
+  report_ = robot::PlanReport();
+  for (int j = 0; j < robot::kJoints; ++j) {
+    report_.min_deg[j] = report_.max_deg[j] = trajectory_.keyframes.empty() ? 0 : NAN;
+    for (const robot::Keyframe& k : trajectory_.keyframes) {
+      report_.min_deg[j] = std::fmin(report_.min_deg[j], k.joint_deg[j]);
+      report_.max_deg[j] = std::fmax(report_.max_deg[j], k.joint_deg[j]);
+    }
+  }
+  robot::SafetyState safety = robot::SafetyState::For(SendLimits(), robot::ControllerProfile());
+  const Status st = robot::CheckProgram(*program_, safety);
+  if (!st) return st;
+  planned_ = true;
+  return Status::Ok();
+}
+
+robot::JointLimits RobotPlan::SendLimits() const {
+  if (program_ && program_->has_header_limits) {
+    return robot::JointLimits::Intersect(options_.limits, program_->header_limits);
+  }
+  return options_.limits;
 }
 
 bool RobotPlan::MappedPose(int frame, const robot::PlannerOptions& options,
@@ -100,6 +167,10 @@ int RobotPlan::KeyframeForFrame(int frame) const {
 
 Status RobotPlan::ValText(const robot::ControllerProfile& profile, std::string* text) const {
   if (!planned_) return Status::Error("no plan: plan the trajectory first");
+  if (program_) {
+    *text = program_text_;
+    return Status::Ok();
+  }
   return robot::FormatValProgram(
       trajectory_, profile, options_.limits,
       robot::DescribePlan(path_, angles_, options_, report_, trajectory_), text);

@@ -3,6 +3,7 @@
 // frames whose mapped pose falls outside the joint limits, found before anything moves.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "armmimic/robot/planner.h"
 #include "armmimic/robot/profile.h"
 #include "armmimic/robot/trajectory.h"
+#include "armmimic/robot/val_program.h"
 
 namespace armmimic::gui {
 
@@ -24,10 +26,16 @@ class RobotPlan {
  public:
   // Reads the angle file; the mapping kind follows the file (arm or marker).
   Status Load(const std::string& angle_path);
+  // Reads a VAL program (a .val from `plan` or an earlier export) to send as it is written;
+  // Plan() then checks it line by line against the limits instead of planning.
+  Status LoadProgram(const std::string& path, const robot::ControllerProfile& profile);
+  bool fromProgram() const { return program_.has_value(); }
+  // The limits a send is checked against: those shown, narrowed by a program's header.
+  robot::JointLimits SendLimits() const;
   void Clear();
   bool loaded() const { return loaded_; }
   const AngleFile& angles() const { return angles_; }
-  const std::string& angle_path() const { return path_; }
+  const std::string& angle_path() const { return path_; }  // or the program's path
 
   // Plans with `options` (its mapping kind is set from the file). Fills trajectory and report.
   Status Plan(const robot::PlannerOptions& options);
@@ -45,12 +53,17 @@ class RobotPlan {
   // Index of the keyframe at or before the angle file's `frame` (-1: none).
   int KeyframeForFrame(int frame) const;
 
-  // The .val program text for the current trajectory.
+  // The .val program text for the current trajectory (a loaded program: its text as read).
   Status ValText(const robot::ControllerProfile& profile, std::string* text) const;
 
  private:
+  Status CheckProgram(const robot::PlannerOptions& options);
+
   bool loaded_ = false;
   bool planned_ = false;
+  std::optional<robot::ValProgram> program_;
+  std::string program_text_;
+  robot::Trajectory program_trajectory_;
   std::string path_;
   AngleFile angles_;
   robot::PlannerOptions options_;

@@ -148,6 +148,7 @@ LinkProtocol::LinkProtocol(LinkSettings settings) : settings_(std::move(settings
 void LinkProtocol::Start(std::vector<LinkLine> lines, const std::string& source_name,
                          double now_s) {
   lines_ = std::move(lines);
+  open_ended_ = false;
   source_name_ = source_name;
   next_ = 0;
   written_ = false;
@@ -162,6 +163,23 @@ void LinkProtocol::Start(std::vector<LinkLine> lines, const std::string& source_
   last_rx_s_ = now_s;
   deadline_s_ = now_s + settings_.wake_timeout_s;
   noise_ = 0;
+}
+
+void LinkProtocol::StartStream(const std::string& source_name, double now_s) {
+  Start({}, source_name, now_s);
+  open_ended_ = true;
+}
+
+void LinkProtocol::Append(LinkLine line, double now_s) {
+  if (finished()) return;
+  lines_.push_back(std::move(line));
+  now_s_ = std::max(now_s_, now_s);
+  if (state_ == LinkState::kReady) SendNext(now_s_);
+}
+
+void LinkProtocol::EndStream() {
+  open_ended_ = false;
+  if (state_ == LinkState::kReady) state_ = LinkState::kDone;
 }
 
 std::string LinkProtocol::TakeOutput() {
@@ -398,7 +416,7 @@ void LinkProtocol::OnPrompt(double now_s) {
 
 void LinkProtocol::SendNext(double now_s) {
   if (next_ >= lines_.size()) {
-    state_ = LinkState::kDone;
+    state_ = open_ended_ ? LinkState::kReady : LinkState::kDone;
     return;
   }
   const LinkLine& line = lines_[next_];

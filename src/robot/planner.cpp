@@ -141,6 +141,29 @@ Status EnforceSpeedLimits(Trajectory* trajectory, const JointLimits& limits, Spe
   return Status::Ok();
 }
 
+Status MappingForSource(const MappingOptions& mapping, SourceKind source_kind, MappingOptions* out,
+                        bool* adapted) {
+  *out = mapping;
+  if (adapted) *adapted = false;
+  if (!mapping.follow_file_kind || source_kind == mapping.kind) return Status::Ok();
+  const MappingOptions d = MappingOptions::Default(mapping.kind);
+  const bool untouched = mapping.j1.sign == d.j1.sign && mapping.j1.offset_deg == d.j1.offset_deg &&
+                         mapping.j2.sign == d.j2.sign && mapping.j2.offset_deg == d.j2.offset_deg &&
+                         mapping.j3.sign == d.j3.sign && mapping.j3.offset_deg == d.j3.offset_deg &&
+                         mapping.j2_elevation && mapping.j3_flexion;
+  if (!untouched) {
+    return Status::Error(std::string("the angle file comes from the ") +
+                         (source_kind == SourceKind::kMarker ? "marker engine" : "arm engines") +
+                         " but the mapping was set up for the " + SourceKindName(mapping.kind) +
+                         (mapping.kind == SourceKind::kMarker ? " engine" : " engines"));
+  }
+  *out = MappingOptions::Default(source_kind);
+  out->mirror = mapping.mirror;
+  out->hold_deg = mapping.hold_deg;
+  if (adapted) *adapted = true;
+  return Status::Ok();
+}
+
 Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Trajectory* out,
                       PlanReport* report_out) {
   Status s = options.Check();
@@ -152,28 +175,17 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
   if (n == 0) return Status::Error("the angle file has no rows");
   // A mapping left at its kind's defaults follows the file's engine kind (so plain defaults
   // plan marker and arm files alike); a customised mapping for the other kind is refused.
-  MappingOptions mapping = options.mapping;
-  const SourceKind file_kind = DetectSourceKind(angles);
-  if (mapping.follow_file_kind && file_kind != mapping.kind) {
-    const MappingOptions d = MappingOptions::Default(mapping.kind);
-    const bool untouched =
-        mapping.j1.sign == d.j1.sign && mapping.j1.offset_deg == d.j1.offset_deg &&
-        mapping.j2.sign == d.j2.sign && mapping.j2.offset_deg == d.j2.offset_deg &&
-        mapping.j3.sign == d.j3.sign && mapping.j3.offset_deg == d.j3.offset_deg &&
-        mapping.j2_elevation && mapping.j3_flexion;
-    if (!untouched) {
-      return Status::Error(std::string("the angle file comes from the ") +
-                           (file_kind == SourceKind::kMarker ? "marker engine" : "arm engines") +
-                           " but the mapping was set up for the " + SourceKindName(mapping.kind) +
-                           (mapping.kind == SourceKind::kMarker ? " engine" : " engines"));
+  MappingOptions mapping;
+  {
+    bool adapted = false;
+    const Status ms =
+        MappingForSource(options.mapping, DetectSourceKind(angles), &mapping, &adapted);
+    if (!ms.ok()) return ms;
+    if (adapted) {
+      Warn(&report, rows.empty() ? 0 : rows[0].frame,
+           std::string("default ") + SourceKindName(mapping.kind) + " mapping used for this " +
+               SourceKindName(mapping.kind) + " file: " + mapping.Describe());
     }
-    MappingOptions adapted = MappingOptions::Default(file_kind);
-    adapted.mirror = mapping.mirror;
-    adapted.hold_deg = mapping.hold_deg;
-    mapping = adapted;
-    Warn(&report, rows.empty() ? 0 : rows[0].frame,
-         std::string("default ") + SourceKindName(file_kind) + " mapping used for this " +
-             SourceKindName(file_kind) + " file: " + mapping.Describe());
   }
   const bool marker = mapping.kind == SourceKind::kMarker;
   report.mapping = mapping.Describe();

@@ -306,6 +306,7 @@ Status ParseProfile(std::istream& in, const std::string& source_name, Controller
   int line_no = 0;
   while (std::getline(in, raw)) {
     ++line_no;
+    if (line_no == 1) StripUtf8Bom(&raw);
     const std::string where = source_name + ":" + std::to_string(line_no) + ": ";
     const std::string line = Trim(raw);
     if (line.empty() || line[0] == '#') continue;

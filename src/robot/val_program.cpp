@@ -200,6 +200,7 @@ Status ParseValProgram(std::istream& in, const std::string& source_name, int max
   int pending_line = 0;
   while (std::getline(in, raw)) {
     ++line_no;
+    if (line_no == 1) StripUtf8Bom(&raw);
     const std::string where = source_name + ":" + std::to_string(line_no) + ": ";
     if (!raw.empty() && raw.back() == '\r') raw.pop_back();
     for (unsigned char c : raw) {
@@ -358,6 +359,19 @@ Status FormatValProgram(const Trajectory& trajectory, const ControllerProfile& p
   if (!status.ok()) return status;
   *text = std::move(out);
   return Status::Ok();
+}
+
+std::string FormatSpeedLine(int speed, const ControllerProfile& profile) {
+  return Replace(profile.speed_template, "speed", std::to_string(speed));
+}
+
+std::string FormatMoveLine(const JointArray& target_deg, const ControllerProfile& profile) {
+  std::string line = profile.move_template;
+  for (int j = 0; j < kJoints; ++j) {
+    line = Replace(line, "j" + std::to_string(j + 1),
+                   FormatJointDeg(RoundTo(target_deg[j], profile.decimals), profile.decimals));
+  }
+  return line;
 }
 
 SafetyState SafetyState::For(const JointLimits& limits, const ControllerProfile& profile) {

@@ -3,6 +3,7 @@
 #include <QSerialPortInfo>
 #include <cerrno>
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -14,9 +15,31 @@ std::string Lower(std::string s) {
   return s;
 }
 
-// "ttyUSB0" -> "/dev/ttyUSB0", as QSerialPort resolves a bare name.
-std::string DevicePath(const std::string& port) {
-  return port.find('/') == std::string::npos ? "/dev/" + port : port;
+// The paths a port name stands for: a path as it is; a bare name as given (a file in the
+// current folder) and under /dev ("ttyUSB0" -> "/dev/ttyUSB0"), in that order.
+std::vector<std::string> Candidates(const std::string& port) {
+  if (port.find('/') != std::string::npos) return {port};
+  return {"./" + port, "/dev/" + port};
+}
+
+// "a regular file", "a folder", ... for a path that is no character device.
+std::string KindOf(const struct stat& st) {
+  if (S_ISREG(st.st_mode)) return "a regular file";
+  if (S_ISDIR(st.st_mode)) return "a folder";
+  if (S_ISFIFO(st.st_mode)) return "a pipe";
+  if (S_ISSOCK(st.st_mode)) return "a socket";
+  if (S_ISBLK(st.st_mode)) return "a block device";
+  return "not a terminal device";
+}
+
+// True when `device` is a terminal (a serial port or a pseudo-terminal). Opened without making
+// it the controlling terminal and without waiting for a modem line; closed again at once.
+bool IsTerminal(const std::string& device) {
+  const int fd = ::open(device.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return true;  // cannot tell: let the open's own error speak
+  const bool tty = ::isatty(fd) == 1;
+  ::close(fd);
+  return tty;
 }
 
 }  // namespace
@@ -111,22 +134,36 @@ Status SerialLink::Open(const PortSettings& settings) {
   if (!s.ok()) return s;
   settings_ = settings;
   const std::string flag = "--port " + settings.port;
-  const std::string device = DevicePath(settings.port);
+  std::string device, tried;
   struct stat st {};
-  if (stat(device.c_str(), &st) != 0) {
-    return Status::Error(flag + ": no such serial port (" + device +
+  for (const std::string& candidate : Candidates(settings.port)) {
+    tried += (tried.empty() ? "" : " and ") + candidate;
+    if (stat(candidate.c_str(), &st) == 0) {
+      device = candidate;
+      break;
+    }
+  }
+  if (device.empty()) {
+    return Status::Error(flag + ": no such serial port (tried " + tried +
                          "); 'armmimic-cli send --list-ports' lists the ports found");
+  }
+  if (!S_ISCHR(st.st_mode)) {
+    return Status::Error(flag + ": " + device + " is not a serial port (it is " + KindOf(st) + ")");
   }
   if (access(device.c_str(), R_OK | W_OK) != 0 && errno == EACCES) {
     return Status::Error(flag + ": permission denied on " + device +
                          " (add your user to the group that owns it, usually 'dialout', and log "
                          "in again)");
   }
-  port_->setPortName(QString::fromStdString(settings.port));
+  port_->setPortName(QString::fromStdString(device));
   if (!port_->open(QIODevice::ReadWrite)) {
     const QSerialPort::SerialPortError e = port_->error();
     const std::string qt = port_->errorString().toStdString();
     port_->clearError();
+    if (e != QSerialPort::PermissionError && !IsTerminal(device)) {
+      return Status::Error(flag + ": " + device +
+                           " is not a serial port (a character device, but no terminal)");
+    }
     if (e == QSerialPort::DeviceNotFoundError) {
       return Status::Error(flag + ": no such serial port (" + qt + ")");
     }
@@ -202,15 +239,33 @@ void SerialLink::SetPaused(bool paused) {
   Flush();
 }
 
-void SerialLink::Start(std::vector<robot::LinkLine> lines, const std::string& source_name) {
+void SerialLink::Begin(const std::function<void(double now_s)>& start_protocol) {
   clock_.start();
   paused_ = false;
   paused_ns_ = 0;
   held_.clear();
   reported_ = 0;
   finished_sent_ = false;
-  protocol_.Start(std::move(lines), source_name, Now());
+  start_protocol(Now());
   timer_->start();
+  Flush();
+}
+
+void SerialLink::Start(std::vector<robot::LinkLine> lines, const std::string& source_name) {
+  Begin([&](double now_s) { protocol_.Start(std::move(lines), source_name, now_s); });
+}
+
+void SerialLink::StartStream(const std::string& source_name) {
+  Begin([&](double now_s) { protocol_.StartStream(source_name, now_s); });
+}
+
+void SerialLink::Append(robot::LinkLine line) {
+  protocol_.Append(std::move(line), Now());
+  Flush();
+}
+
+void SerialLink::EndStream() {
+  protocol_.EndStream();
   Flush();
 }
 

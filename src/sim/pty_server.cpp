@@ -1,5 +1,7 @@
 #include "armmimic/sim/pty_server.h"
 
+#include <algorithm>
+
 #include <cerrno>
 #include <cstring>
 
@@ -12,7 +14,8 @@
 
 namespace armmimic::sim {
 
-PtyServer::PtyServer(EmulatorOptions options) : emulator_(std::move(options)) {}
+PtyServer::PtyServer(EmulatorOptions options)
+    : line_baud_(options.line_baud), emulator_(std::move(options)) {}
 
 PtyServer::~PtyServer() { Stop(); }
 
@@ -117,9 +120,28 @@ double PtyServer::idle_s() const {
   return Now() - last_activity_s_;
 }
 
+void PtyServer::Paced::Push(const std::string& data, double now_s, double byte_s) {
+  for (char c : data) {
+    clock_s = std::max(clock_s, now_s) + byte_s;
+    bytes += c;
+    due_s.push_back(clock_s);
+  }
+}
+
+std::string PtyServer::Paced::Take(double now_s) {
+  std::size_t n = 0;
+  while (n < due_s.size() && due_s[n] <= now_s) ++n;
+  std::string out = bytes.substr(0, n);
+  bytes.erase(0, n);
+  due_s.erase(due_s.begin(), due_s.begin() + static_cast<long>(n));
+  return out;
+}
+
 void PtyServer::Run() {
   bool connected = false;
   char buf[1024];
+  byte_s_ = line_baud_ > 0 ? 10.0 / line_baud_ : 0;
+  Paced paced_in, paced_out;
   while (!stop_) {
     if (held_) {
       // A controller busy elsewhere: nothing is read or answered, motions stand still.
@@ -127,17 +149,16 @@ void PtyServer::Run() {
       continue;
     }
     pollfd p{master_fd_, POLLIN, 0};
-    const int r = poll(&p, 1, 5);
+    const bool pacing = !paced_in.bytes.empty() || !paced_out.bytes.empty();
+    const int r = poll(&p, 1, pacing ? 1 : 5);
     std::string out;
+    std::string in;
     bool hangup = false;
     if (r > 0 && (p.revents & POLLIN)) {
       const ssize_t n = read(master_fd_, buf, sizeof(buf));
       if (n > 0) {
         connected = true;
-        std::lock_guard<std::mutex> lock(mutex_);
-        const double now = Now();
-        last_activity_s_ = now;
-        out = emulator_.Feed(std::string_view(buf, static_cast<std::size_t>(n)), now);
+        in.assign(buf, static_cast<std::size_t>(n));
       } else if (n < 0 && errno != EAGAIN && errno != EINTR) {
         hangup = true;
       }
@@ -147,9 +168,22 @@ void PtyServer::Run() {
     {
       std::lock_guard<std::mutex> lock(mutex_);
       const double now = Now();
+      if (byte_s_ > 0) {  // the line delivers one byte per character time
+        paced_in.Push(in, now, byte_s_);
+        in = paced_in.Take(now);
+      }
+      if (!in.empty()) {
+        last_activity_s_ = now;
+        out = emulator_.Feed(in, now);
+      }
       if (hangup && connected) emulator_.OnDisconnect();
       out += emulator_.Tick(now);
       if (emulator_.busy() || !out.empty()) last_activity_s_ = now;
+      if (byte_s_ > 0) {
+        paced_out.Push(out, now, byte_s_);
+        out = paced_out.Take(now);
+        if (!paced_in.bytes.empty() || !paced_out.bytes.empty()) last_activity_s_ = now;
+      }
     }
     if (hangup) {
       connected = false;

@@ -12,39 +12,6 @@
 #include "paint.h"
 
 namespace armmimic::synth {
-namespace {
-
-uint64_t Mix(uint64_t seed, uint64_t salt) {
-  uint64_t z = seed * 0x9E3779B97F4A7C15ULL + salt * 0xBF58476D1CE4E5B9ULL + 0x94D049BB133111EBULL;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  return z ^ (z >> 31);
-}
-
-cv::Vec3f Clamp255(const cv::Vec3f& c) {
-  return {std::clamp(c[0], 0.0f, 255.0f), std::clamp(c[1], 0.0f, 255.0f),
-          std::clamp(c[2], 0.0f, 255.0f)};
-}
-
-Texture MakeTexture(cv::RNG& rng, float amplitude, double blur) {
-  Texture t;
-  t.noise.create(64, 64, CV_32FC1);
-  rng.fill(t.noise, cv::RNG::NORMAL, 0, 1);
-  if (blur > 0) {
-    // Blur a 3x3 tiling and keep the centre tile, so the texture stays tileable.
-    cv::Mat tiled;
-    cv::repeat(t.noise, 3, 3, tiled);
-    cv::GaussianBlur(tiled, tiled, cv::Size(), blur, blur);
-    tiled(cv::Rect(64, 64, 64, 64)).copyTo(t.noise);
-  }
-  cv::Scalar mean, sd;
-  cv::meanStdDev(t.noise, mean, sd);
-  t.noise = (t.noise - mean[0]) / std::max(1e-6, sd[0]);
-  t.amplitude = amplitude;
-  return t;
-}
-
-}  // namespace
 
 const char* ArmMotionName(ArmMotion m) {
   switch (m) {
@@ -443,7 +410,11 @@ ArmSceneRenderer::ArmSceneRenderer(const ArmSceneOptions& options)
 ArmSceneRenderer::~ArmSceneRenderer() = default;
 
 const ArmSceneOptions& ArmSceneRenderer::options() const { return impl_->opt; }
-int ArmSceneRenderer::frame_count() const { return impl_->opt.frame_count(); }
+cv::Size ArmSceneRenderer::size() const { return impl_->opt.size; }
+double ArmSceneRenderer::fps() const { return impl_->opt.fps; }
+int ArmSceneRenderer::background_frames() const { return impl_->opt.background_frames; }
+int ArmSceneRenderer::standstill_frames() const { return impl_->opt.standstill_frames; }
+int ArmSceneRenderer::motion_frames() const { return impl_->opt.motion_frames; }
 
 ArmTruth ArmSceneRenderer::Truth(int frame) const {
   const bool person = frame >= impl_->opt.background_frames;

@@ -1,4 +1,5 @@
-// WriteArmScene: the scene folder (scene.avi, armlength.png, background.png, truth.tsv).
+// The scene folder (scene.avi, armlength.png, background.png, truth.tsv) of any arm scene, and
+// WriteArmScene for the fixed room.
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
@@ -31,25 +32,24 @@ class TempGuard {
 
 }  // namespace
 
-Status WriteArmScene(const ArmSceneOptions& options, const std::string& outdir,
-                     const std::function<void(int, int)>& progress) {
-  Status st = options.Check();
-  if (!st.ok()) return st;
+Status WriteSceneFolder(const ArmSceneSource& scene, const SceneVideo& video, const AngleMeta& meta,
+                        const std::string& outdir, const std::function<void(int, int)>& progress,
+                        const std::atomic<bool>* cancel) {
   std::error_code ec;
   std::filesystem::create_directories(outdir, ec);
   if (ec || !std::filesystem::is_directory(outdir)) {
     return Status::Error(outdir + ": cannot create the output folder" +
                          (ec ? " (" + ec.message() + ")" : std::string(" (not a folder)")));
   }
-  const ArmSceneRenderer renderer(options);
   const std::string video_path = outdir + "/scene.avi";
   const std::string temp_path =
       outdir + "/.scene." + std::to_string(static_cast<long>(::getpid())) + ".tmp.avi";
   TempGuard guard(temp_path);
   {
-    const std::string& c = options.codec;
+    const std::string& c = video.codec;
+    if (c.size() != 4) return Status::Error("codec '" + c + "' is not a four-character code");
     int api = cv::CAP_FFMPEG;
-    if (c == "MJPG" && options.jpeg_quality > 0) {
+    if (c == "MJPG" && video.jpeg_quality > 0) {
       // An explicit quality needs OpenCV's own MJPEG writer, which honours it (FFmpeg's does
       // not; it gives about half the size at the same fidelity, so it is the default).
       api = cv::CAP_OPENCV_MJPEG;
@@ -58,7 +58,7 @@ Status WriteArmScene(const ArmSceneOptions& options, const std::string& outdir,
     cv::VideoWriter writer;
     auto open = [&](int backend) {
       try {
-        writer.open(temp_path, backend, fourcc, options.fps, options.size);
+        writer.open(temp_path, backend, fourcc, scene.fps(), scene.size());
       } catch (const cv::Exception&) {
         writer.release();
       }
@@ -67,51 +67,36 @@ Status WriteArmScene(const ArmSceneOptions& options, const std::string& outdir,
     if (!writer.isOpened() && c == "MJPG" && api != cv::CAP_OPENCV_MJPEG) {
       open(cv::CAP_OPENCV_MJPEG);  // always built in
     }
-    if (writer.isOpened() && c == "MJPG" && options.jpeg_quality > 0) {
-      writer.set(cv::VIDEOWRITER_PROP_QUALITY, options.jpeg_quality);
+    if (writer.isOpened() && c == "MJPG" && video.jpeg_quality > 0) {
+      writer.set(cv::VIDEOWRITER_PROP_QUALITY, video.jpeg_quality);
     }
     if (!writer.isOpened()) {
       return Status::Error(video_path + ": codec " + c +
                            " has no encoder for AVI in this OpenCV build (try --codec MJPG)");
     }
-    const int n = renderer.frame_count();
+    const int n = scene.frame_count();
     for (int f = 0; f < n; ++f) {
-      writer.write(renderer.Render(f));
+      if (cancel && cancel->load()) {
+        return Status::Error(outdir + ": cancelled after " + std::to_string(f) +
+                             " frames; nothing written");
+      }
+      writer.write(scene.Render(f));
       if (progress) progress(f + 1, n);
     }
     writer.release();
   }
   std::error_code size_ec;
   if (std::filesystem::file_size(temp_path, size_ec) == 0 || size_ec) {
-    return Status::Error(video_path + ": the " + options.codec + " encoder wrote no data");
+    return Status::Error(video_path + ": the " + video.codec + " encoder wrote no data");
   }
-  ArmTruth arm_truth;
-  const cv::Mat arm_length = renderer.ArmLengthImage(&arm_truth);
-  st = WriteImageAtomically(outdir + "/armlength.png", arm_length);
+  Status st = WriteImageAtomically(outdir + "/armlength.png", scene.ArmLengthImage());
   if (!st.ok()) return st;
-  st = WriteImageAtomically(outdir + "/background.png", renderer.EmptyBackground());
+  st = WriteImageAtomically(outdir + "/background.png", scene.EmptyBackground());
   if (!st.ok()) return st;
 
   TruthFile truth;
-  truth.meta = {{"scene", "arm"},
-                {"seed", std::to_string(options.seed)},
-                {"width", std::to_string(options.size.width)},
-                {"height", std::to_string(options.size.height)},
-                {"fps", Num(options.fps, 3)},
-                {"background_frames", std::to_string(options.background_frames)},
-                {"standstill_frames", std::to_string(options.standstill_frames)},
-                {"motion_frames", std::to_string(options.motion_frames)},
-                {"motion", ArmMotionName(options.motion)},
-                {"side", ArmSideName(options.side)},
-                {"noise", Num(options.noise_sigma, 2)},
-                {"codec", options.codec},
-                {"contrast", Num(options.clothing_contrast, 2)},
-                {"drift", Num(options.lighting_drift, 3)},
-                {"shadow", options.shadow ? "yes" : "no"},
-                {"head_motion", options.head_motion ? "yes" : "no"},
-                {"upper_length_px", Num(renderer.upper_length_px(), 2)},
-                {"fore_length_px", Num(renderer.fore_length_px(), 2)}};
-  for (int f = 0; f < renderer.frame_count(); ++f) truth.rows.push_back(renderer.Truth(f).ToRow());
+  truth.meta = meta;
+  for (int f = 0; f < scene.frame_count(); ++f) truth.rows.push_back(scene.Truth(f).ToRow());
   st = WriteTruthFile(outdir + "/truth.tsv", truth);
   if (!st.ok()) return st;
   // The video last, so a complete scene.avi means a complete folder.
@@ -120,6 +105,34 @@ Status WriteArmScene(const ArmSceneOptions& options, const std::string& outdir,
   }
   guard.Release();
   return Status::Ok();
+}
+
+Status WriteArmScene(const ArmSceneOptions& options, const std::string& outdir,
+                     const std::function<void(int, int)>& progress,
+                     const std::atomic<bool>* cancel) {
+  const Status st = options.Check();
+  if (!st.ok()) return st;
+  const ArmSceneRenderer renderer(options);
+  const AngleMeta meta = {{"scene", "arm"},
+                          {"seed", std::to_string(options.seed)},
+                          {"width", std::to_string(options.size.width)},
+                          {"height", std::to_string(options.size.height)},
+                          {"fps", Num(options.fps, 3)},
+                          {"background_frames", std::to_string(options.background_frames)},
+                          {"standstill_frames", std::to_string(options.standstill_frames)},
+                          {"motion_frames", std::to_string(options.motion_frames)},
+                          {"motion", ArmMotionName(options.motion)},
+                          {"side", ArmSideName(options.side)},
+                          {"noise", Num(options.noise_sigma, 2)},
+                          {"codec", options.codec},
+                          {"contrast", Num(options.clothing_contrast, 2)},
+                          {"drift", Num(options.lighting_drift, 3)},
+                          {"shadow", options.shadow ? "yes" : "no"},
+                          {"head_motion", options.head_motion ? "yes" : "no"},
+                          {"upper_length_px", Num(renderer.upper_length_px(), 2)},
+                          {"fore_length_px", Num(renderer.fore_length_px(), 2)}};
+  return WriteSceneFolder(renderer, {options.codec, options.jpeg_quality}, meta, outdir, progress,
+                          cancel);
 }
 
 }  // namespace armmimic::synth

@@ -290,13 +290,18 @@ cv::Mat MarkerSceneRenderer::Reference(MarkerTruth* truth) const {
 }
 
 Status WriteMarkerScene(const MarkerSceneOptions& options, const std::string& outdir,
-                        const std::function<void(int, int)>& progress) {
+                        const std::function<void(int, int)>& progress,
+                        const std::atomic<bool>* cancel) {
   const Status st = options.Check();
   if (!st) return st;
   std::error_code ec;
   const std::filesystem::path root(outdir);
   std::filesystem::create_directories(root / "views", ec);
   if (ec) return Status::Error(outdir + ": cannot create the folder: " + ec.message());
+  // An old truth.tsv would describe views this run replaces: without one the folder says that
+  // it is not a whole scene until the new one is written, last.
+  std::filesystem::remove(root / "truth.tsv", ec);
+  if (ec) return Status::Error(outdir + "/truth.tsv: cannot replace: " + ec.message());
   const MarkerSceneRenderer scene(options);
   Status ws = WriteImageAtomically((root / "reference.png").string(), scene.Reference());
   if (!ws) return ws;
@@ -318,6 +323,10 @@ Status WriteMarkerScene(const MarkerSceneOptions& options, const std::string& ou
                 {"views", "views"}};
   truth.extra_columns.assign(std::begin(kMarkerTruthExtra), std::end(kMarkerTruthExtra));
   for (int i = 0; i < options.views; ++i) {
+    if (cancel && cancel->load()) {
+      return Status::Error(outdir + ": cancelled after " + std::to_string(i) +
+                           " views; no truth.tsv written");
+    }
     MarkerTruth t;
     const cv::Mat image = scene.Render(i, &t);
     ws = WriteImageAtomically((root / "views" / t.file).string(), image);

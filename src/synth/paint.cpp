@@ -143,6 +143,36 @@ void PaintBody(Layer* layer, const std::vector<cv::Point2d>& polygon, double axi
   }
 }
 
+uint64_t Mix(uint64_t seed, uint64_t salt) {
+  uint64_t z = seed * 0x9E3779B97F4A7C15ULL + salt * 0xBF58476D1CE4E5B9ULL + 0x94D049BB133111EBULL;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31);
+}
+
+cv::Vec3f Clamp255(const cv::Vec3f& c) {
+  return {std::clamp(c[0], 0.0f, 255.0f), std::clamp(c[1], 0.0f, 255.0f),
+          std::clamp(c[2], 0.0f, 255.0f)};
+}
+
+Texture MakeTexture(cv::RNG& rng, float amplitude, double blur) {
+  Texture t;
+  t.noise.create(64, 64, CV_32FC1);
+  rng.fill(t.noise, cv::RNG::NORMAL, 0, 1);
+  if (blur > 0) {
+    // Blur a 3x3 tiling and keep the centre tile, so the texture stays tileable.
+    cv::Mat tiled;
+    cv::repeat(t.noise, 3, 3, tiled);
+    cv::GaussianBlur(tiled, tiled, cv::Size(), blur, blur);
+    tiled(cv::Rect(64, 64, 64, 64)).copyTo(t.noise);
+  }
+  cv::Scalar mean, sd;
+  cv::meanStdDev(t.noise, mean, sd);
+  t.noise = (t.noise - mean[0]) / std::max(1e-6, sd[0]);
+  t.amplitude = amplitude;
+  return t;
+}
+
 void Over(const Layer& layer, cv::Mat* dst) {
   CV_Assert(dst->type() == CV_32FC3 && layer.color.size() == dst->size());
   if (layer.alpha.empty()) {

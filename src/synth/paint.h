@@ -2,6 +2,7 @@
 // scenes. Private to the synth layer.
 #pragma once
 
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -46,5 +47,13 @@ void PaintBody(Layer* layer, const std::vector<cv::Point2d>& polygon, double axi
 
 // dst = layer over dst (dst opaque CV_32FC3).
 void Over(const Layer& layer, cv::Mat* dst);
+
+// A tileable noise texture with the given relative amplitude, blurred by `blur` pixels.
+Texture MakeTexture(cv::RNG& rng, float amplitude, double blur);
+
+// A 64-bit mix of a seed and a salt (splitmix64 finaliser): independent random streams.
+uint64_t Mix(uint64_t seed, uint64_t salt);
+
+cv::Vec3f Clamp255(const cv::Vec3f& c);
 
 }  // namespace armmimic::synth

@@ -39,6 +39,9 @@ class Accumulator {
 
 bool Both(double a, double b) { return std::isfinite(a) && std::isfinite(b); }
 
+// An error that was not measured counts as none.
+double Finite(double err) { return std::isfinite(err) ? err : 0.0; }
+
 std::string Fmt(double v, int decimals = 2) {
   if (!std::isfinite(v)) return "-";
   char buf[64];
@@ -125,8 +128,18 @@ ScoreReport ScoreAngles(const TruthFile& truth, const AngleFile& angles) {
   for (const AngleRow& r : angles.rows) {
     if (!truth_frames.count(r.frame)) ++sum.unmatched_rows;
   }
+  for (const ScoreRow& r : report.rows) {
+    if (!r.ok) continue;
+    const double worst = sum.has_directions ? std::max(Finite(r.err_upper), Finite(r.err_fore))
+                                            : std::max(Finite(r.err_yaw), Finite(r.err_bend));
+    if (worst > kConfidentlyWrongDeg) ++sum.confidently_wrong_frames;
+  }
   sum.coverage =
       sum.matched_frames > 0 ? static_cast<double>(sum.ok_frames) / sum.matched_frames : kNaN;
+  sum.confidently_wrong_rate =
+      sum.matched_frames > 0
+          ? static_cast<double>(sum.confidently_wrong_frames) / sum.matched_frames
+          : kNaN;
   sum.upper = upper.Stats();
   sum.fore = fore.Stats();
   sum.overall = overall.Stats();
@@ -185,7 +198,11 @@ std::string FormatScoreSummary(const ScoreReport& report) {
   out += "  coverage: " +
          (std::isfinite(s.coverage)
               ? Fmt(100.0 * s.coverage, 1) + "% (" + std::to_string(s.ok_frames) + "/" +
-                    std::to_string(s.matched_frames) + " rows ok)"
+                    std::to_string(s.matched_frames) +
+                    " rows ok); confidently wrong: " + Fmt(100.0 * s.confidently_wrong_rate, 1) +
+                    "% (" + std::to_string(s.confidently_wrong_frames) + "/" +
+                    std::to_string(s.matched_frames) + " rows ok with an error over " +
+                    Fmt(kConfidentlyWrongDeg, 0) + " degrees)"
               : std::string("- (no truth frame has a row)")) +
          "\n";
   if (s.has_directions) {

@@ -75,9 +75,7 @@ Status ParseTruthFile(std::istream& in, const std::string& source_name, TruthFil
     }
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (!have_magic) {
-      if (line_no == 1 && line.size() >= 3 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) {
-        line.erase(0, 3);
-      }
+      if (line_no == 1) StripUtf8Bom(&line);
       if (line != kTruthFileMagic) {
         return Status::Error(Where(source_name, line_no) + "not a truth file (expected the line '" +
                              std::string(kTruthFileMagic) + "')");

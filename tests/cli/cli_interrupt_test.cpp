@@ -1,11 +1,9 @@
 // Nothing lost on output: armmimic-cli is started as a child process, interrupted mid-run
-// (SIGINT, SIGKILL) or fed a video that breaks mid-stream, and the output left behind is either
-// the complete previous file or a complete (possibly complete=no) new one, never half.
-#include <fcntl.h>
+// (SIGINT, SIGTERM, SIGHUP, SIGKILL) or fed a video that breaks mid-stream, and the output left
+// behind is either the complete previous file or a complete (possibly complete=no) new one,
+// never half, with no temporary beside it.
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <filesystem>
@@ -16,8 +14,6 @@
 #include "armmimic/core/angle_file.h"
 #include "armmimic/synth/arm_scene.h"
 #include "test_util.h"
-
-extern char** environ;
 
 namespace armmimic {
 namespace {
@@ -53,69 +49,16 @@ const std::string& LongScene() {
 }
 
 // armmimic-cli running in the background, its stderr going to a file.
-class Child {
+class Child : public test::Child {
  public:
-  Child(const std::vector<std::string>& args, const std::string& err_path) {
-    posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&fa, 2, err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    std::vector<std::string> argv_s = {ARMMIMIC_CLI_PATH};
-    argv_s.insert(argv_s.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (auto& a : argv_s) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    // The child gets SIGINT's default action and no blocked signals, whatever this process
-    // inherited (a shell starts background jobs with SIGINT ignored).
-    posix_spawnattr_t attr;
-    posix_spawnattr_init(&attr);
-    sigset_t defaults, none;
-    sigemptyset(&defaults);
-    sigaddset(&defaults, SIGINT);
-    sigaddset(&defaults, SIGTERM);
-    sigemptyset(&none);
-    posix_spawnattr_setsigdefault(&attr, &defaults);
-    posix_spawnattr_setsigmask(&attr, &none);
-    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
-    const int rc = posix_spawn(&pid_, ARMMIMIC_CLI_PATH, &fa, &attr, argv.data(), environ);
-    posix_spawnattr_destroy(&attr);
-    posix_spawn_file_actions_destroy(&fa);
-    if (rc != 0) pid_ = -1;
-  }
-  ~Child() {
-    if (pid_ > 0 && !done_) {
-      kill(pid_, SIGKILL);
-      Wait();
-    }
-  }
-  bool started() const { return pid_ > 0; }
-  // True once the process has ended (reaps it).
-  bool Exited() {
-    if (done_) return true;
-    int status = 0;
-    if (waitpid(pid_, &status, WNOHANG) == pid_) {
-      done_ = true;
-      status_ = status;
-    }
-    return done_;
-  }
-  int Wait() {
-    if (!done_) {
-      int status = 0;
-      waitpid(pid_, &status, 0);
-      status_ = status;
-      done_ = true;
-    }
-    return status_;
-  }
-  void Signal(int sig) { kill(pid_, sig); }
-  pid_t pid() const { return pid_; }
+  Child(const std::vector<std::string>& args, const std::string& err_path)
+      : test::Child(WithCli(args), "/dev/null", err_path) {}
 
  private:
-  pid_t pid_ = -1;
-  bool done_ = false;
-  int status_ = 0;
+  static std::vector<std::string> WithCli(std::vector<std::string> args) {
+    args.insert(args.begin(), ARMMIMIC_CLI_PATH);
+    return args;
+  }
 };
 
 // The temporary AtomicFile makes beside `target` (".<name>.XXXXXX"), if any.
@@ -126,6 +69,13 @@ std::string TempBeside(const std::string& target) {
     if (e.path().filename().string().rfind(prefix, 0) == 0) return e.path().string();
   }
   return "";
+}
+
+// True once a temporary of `target` holds data (rows have been flushed).
+bool TempHasData(const std::string& target) {
+  const std::string temp = TempBeside(target);
+  std::error_code ec;
+  return !temp.empty() && fs::file_size(temp, ec) > 0 && !ec;
 }
 
 // Polls until `ready()` or the child ends or 20 s pass. Returns whether `ready()` held.
@@ -186,43 +136,44 @@ void ExpectConsecutiveRows(const AngleFile& angles) {
   }
 }
 
-TEST(CliInterrupt, CtrlCDuringAnalyzeKeepsTheRowsInAFileMarkedIncomplete) {
-  test::TempDir dir;
-  const std::string out = dir.file("angles.tsv");
-  Child child(AnalyzeArgs(out), dir.file("err.txt"));
-  ASSERT_TRUE(child.started());
-  // Wait until rows have reached the temporary (the first buffer flush), then interrupt.
-  std::string temp;
-  ASSERT_TRUE(PollUntil(child,
-                        [&] {
-                          temp = TempBeside(out);
-                          std::error_code ec;
-                          return !temp.empty() && fs::file_size(temp, ec) > 0 && !ec;
-                        }))
-      << "analyze ended or wrote nothing before it could be interrupted: "
-      << test::ReadFile(dir.file("err.txt"));
-  child.Signal(SIGINT);
-  const int status = child.Wait();
-  const std::string err = test::ReadFile(dir.file("err.txt"));
-  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status) << ": " << err;
-  EXPECT_EQ(WEXITSTATUS(status), 1) << err;
-  EXPECT_TRUE(Contains(err, "interrupted")) << err;
-  EXPECT_TRUE(Contains(err, out)) << err;
-  EXPECT_TRUE(Contains(err, "complete=no")) << err;
-  AngleFile angles;
-  const Status st = ReadAngleFile(out, &angles);
-  ASSERT_TRUE(st.ok()) << st.message();
-  EXPECT_FALSE(angles.complete);
-  EXPECT_EQ(angles.Meta("complete"), "no");
-  EXPECT_GT(angles.rows.size(), 0u);
-  EXPECT_LT(angles.rows.size(), static_cast<std::size_t>(kMotionFrames));
-  ExpectConsecutiveRows(angles);
-  EXPECT_TRUE(TempBeside(out).empty()) << "temporary left: " << TempBeside(out);
-  // The message's row count is the file's.
-  EXPECT_TRUE(Contains(err, std::to_string(angles.rows.size()) + " rows kept")) << err;
-  // An incomplete file is still a valid input for the next step.
-  const test::CliResult plan = test::RunCli({"plan", out, "-o", dir.file("p.val")});
-  EXPECT_EQ(plan.exit_code, 0) << plan.err;
+// Ctrl-C, SIGTERM (timeout, systemd, GNU parallel, Slurm) and SIGHUP (a closed terminal) all
+// keep the rows, and the message says which signal came.
+TEST(CliInterrupt, EverySignalDuringAnalyzeKeepsTheRowsInAFileMarkedIncomplete) {
+  for (const auto& [sig, name] : {std::pair<int, std::string>{SIGINT, "SIGINT, Ctrl-C"},
+                                  {SIGTERM, "SIGTERM"},
+                                  {SIGHUP, "SIGHUP"}}) {
+    SCOPED_TRACE(name);
+    test::TempDir dir;
+    const std::string out = dir.file("angles.tsv");
+    Child child(AnalyzeArgs(out), dir.file("err.txt"));
+    ASSERT_TRUE(child.started());
+    // Wait until rows have reached the temporary (the first buffer flush), then interrupt.
+    ASSERT_TRUE(PollUntil(child, [&] { return TempHasData(out); }))
+        << "analyze ended or wrote nothing before it could be interrupted: "
+        << test::ReadFile(dir.file("err.txt"));
+    child.Signal(sig);
+    const int status = child.Wait();
+    const std::string err = test::ReadFile(dir.file("err.txt"));
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status) << ": " << err;
+    EXPECT_EQ(WEXITSTATUS(status), 1) << err;
+    EXPECT_TRUE(Contains(err, "interrupted (" + name + ")")) << err;
+    EXPECT_TRUE(Contains(err, out)) << err;
+    EXPECT_TRUE(Contains(err, "complete=no")) << err;
+    AngleFile angles;
+    const Status st = ReadAngleFile(out, &angles);
+    ASSERT_TRUE(st.ok()) << st.message();
+    EXPECT_FALSE(angles.complete);
+    EXPECT_EQ(angles.Meta("complete"), "no");
+    EXPECT_GT(angles.rows.size(), 0u);
+    EXPECT_LT(angles.rows.size(), static_cast<std::size_t>(kMotionFrames));
+    ExpectConsecutiveRows(angles);
+    EXPECT_TRUE(TempBeside(out).empty()) << "temporary left: " << TempBeside(out);
+    // The message's row count is the file's.
+    EXPECT_TRUE(Contains(err, std::to_string(angles.rows.size()) + " rows kept")) << err;
+    // An incomplete file is still a valid input for the next step.
+    const test::CliResult plan = test::RunCli({"plan", out, "-o", dir.file("p.val")});
+    EXPECT_EQ(plan.exit_code, 0) << plan.err;
+  }
 }
 
 TEST(CliInterrupt, CtrlCBeforeAnyRowReplacesAnEarlierFileOnlyWithAValidOne) {
@@ -257,41 +208,39 @@ TEST(CliInterrupt, KilledAnalyzeLeavesThePreviousFileWhole) {
   test::WriteFile(out, PreviousAngles());
   Child child(AnalyzeArgs(out), dir.file("err.txt"));
   ASSERT_TRUE(child.started());
-  ASSERT_TRUE(PollUntil(child, [&] {
-    const std::string temp = TempBeside(out);
-    std::error_code ec;
-    return !temp.empty() && fs::file_size(temp, ec) > 0 && !ec;
-  })) << test::ReadFile(dir.file("err.txt"));
+  ASSERT_TRUE(PollUntil(child, [&] { return TempHasData(out); }))
+      << test::ReadFile(dir.file("err.txt"));
   child.Signal(SIGKILL);  // no handler runs: only the rename can protect the file
   const int status = child.Wait();
   ASSERT_TRUE(WIFSIGNALED(status));
   EXPECT_EQ(test::ReadFile(out), PreviousAngles());
 }
 
-TEST(CliInterrupt, CtrlCDuringBackgroundLeavesThePreviousImageWhole) {
-  test::TempDir dir;
-  const std::string out = dir.file("bg.png");
-  const std::string old_png = test::ReadFile(LongScene() + "/background.png");
-  test::WriteFile(out, old_png);
-  Child child({"--no-progress", "background", LongScene() + "/scene.avi", "-o", out, "--frames",
-               std::to_string(kBackgroundFrames + kStandstillFrames + kMotionFrames)},
-              dir.file("err.txt"));
-  ASSERT_TRUE(child.started());
-  ASSERT_TRUE(PollUntil(child, [&] { return HasOpen(child.pid(), LongScene() + "/scene.avi"); }))
-      << test::ReadFile(dir.file("err.txt"));
-  child.Signal(SIGINT);
-  const int status = child.Wait();
-  const std::string err = test::ReadFile(dir.file("err.txt"));
-  // Either the command ends itself (exit 1) or SIGINT's default action ends it; never exit 0
-  // with a mean of only some frames presented as the whole.
-  if (WIFEXITED(status)) {
+TEST(CliInterrupt, CtrlCOrSigtermDuringBackgroundLeavesThePreviousImageWhole) {
+  for (const auto& [sig, name] :
+       {std::pair<int, std::string>{SIGINT, "SIGINT, Ctrl-C"}, {SIGTERM, "SIGTERM"}}) {
+    SCOPED_TRACE(name);
+    test::TempDir dir;
+    const std::string out = dir.file("bg.png");
+    const std::string old_png = test::ReadFile(LongScene() + "/background.png");
+    test::WriteFile(out, old_png);
+    Child child({"--no-progress", "background", LongScene() + "/scene.avi", "-o", out, "--frames",
+                 std::to_string(kBackgroundFrames + kStandstillFrames + kMotionFrames)},
+                dir.file("err.txt"));
+    ASSERT_TRUE(child.started());
+    ASSERT_TRUE(PollUntil(child, [&] { return HasOpen(child.pid(), LongScene() + "/scene.avi"); }))
+        << test::ReadFile(dir.file("err.txt"));
+    child.Signal(sig);
+    const int status = child.Wait();
+    const std::string err = test::ReadFile(dir.file("err.txt"));
+    // Never exit 0 with a mean of only some frames presented as the whole.
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status) << ": " << err;
     EXPECT_EQ(WEXITSTATUS(status), 1) << err;
-    EXPECT_TRUE(Contains(err, "interrupted") || Contains(err, out)) << err;
-  } else {
-    EXPECT_EQ(WTERMSIG(status), SIGINT);
+    EXPECT_TRUE(Contains(err, "interrupted (" + name + ")")) << err;
+    EXPECT_TRUE(Contains(err, out + " not written")) << err;
+    EXPECT_EQ(test::ReadFile(out), old_png);
+    EXPECT_TRUE(TempBeside(out).empty()) << "temporary left: " << TempBeside(out);
   }
-  EXPECT_EQ(test::ReadFile(out), old_png);
-  EXPECT_TRUE(TempBeside(out).empty()) << "temporary left: " << TempBeside(out);
 }
 
 TEST(CliInterrupt, VideoDamagedMidStreamKeepsOutputWholeAndNamesTheFrame) {
@@ -338,6 +287,83 @@ TEST(CliInterrupt, FailedPlanLeavesThePreviousProgramWhole) {
   EXPECT_TRUE(Contains(r.err, bad + ":6")) << r.err;
   EXPECT_EQ(test::ReadFile(val), old_val);
   EXPECT_TRUE(TempBeside(val).empty());
+}
+
+TEST(CliInterrupt, SighupDuringSynthLeavesNoPartialVideo) {
+  test::TempDir dir;
+  const std::string out = dir.file("scene");
+  Child child({"--no-progress", "synth", "arm", out, "--frames", "3000", "--size", "320x240"},
+              dir.file("err.txt"));
+  ASSERT_TRUE(child.started());
+  // Wait for the video's temporary (".scene.<pid>.tmp.avi") to hold frames.
+  auto temp_video = [&] {
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(out, ec)) {
+      const std::string name = e.path().filename().string();
+      if (name.rfind(".scene.", 0) == 0 && fs::file_size(e.path(), ec) > 0) return true;
+    }
+    return false;
+  };
+  ASSERT_TRUE(PollUntil(child, temp_video)) << test::ReadFile(dir.file("err.txt"));
+  child.Signal(SIGHUP);
+  const int status = child.Wait();
+  const std::string err = test::ReadFile(dir.file("err.txt"));
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status) << ": " << err;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << err;
+  EXPECT_TRUE(Contains(err, "interrupted (SIGHUP)")) << err;
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(out)) left.push_back(e.path().filename().string());
+  EXPECT_TRUE(left.empty()) << "left in the scene folder: " << left.front();
+}
+
+TEST(CliInterrupt, SigtermStopsABatchAfterKeepingTheCurrentRowsAndWritesTheSummary) {
+  test::TempDir dir;
+  const std::string out_dir = dir.file("out");
+  std::vector<std::string> args = AnalyzeArgs("");
+  // analyze VIDEO VIDEO2 --output-dir DIR instead of -o.
+  args.erase(args.begin() + 3, args.begin() + 5);
+  const std::string second = dir.file("second.avi");
+  test::WriteFile(second, test::ReadFile(LongScene() + "/scene.avi"));
+  args.insert(args.begin() + 3, {second, "--output-dir", out_dir});
+  Child child(args, dir.file("err.txt"));
+  ASSERT_TRUE(child.started());
+  const std::string first_out = out_dir + "/scene.tsv";
+  ASSERT_TRUE(PollUntil(child, [&] {
+    std::error_code ec;
+    return fs::is_directory(out_dir, ec) && TempHasData(first_out);
+  })) << test::ReadFile(dir.file("err.txt"));
+  child.Signal(SIGTERM);
+  const int status = child.Wait();
+  const std::string err = test::ReadFile(dir.file("err.txt"));
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status) << ": " << err;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << err;
+  AngleFile angles;
+  ASSERT_TRUE(ReadAngleFile(first_out, &angles).ok());
+  EXPECT_FALSE(angles.complete);
+  ExpectConsecutiveRows(angles);
+  EXPECT_FALSE(fs::exists(out_dir + "/second.tsv"));
+  const std::string summary = test::ReadFile(out_dir + "/summary.tsv");
+  EXPECT_TRUE(Contains(summary, "\t" + std::to_string(angles.rows.size()) + "\t")) << summary;
+  EXPECT_TRUE(Contains(summary, "\tinterrupted\tinterrupted (SIGTERM)")) << summary;
+  EXPECT_TRUE(
+      Contains(summary, second + "\t" + out_dir + "/second.tsv\t0\t0\t0\tnan\tnan\tskipped"))
+      << summary;
+  EXPECT_TRUE(TempBeside(first_out).empty());
+  EXPECT_TRUE(TempBeside(out_dir + "/summary.tsv").empty());
+}
+
+TEST(CliInterrupt, PumaSimStopsCleanlyOnSighup) {
+  test::TempDir dir;
+  Child child({"puma-sim", "--link", dir.file("puma")}, dir.file("err.txt"));
+  ASSERT_TRUE(child.started());
+  ASSERT_TRUE(PollUntil(child, [&] {
+    std::error_code ec;
+    return fs::is_symlink(dir.file("puma"), ec);
+  })) << test::ReadFile(dir.file("err.txt"));
+  child.Signal(SIGHUP);
+  const int status = child.Wait();
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 0) << test::ReadFile(dir.file("err.txt"));
 }
 
 }  // namespace

@@ -168,5 +168,35 @@ TEST(CliPlan, UsageAndFileErrorsNameTheFlagOrFile) {
   EXPECT_NE(help.out.find("--cutoff HZ"), std::string::npos);
 }
 
+// A spreadsheet saves the angle file with a byte order mark and CRLF line ends: plan reads it
+// as it reads the original, and send still recognises it as an angle file (not a VAL program).
+TEST(CliPlan, AnAngleFileSavedWithAByteOrderMarkAndCrlfPlansTheSame) {
+  test::TempDir dir;
+  WriteRecording(dir.file("rec.tsv"));
+  std::string crlf = "\xEF\xBB\xBF";
+  for (char c : test::ReadFile(dir.file("rec.tsv")))
+    crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  test::WriteFile(dir.file("saved.tsv"), crlf);
+  test::CliResult a = test::RunCli({"-q", "plan", dir.file("rec.tsv"), "-o", dir.file("a.val")});
+  test::CliResult b = test::RunCli({"-q", "plan", dir.file("saved.tsv"), "-o", dir.file("b.val")});
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  std::string va = test::ReadFile(dir.file("a.val")), vb = test::ReadFile(dir.file("b.val"));
+  // The header names its source file; the program lines are the same.
+  ASSERT_NE(va.find("rec.tsv"), std::string::npos);
+  for (std::string* v : {&va, &vb}) {
+    std::istringstream in(*v);
+    std::string kept;
+    for (std::string line; std::getline(in, line);) {
+      if (line.find(".tsv") == std::string::npos) kept += line + "\n";
+    }
+    *v = kept;
+  }
+  EXPECT_EQ(va, vb);
+  const test::CliResult dry = test::RunCli({"send", dir.file("saved.tsv"), "--dry-run"});
+  EXPECT_EQ(dry.exit_code, 0) << dry.err;
+  EXPECT_NE(dry.out.find("DO MOVE #PPOINT("), std::string::npos) << dry.out;
+}
+
 }  // namespace
 }  // namespace armmimic

@@ -194,5 +194,35 @@ TEST(CliSend, PumaSimFaultFlagsReachTheEmulator) {
   EXPECT_NE(sim.Stop().find("moves executed: 1"), std::string::npos);
 }
 
+// SIGTERM (a service manager or a batch scheduler stopping the send) stops the stream as Ctrl-C
+// does, and the message names the signal that came.
+TEST(CliSend, SigtermStopsTheStreamAndTheMessageNamesIt) {
+  test::TempDir dir;
+  std::string program = "; armmimic VAL program v1\nSPEED 50\n";
+  for (int i = 0; i < 20; ++i) {
+    program += "; t=" + std::to_string(i) + ".000\nDO MOVE #PPOINT(" + (i % 2 ? "30" : "0") +
+               ".00,-90.00,0.00,0.00,0.00,0.00)\n";
+  }
+  test::WriteFile(dir.file("p.val"), program);
+  SimProcess sim({"--time-scale", "1"});  // real time: each 30-degree move takes a while
+  test::Child send({ARMMIMIC_CLI_PATH, "send", dir.file("p.val"), "--port", sim.device()},
+                   dir.file("out.txt"), dir.file("err.txt"));
+  ASSERT_TRUE(send.started());
+  // Once the first move is acknowledged, the stream is under way.
+  for (int i = 0; i < 4000 && !send.Exited(); ++i) {
+    if (test::ReadFile(dir.file("p.val.journal")).find("\nack 2 ") != std::string::npos) break;
+    usleep(5000);
+  }
+  ASSERT_FALSE(send.Exited()) << test::ReadFile(dir.file("err.txt"));
+  send.Signal(SIGTERM);
+  const int status = send.Wait();
+  const std::string err = test::ReadFile(dir.file("err.txt"));
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status) << ": " << err;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << err;
+  EXPECT_NE(err.find("interrupted (SIGTERM)"), std::string::npos) << err;
+  EXPECT_EQ(err.find("Ctrl-C"), std::string::npos) << err;
+  EXPECT_EQ(test::ReadFile(dir.file("p.val.journal")).find("\ndone"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace armmimic

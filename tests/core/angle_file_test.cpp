@@ -65,11 +65,35 @@ TEST(AngleFile, RoundTripKeepsEveryValue) {
 }
 
 TEST(AngleFile, WritesDotDecimalsUnderACommaLocale) {
-  const char* old = std::setlocale(LC_ALL, nullptr);
-  const std::string saved = old ? old : "C";
-  if (!std::setlocale(LC_NUMERIC, "de_DE.UTF-8")) GTEST_SKIP() << "no de_DE locale here";
-  EXPECT_EQ(FormatNumber(-12.5, 3), "-12.500");
-  std::setlocale(LC_ALL, saved.c_str());
+  test::TempDir dir;
+  const std::string path = dir.file("angles.tsv");
+  std::string written;
+  AngleFile back;
+  Status read;
+  {
+    const test::CommaDecimalLocale comma;
+    ASSERT_TRUE(comma.active()) << comma.c_error();
+    EXPECT_EQ(FormatNumber(-12.5, 3), "-12.500");
+    AngleFileWriter w;
+    ASSERT_TRUE(w.Open(path, {{"engine", "lk"}, {"fps", "29.97"}}, false).ok());
+    AngleRow r;
+    r.frame = 7;
+    r.time_s = 0.2336;
+    r.status = RowStatus::kOk;
+    r.upper_deg = -12.5;
+    r.fore_deg = 1234.5 / 10;
+    r.upper_cx = 1234.25;
+    ASSERT_TRUE(w.Write(r).ok());
+    ASSERT_TRUE(w.Commit().ok());
+    written = test::ReadFile(path);
+    read = ReadAngleFile(path, &back);
+  }
+  EXPECT_NE(written.find("7\t0.2336\tok\t-12.500\t123.450\tnan\tnan\t1234.25\t"), std::string::npos)
+      << written;
+  ASSERT_TRUE(read.ok()) << read.message();
+  ASSERT_EQ(back.rows.size(), 1u);
+  EXPECT_DOUBLE_EQ(back.rows[0].upper_deg, -12.5);
+  EXPECT_DOUBLE_EQ(back.rows[0].upper_cx, 1234.25);
 }
 
 TEST(AngleFile, FormatNumberNeverWritesNegativeZero) {
@@ -213,6 +237,33 @@ TEST(AngleFile, WriterNamesMissingDirectory) {
   const Status st = w.Open("/nonexistent-dir/a.tsv", {}, false);
   ASSERT_FALSE(st.ok());
   EXPECT_NE(st.message().find("/nonexistent-dir"), std::string::npos);
+}
+
+// A spreadsheet saves with a UTF-8 byte order mark and CRLF line ends: both are read.
+TEST(AngleFile, ReadsAByteOrderMarkAndCrlfLineEnds) {
+  const std::string text = "\xEF\xBB\xBF# armmimic angles v1\r\n# engine=lk source=v.avi\r\n" +
+                           std::string(kHeader) + "\r\n" +
+                           "3\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t7\r\n" +
+                           "4\t0.2\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\r\n";
+  AngleFile f;
+  const Status st = Parse(text, &f);
+  ASSERT_TRUE(st.ok()) << st.message();
+  EXPECT_EQ(f.Meta("engine"), "lk");
+  EXPECT_EQ(f.Meta("source"), "v.avi");
+  ASSERT_EQ(f.rows.size(), 2u);
+  EXPECT_DOUBLE_EQ(f.rows[0].fore_cy, 7);
+  EXPECT_FALSE(f.rows[1].ok());
+  // A file without the magic line may start with the header itself, after the mark.
+  ASSERT_TRUE(
+      Parse("\xEF\xBB\xBF" + std::string(kHeader) + "\n3\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t7\n", &f)
+          .ok());
+  // Only at the start of the file: elsewhere the bytes are an error that names the line.
+  const Status late = Parse(std::string(kHeader) +
+                                "\n\xEF\xBB\xBF"
+                                "3\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t7\n",
+                            &f);
+  ASSERT_FALSE(late.ok());
+  EXPECT_NE(late.message().find("a.tsv:2:"), std::string::npos) << late.message();
 }
 
 }  // namespace

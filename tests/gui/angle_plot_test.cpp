@@ -9,6 +9,7 @@
 #include <QTest>
 
 #include "angle_plot.h"
+#include "armmimic/core/angle_file.h"
 #include "gui_fixture.h"
 #include "result_store.h"
 
@@ -103,6 +104,143 @@ TEST_F(AnglePlotTest, YawIsListedOnlyForEnginesThatMeasureIt) {
   EXPECT_FALSE(Texts(plot).contains("yaw"));
   plot.setResults(ArmRows(12));
   EXPECT_TRUE(plot.yawShown());
+}
+
+// 21 frames at 30 fps, upper arm 30°, forearm 60°, frames 10, 17 and 19 lost (18 alone between
+// two lost ones) and yaw measured only on frames 0..4 (a straight arm) and 15..20.
+gui::ResultStore RowsWithALostFrame() {
+  gui::ResultStore store;
+  for (int f = 0; f <= 20; ++f) {
+    ArmMeasurement m;
+    m.frame = f;
+    m.time_s = f / 30.0;
+    m.phase = (f == 10 || f == 17 || f == 19) ? MeasurementPhase::kLost : MeasurementPhase::kOk;
+    m.upper_deg = 30;
+    m.fore_deg = 60;
+    m.yaw_deg = (f < 5 || f >= 15) ? 20 : kNaN;
+    store.add(m);
+  }
+  return store;
+}
+
+class PlotOnScreen : public AnglePlotTest {
+ protected:
+  void SetUp() override {
+    AnglePlotTest::SetUp();
+    plot_.setFrameRange(21, 30);
+    plot_.resize(800, 400);
+    plot_.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&plot_));
+    plot_.setResults(RowsWithALostFrame());
+    QTest::qWait(20);
+  }
+  // The widget position of (frame, degrees).
+  QPoint At(double frame, double deg) const {
+    const QPointF value(plot_.timeAxis() ? frame / 30.0 : frame, deg);
+    return plot_.mapFromScene(plot_.chart()->mapToScene(plot_.chart()->mapToPosition(value)));
+  }
+  AnglePlot plot_;
+};
+
+TEST_F(PlotOnScreen, ALostFrameLeavesAGap) {
+  EXPECT_EQ(plot_.runs(gui::PlotCurve::kUpper),
+            (std::vector<std::pair<int, int>>{{0, 9}, {11, 16}, {18, 18}, {20, 20}}));
+  EXPECT_EQ(plot_.runs(gui::PlotCurve::kYaw),
+            (std::vector<std::pair<int, int>>{{0, 4}, {15, 16}, {18, 18}, {20, 20}}));
+  EXPECT_EQ(plot_.lostCount(), 3);
+  EXPECT_EQ(plot_.pointCount(), 18);
+  // On screen: the upper-arm line crosses frame 5 at 30 degrees and does not cross frame 10.
+  const QImage shot = plot_.grab().toImage();
+  auto line_near = [&](double frame) {
+    const QPoint p = At(frame, 30);
+    for (int dy = -2; dy <= 2; ++dy) {
+      const QColor c = shot.pixelColor(p.x(), p.y() + dy);
+      if (c.red() > 180 && c.green() > 120 && c.green() < 190 && c.blue() < 60) return true;
+    }
+    return false;
+  };
+  EXPECT_TRUE(line_near(5));
+  EXPECT_TRUE(line_near(15));
+  EXPECT_TRUE(line_near(18));  // a lone measured frame still shows, as a dot
+  EXPECT_FALSE(line_near(17.4));
+  EXPECT_FALSE(line_near(10));
+  EXPECT_FALSE(line_near(9.5));
+  EXPECT_FALSE(line_near(10.5));
+  // The lost frame is shaded red from top to bottom.
+  const QColor band = shot.pixelColor(At(10, 100));
+  EXPECT_GT(band.red(), band.green() + 20);
+}
+
+TEST_F(PlotOnScreen, HoveringReadsOutFrameTimeAndValues) {
+  QString readout;
+  QObject::connect(&plot_, &AnglePlot::hovered, [&](const QString& t) { readout = t; });
+  QTest::mouseMove(plot_.viewport(), At(12, 0));
+  ASSERT_TRUE(WaitUntil([&] { return !readout.isEmpty(); }, 2000));
+  EXPECT_TRUE(readout.startsWith("frame 12 · 0.400 s")) << readout.toStdString();
+  EXPECT_TRUE(readout.contains(QString("upper 30.0") + QChar(0x00B0))) << readout.toStdString();
+  EXPECT_TRUE(readout.contains(QString("yaw ") + QChar(0x2014))) << readout.toStdString();
+  QTest::mouseMove(plot_.viewport(), At(10, 0));
+  ASSERT_TRUE(WaitUntil([&] { return readout.startsWith("frame 10"); }, 2000));
+  EXPECT_TRUE(readout.endsWith("lost")) << readout.toStdString();
+}
+
+TEST_F(PlotOnScreen, DraggingWithTheRightButtonZoomsAndADoubleClickResets) {
+  QTest::mousePress(plot_.viewport(), Qt::RightButton, Qt::NoModifier, At(4, 90));
+  QTest::mouseMove(plot_.viewport(), At(10, 40));
+  QTest::mouseRelease(plot_.viewport(), Qt::RightButton, Qt::NoModifier, At(16, 0));
+  ASSERT_TRUE(plot_.isZoomed());
+  const auto [first, last] = plot_.visibleFrames();
+  EXPECT_NEAR(first, 4, 1);
+  EXPECT_NEAR(last, 16, 1);
+  const auto [low, high] = plot_.visibleDegrees();
+  EXPECT_NEAR(low, 0, 2);
+  EXPECT_NEAR(high, 90, 2);
+  // A left click still seeks, zoomed or not.
+  int clicked = -1;
+  QObject::connect(&plot_, &AnglePlot::frameClicked, [&](int f) { clicked = f; });
+  QTest::mouseClick(plot_.viewport(), Qt::LeftButton, Qt::NoModifier, At(8, 45));
+  EXPECT_EQ(clicked, 8);
+  QTest::mouseDClick(plot_.viewport(), Qt::LeftButton, Qt::NoModifier, At(8, 45));
+  EXPECT_FALSE(plot_.isZoomed());
+  EXPECT_EQ(plot_.visibleFrames(), std::make_pair(0, 20));
+  EXPECT_EQ(plot_.visibleDegrees(), std::make_pair(-180.0, 180.0));
+}
+
+TEST_F(PlotOnScreen, TheAxisShowsFramesOrSeconds) {
+  EXPECT_TRUE(plot_.canShowTime());
+  plot_.setTimeAxis(true);
+  EXPECT_TRUE(Texts(plot_).contains("time (s)"));
+  EXPECT_DOUBLE_EQ(plot_.frameTickStep(), 0.2);  // 0.667 s in about six labels
+  EXPECT_EQ(plot_.visibleFrames(), std::make_pair(0, 20));
+  int clicked = -1;
+  QObject::connect(&plot_, &AnglePlot::frameClicked, [&](int f) { clicked = f; });
+  QTest::mouseClick(plot_.viewport(), Qt::LeftButton, Qt::NoModifier, At(15, 0));
+  EXPECT_EQ(clicked, 15);  // clicks still seek to frames
+  plot_.setTimeAxis(false);
+  EXPECT_TRUE(Texts(plot_).contains("frame"));
+  // Still images have no time axis.
+  plot_.setFrameRange(21, 0);
+  EXPECT_FALSE(plot_.canShowTime());
+  plot_.setTimeAxis(true);
+  EXPECT_FALSE(plot_.timeAxis());
+}
+
+TEST_F(PlotOnScreen, SavesItselfAsPngAndSvgAndItsRangeAsRows) {
+  const QString png = QString::fromStdString(tmp_.file("plot.png"));
+  const QString svg = QString::fromStdString(tmp_.file("plot.svg"));
+  ASSERT_EQ(plot_.saveImage(png), QString());
+  ASSERT_EQ(plot_.saveImage(svg), QString());
+  const QImage image(png);
+  EXPECT_EQ(image.size(), plot_.viewport()->size() * 2);
+  const std::string text = ReadFile(svg.toStdString());
+  EXPECT_NE(text.find("<svg"), std::string::npos);
+  EXPECT_NE(text.find("upper arm"), std::string::npos);  // the legend, as text
+  EXPECT_NE(plot_.saveImage("/nonexistent-folder/plot.png").indexOf("/nonexistent-folder"), -1);
+  plot_.zoomTo(8, 12, -180, 180);
+  const std::vector<AngleRow> rows = plot_.visibleRows();
+  ASSERT_EQ(rows.size(), 5u);
+  EXPECT_EQ(rows.front().frame, 8);
+  EXPECT_FALSE(rows[2].ok());  // frame 10, lost, is a row of its own
 }
 
 }  // namespace

@@ -207,18 +207,7 @@ TEST_F(CameraCaptureTest, AMissingCameraIsReportedOnceWithoutADialogStorm) {
 TEST_F(CameraCaptureTest, AFailedCaptureKeepsTheOpenVideoAndItsResults) {
   const GuiScenes& s = scenes();
   MainWindow w;
-  w.show();
-  ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
-  w.openInputs({QString::fromStdString(s.video())});
-  ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen() && !w.view()->image().isNull(); }));
-  AnalysisOptions o;
-  o.background_path = s.background();
-  o.arm_length_path = s.arm_length();
-  o.start = s.background_frames;
-  o.engine.bgsub.standstill_frames = s.standstill_frames;
-  w.settingsPanel()->setOptions(o);
-  ASSERT_TRUE(w.startAnalysis());
-  ASSERT_TRUE(WaitUntil([&] { return !w.job()->isRunning(); }, 60000));
+  ShowAndAnalyze(w);
   ASSERT_EQ(w.results().rows(), s.motion_frames);
 
   w.openInputs({"camera:7"});

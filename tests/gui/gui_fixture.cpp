@@ -6,11 +6,18 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTest>
+#include <QTimer>
 #include <QWheelEvent>
 #include <QWidget>
 
+#include "analysis_job.h"
 #include "armmimic/synth/arm_scene.h"
 #include "armmimic/synth/marker_scene.h"
+#include "engine_settings_panel.h"
+#include "log_view.h"
+#include "main_window.h"
+#include "video_player.h"
+#include "video_view.h"
 
 namespace armmimic::test {
 namespace {
@@ -82,6 +89,38 @@ void GuiTest::Wheel(QWidget* w, int delta) {
     QApplication::sendEvent(target, &event);
     if (event.isAccepted()) return;
   }
+}
+
+void GuiTest::ShowAndAnalyze(gui::MainWindow& w) {
+  w.resize(1200, 800);
+  w.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+  const GuiScenes& s = scenes();
+  w.openInputs({QString::fromStdString(s.video())});
+  ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen() && !w.view()->image().isNull(); }));
+  AnalysisOptions o;
+  o.background_path = s.background();
+  o.arm_length_path = s.arm_length();
+  o.start = s.background_frames;
+  o.engine.bgsub.standstill_frames = s.standstill_frames;
+  w.settingsPanel()->setOptions(o);
+  ASSERT_TRUE(w.startAnalysis()) << w.log()->text().toStdString();
+  ASSERT_TRUE(WaitUntil([&] { return !w.job()->isRunning(); }, 60000));
+  ASSERT_FALSE(w.job()->resultPath().isEmpty()) << w.log()->text().toStdString();
+}
+
+bool GuiTest::AnswerModalWidget(const std::function<void()>& action,
+                                const std::function<bool(QWidget*)>& answer) {
+  bool shown = false;
+  QTimer poll;
+  QObject::connect(&poll, &QTimer::timeout, [&] {
+    QWidget* modal = QApplication::activeModalWidget();
+    if (modal && !shown && answer(modal)) shown = true;
+  });
+  poll.start(20);
+  action();
+  poll.stop();
+  return shown;
 }
 
 }  // namespace armmimic::test

@@ -7,10 +7,15 @@
 
 #include <gtest/gtest.h>
 #include <QString>
+#include <QWidget>
 
 class QWidget;
 
 #include "test_util.h"
+
+namespace armmimic::gui {
+class MainWindow;
+}
 
 namespace armmimic::test {
 
@@ -35,8 +40,30 @@ class GuiTest : public ::testing::Test {
   // One notch of the mouse wheel (down for negative `delta`) over the middle of `w`, delivered
   // as the window system does: to `w`, and on to its parents when `w` ignores it.
   static void Wheel(QWidget* w, int delta = 120);
+  // Shows `w` (1200 x 800), opens the arm scene and analyses it with bgsub in the thesis
+  // protocol; fails the test when any step does not happen.
+  static void ShowAndAnalyze(gui::MainWindow& w);
+  // Runs `action` while a modal dialog of class `D` it opens is answered by `answer` (called
+  // with the dialog once it shows). Returns whether the dialog showed.
+  template <typename D>
+  static bool AnswerModal(const std::function<void()>& action,
+                          const std::function<void(D*)>& answer);
 
   TempDir tmp_;
+
+ private:
+  static bool AnswerModalWidget(const std::function<void()>& action,
+                                const std::function<bool(QWidget*)>& answer);
 };
+
+template <typename D>
+bool GuiTest::AnswerModal(const std::function<void()>& action,
+                          const std::function<void(D*)>& answer) {
+  return AnswerModalWidget(action, [&](QWidget* w) {
+    D* d = qobject_cast<D*>(w);
+    if (d) answer(d);
+    return d != nullptr;
+  });
+}
 
 }  // namespace armmimic::test

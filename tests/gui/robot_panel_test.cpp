@@ -32,17 +32,7 @@ using gui::MainWindow;
 class RobotPanelTest : public GuiTest {
  protected:
   void Analyze(MainWindow& w) {
-    const GuiScenes& s = scenes();
-    w.openInputs({QString::fromStdString(s.video())});
-    ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen(); }));
-    AnalysisOptions o;
-    o.background_path = s.background();
-    o.arm_length_path = s.arm_length();
-    o.start = s.background_frames;
-    o.engine.bgsub.standstill_frames = s.standstill_frames;
-    w.settingsPanel()->setOptions(o);
-    ASSERT_TRUE(w.startAnalysis());
-    ASSERT_TRUE(WaitUntil([&] { return !w.job()->isRunning(); }, 60000));
+    ShowAndAnalyze(w);
     ASSERT_TRUE(w.robotPanel()->plan().loaded()) << w.log()->text().toStdString();
   }
 };

@@ -98,5 +98,19 @@ TEST(Profile, ShippedExampleProfileIsTheDefault) {
   EXPECT_EQ(FormatProfile(p), FormatProfile(d));
 }
 
+TEST(Profile, ReadsAByteOrderMarkAndCrlfLineEnds) {
+  for (const std::string first : {"# my controller\r\n", "prompt_timeout_s = 2.5\r\n"}) {
+    ControllerProfile p;
+    const std::string text = "\xEF\xBB\xBF" + first + "motion_timeout_s = 40\r\nmode = program\r\n";
+    const Status st = Parse(text, &p);
+    ASSERT_TRUE(st.ok()) << st.message();
+    EXPECT_EQ(p.motion_timeout_s, 40);
+    EXPECT_EQ(p.mode, SendMode::kProgram);
+    if (first[0] == 'p') {
+      EXPECT_EQ(p.prompt_timeout_s, 2.5);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace armmimic::robot

@@ -116,14 +116,15 @@ TEST(ValProgram, ProgramModeUploadsThenExecutes) {
 }
 
 TEST(ValProgram, NumbersUseDotDecimalsUnderACommaLocale) {
-  const char* old = std::setlocale(LC_ALL, nullptr);
-  const std::string saved = old ? old : "C";
-  if (!std::setlocale(LC_ALL, "de_DE.UTF-8")) GTEST_SKIP() << "no de_DE locale here";
   std::string text;
-  const Status s = FormatValProgram(Sample(), ControllerProfile(), JointLimits(), {}, &text);
+  Status s, r;
   ValProgram p;
-  const Status r = Parse(text, &p);
-  std::setlocale(LC_ALL, saved.c_str());
+  {
+    const test::CommaDecimalLocale comma;
+    ASSERT_TRUE(comma.active()) << comma.c_error();
+    s = FormatValProgram(Sample(), ControllerProfile(), JointLimits(), {}, &text);
+    r = Parse(text, &p);
+  }
   ASSERT_TRUE(s.ok());
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(p.lines[2].text, "DO MOVE #PPOINT(10.00,-100.50,-20.00,0.00,0.00,0.00)");
@@ -314,6 +315,21 @@ TEST(Limits, ParsesOverridesAndSpeedLists) {
   JointLimits bad;
   bad.min_deg[3] = 300;
   EXPECT_NE(bad.Check().message().find("J4"), std::string::npos);
+}
+
+TEST(ValProgram, ReadsAByteOrderMarkAndCrlfLineEnds) {
+  for (const std::string first : {"; armmimic VAL program v1\r\n", "SPEED 50\r\n"}) {
+    ValProgram p;
+    const std::string text =
+        "\xEF\xBB\xBF" + first + "; t=0.5\r\nDO MOVE #PPOINT(0,-90,0,0,0,0)\r\n";
+    const Status st = Parse(text, &p);
+    ASSERT_TRUE(st.ok()) << st.message();
+    EXPECT_EQ(p.lines.back().text, "DO MOVE #PPOINT(0,-90,0,0,0,0)");
+    EXPECT_DOUBLE_EQ(p.lines.back().time_s, 0.5);
+    if (first[0] == 'S') {
+      EXPECT_EQ(p.lines[0].text, "SPEED 50");
+    }
+  }
 }
 
 }  // namespace

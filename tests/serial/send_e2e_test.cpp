@@ -292,12 +292,15 @@ TEST_F(SendE2E, MissingPortIsNamed) {
 
 TEST_F(SendE2E, PermissionDeniedIsNamed) {
   // As root every device opens: the CLI then runs as nobody (setpriv).
-  if (!test::CanRunUnprivileged()) GTEST_SKIP() << "cannot drop root here (no setpriv)";
+  // setpriv is part of util-linux, which every Debian system has: a test never skips.
+  ASSERT_TRUE(test::CanRunUnprivileged()) << "cannot drop root here (no /usr/bin/setpriv)";
   chmod(dir_.path().c_str(), 0777);
   Write(MakeProgram(1));
-  const std::string locked = dir_.file("locked");
-  test::WriteFile(locked, "");
-  chmod(locked.c_str(), 0);
+  // A real terminal device that only its owner (root) may open.
+  sim::PtyServer server(Fast());
+  ASSERT_TRUE(server.Start().ok());
+  const std::string locked = server.device_path();
+  ASSERT_EQ(chmod(locked.c_str(), 0600), 0);
   const test::CliResult r =
       test::RunCliUnprivileged({"--no-progress", "send", val_, "--port", locked});
   EXPECT_EQ(r.exit_code, 1);

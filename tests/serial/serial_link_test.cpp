@@ -5,6 +5,9 @@
 #include <QEventLoop>
 #include <QStringList>
 #include <QTimer>
+#include <filesystem>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -185,6 +188,50 @@ TEST(SerialLink, SettingsAndFlagParsersNameTheFlag) {
   EXPECT_EQ(ParseParity("odd", &parity), "");
   EXPECT_EQ(parity, 'O');
   EXPECT_NE(ParseParity("mark", &parity), "");
+}
+
+// A path that is no serial device gets "not a serial port", not an ioctl error; a bare name is
+// tried as given (a file in the current folder) and under /dev, and the message names both.
+TEST(SerialLink, PathsThatAreNoSerialPortAreNamedPlainly) {
+  App();
+  test::TempDir dir;
+  test::WriteFile(dir.file("reg"), "not a port");
+  SerialLink link(robot::LinkSettings{});
+  PortSettings port;
+  port.port = "/dev/null";  // a character device, but no terminal
+  Status s = link.Open(port);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("--port /dev/null: /dev/null is not a serial port"), std::string::npos)
+      << s.message();
+  EXPECT_EQ(s.message().find("Inappropriate ioctl"), std::string::npos) << s.message();
+  port.port = dir.file("reg");
+  s = link.Open(port);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find(dir.file("reg") + " is not a serial port (it is a regular file)"),
+            std::string::npos)
+      << s.message();
+  port.port = dir.path();
+  s = link.Open(port);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("is not a serial port (it is a folder)"), std::string::npos)
+      << s.message();
+
+  const std::string cwd = std::filesystem::current_path().string();
+  ASSERT_EQ(chdir(dir.path().c_str()), 0);
+  port.port = "reg";  // a bare name: here, not /dev/reg
+  const Status bare = link.Open(port);
+  port.port = "no-such-port-here";
+  const Status missing = link.Open(port);
+  ASSERT_EQ(chdir(cwd.c_str()), 0);
+  ASSERT_FALSE(bare.ok());
+  EXPECT_NE(bare.message().find("--port reg: ./reg is not a serial port (it is a regular file)"),
+            std::string::npos)
+      << bare.message();
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.message().find("tried ./no-such-port-here and /dev/no-such-port-here"),
+            std::string::npos)
+      << missing.message();
+  EXPECT_FALSE(link.is_open());
 }
 
 }  // namespace

@@ -80,5 +80,28 @@ TEST(PtyServer, RefusesToReplaceARegularFileWithItsLink) {
   EXPECT_EQ(test::ReadFile(dir.file("precious")), "keep me");
 }
 
+TEST(PtyServer, ALineBaudRatePacesEveryByteBothWays) {
+  // At 1200 baud a byte takes 1/120 s: "SPEED 50" CR in (9 bytes), its echo CR LF and the
+  // prompt out (11 bytes) cannot come back sooner than 20 character times, 167 ms. The bound is
+  // a lower one, so a slow machine cannot break it; the answer itself is the emulator's.
+  test::TempDir dir;
+  EmulatorOptions o;
+  o.line_baud = 1200;
+  PtyServer server(o);
+  ASSERT_TRUE(server.Start(dir.file("puma")).ok());
+  const int fd = OpenRaw(dir.file("puma"));
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(write(fd, "\r", 1), 1);
+  ASSERT_NE(ReadUntil(fd, "."), "");
+  const auto t0 = std::chrono::steady_clock::now();
+  ASSERT_EQ(write(fd, "SPEED 50\r", 9), 9);
+  const std::string got = ReadUntil(fd, "SPEED 50\r\n.");
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_NE(got.find("SPEED 50\r\n."), std::string::npos) << got;
+  EXPECT_GE(s, 20 / 120.0 - 0.002);
+  close(fd);
+  server.Stop();
+}
+
 }  // namespace
 }  // namespace armmimic::sim

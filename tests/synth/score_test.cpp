@@ -76,6 +76,13 @@ TEST(Score, KnownErrorsGiveKnownSummary) {
   EXPECT_EQ(s.missing_frames, 2);
   EXPECT_EQ(s.unmatched_rows, 1);
   EXPECT_DOUBLE_EQ(s.coverage, 7.0 / 8.0);
+  // Only frame 9 (upper arm reversed) is ok and off by more than 15 degrees.
+  EXPECT_EQ(s.confidently_wrong_frames, 1);
+  EXPECT_DOUBLE_EQ(s.confidently_wrong_rate, 1.0 / 8.0);
+  EXPECT_NE(FormatScoreSummary(rep).find("coverage: 87.5% (7/8 rows ok); confidently wrong: 12.5% "
+                                         "(1/8 rows ok with an error over 15 degrees)"),
+            std::string::npos)
+      << FormatScoreSummary(rep);
   EXPECT_TRUE(s.has_directions);
   // Upper: 4,4,4,4,176,4 (frames 4,5,7,8,9,10) and 2 (frame 11).
   EXPECT_EQ(s.upper.count, 7);
@@ -128,12 +135,29 @@ TEST(Score, YawAndBendCountOnlyWhereBothSidesHaveValues) {
   EXPECT_NEAR(s.bend.mae, (3 + 0 + 142) / 3.0, 1e-9);
   EXPECT_EQ(s.upper.count, 0);
   EXPECT_DOUBLE_EQ(s.coverage, 1.0);
+  EXPECT_EQ(s.confidently_wrong_frames, 1);  // frame 2's bend
   const std::string table = FormatScoreTable(rep);
   EXPECT_NE(table.find("t_yaw"), std::string::npos);
   EXPECT_EQ(table.find("t_upper"), std::string::npos);
   const std::string summary = FormatScoreSummary(rep);
   EXPECT_NE(summary.find("yaw    : MAE 3.00"), std::string::npos) << summary;
   EXPECT_EQ(summary.find("direction error"), std::string::npos);
+}
+
+TEST(Score, ConfidentlyWrongCountsOkRowsWhoseWorseSegmentIsOffByMoreThan15Degrees) {
+  const TruthFile truth = MakeTruth();  // frames 2..11 have angles
+  AngleFile angles;
+  const double upper_off[] = {15, 15.5, 0, -20, 0, 0};
+  const double fore_off[] = {0, 0, 16, 0, 14.9, 0};
+  for (int i = 0; i < 6; ++i) {
+    const TruthRow& t = *truth.Find(2 + i);
+    angles.rows.push_back(Ok(t.frame, t.upper_deg + upper_off[i], t.fore_deg + fore_off[i]));
+  }
+  angles.rows.push_back(Lost(8));  // a lost frame is never confidently wrong
+  const ScoreSummary s = ScoreAngles(truth, angles).summary;
+  EXPECT_EQ(s.matched_frames, 7);
+  EXPECT_EQ(s.confidently_wrong_frames, 3);  // 15.5 upper, 16 fore, 20 upper
+  EXPECT_DOUBLE_EQ(s.confidently_wrong_rate, 3.0 / 7.0);
 }
 
 TEST(Score, NoMatchingRowsLeavesCoverageUnknown) {

@@ -131,5 +131,18 @@ TEST(TruthFile, FormatRejectsRowsThatDoNotMatchTheExtraColumns) {
   EXPECT_THROW(FormatTruthFile(f), std::invalid_argument);
 }
 
+TEST(TruthFile, ReadsAByteOrderMarkAndCrlfLineEnds) {
+  const std::string text = "\xEF\xBB\xBF# armmimic truth v1\r\n# scene=arm seed=3\r\n" +
+                           std::string(kHeader) + "\r\n" + Row("0") + "\r\n" + Row("1") + "\r\n";
+  TruthFile f;
+  const Status st = Parse(text, &f);
+  ASSERT_TRUE(st.ok()) << st.message();
+  ASSERT_EQ(f.rows.size(), 2u);
+  EXPECT_DOUBLE_EQ(f.rows[1].wrist_y, 181.4);
+  bool seed = false;
+  for (const auto& [k, v] : f.meta) seed = seed || (k == "seed" && v == "3");
+  EXPECT_TRUE(seed);
+}
+
 }  // namespace
 }  // namespace armmimic::synth

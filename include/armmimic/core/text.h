@@ -21,6 +21,10 @@ bool ParseFrameIndex(const std::string& field, int* out);
 // A finite number as std::from_chars reads it, with an optional leading '+', whatever the locale.
 bool ParseFiniteDouble(const std::string& text, double* out);
 
+// Removes a UTF-8 byte order mark (EF BB BF) at the start of `line`, as a spreadsheet or an
+// editor on Windows writes one at the start of a file. Every reader calls it on its first line.
+void StripUtf8Bom(std::string* line);
+
 // Removes spaces, tabs and CRs at both ends.
 std::string Trim(const std::string& text);
 

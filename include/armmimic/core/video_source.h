@@ -37,6 +37,13 @@ class VideoSource {
     return Open(std::vector<std::string>{input}, status);
   }
 
+  // Frames held in memory (CV_8UC3 BGR, all of the first one's size), read as a video named
+  // `name` at `fps`: benchmarks and tests run rendered scenes through the analysis pipeline
+  // without writing a file. Returns nullptr with *status set when there are no frames.
+  static std::unique_ptr<VideoSource> FromFrames(std::shared_ptr<const std::vector<cv::Mat>> frames,
+                                                 double fps, const std::string& name,
+                                                 Status* status);
+
   virtual const VideoInfo& info() const = 0;
   // Reads the next frame. Returns false at the end (status ok) or on a decode error (status
   // names the file and frame). Frames are CV_8UC3 BGR.

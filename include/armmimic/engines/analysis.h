@@ -4,7 +4,9 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,12 +40,26 @@ struct AnalysisOptions {
   // (tracking engines), as if given with --shoulder/--elbow/--wrist.
   bool auto_calibrate = false;
   PoseSide calibrate_side = PoseSide::kAuto;  // --side with --auto-calibrate: the person's arm
-  Status Check() const;                       // messages name the flag
+  // Where the frames come from when set, instead of VideoSource::Open(inputs): called once per
+  // pass over the input (the background estimate, the pose network's look at the start, the
+  // analysis). `inputs` still names the source. Benchmarks run rendered scenes this way
+  // (VideoSource::FromFrames).
+  std::function<std::unique_ptr<VideoSource>(Status*)> open_source;
+  // A video file is read at its own frame rate (FramePacer), as a camera delivers frames
+  // (`mimic --realtime`). Cameras and streams are live anyway; images have no rate.
+  bool realtime = false;
+  Status Check() const;  // messages name the flag
 };
 
 struct AnalysisCallbacks {
+  // Called once the input is open, before any frame is read (its size and frame rate).
+  std::function<void(const VideoInfo&)> on_open;
   // Called for every frame the engine processed (also setup frames), in order.
   std::function<void(const Frame&, const ArmMeasurement&)> on_measurement;
+  // Called for every frame of the analysis pass as soon as it is read (and, with `realtime`,
+  // due), before the engine sees it, with its capture time: when it was read, or when it was
+  // due for a paced file. Live consumers measure their latency from it.
+  std::function<void(const Frame&, std::chrono::steady_clock::time_point captured)> on_frame;
   // Progress over the frames to process: done of total (total -1 when unknown).
   std::function<void(int done, int total)> on_progress;
   // Phase text for long setup steps ("background", "standstill", "analysis").

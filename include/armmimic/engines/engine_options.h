@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "armmimic/core/status.h"
 #include "armmimic/engines/bgsub_options.h"
@@ -16,6 +17,11 @@ enum class EngineKind { kBgsub, kLk, kMarker, kPose };
 
 const char* EngineName(EngineKind kind);  // "bgsub", "lk", "marker", "pose"
 bool ParseEngineKind(const std::string& name, EngineKind* out);
+// Every engine, in the order above. A new engine joins this list, and the parsers and the
+// robustness benchmark (bench/robustness.cpp) find it here.
+const std::vector<EngineKind>& AllEngineKinds();
+// Engines that measure a human arm (all but the marker engine).
+bool IsArmEngine(EngineKind kind);
 
 struct EngineOptions {
   EngineKind kind = EngineKind::kBgsub;

@@ -53,6 +53,8 @@ struct ArmMeasurement {
 
   bool row() const { return phase != MeasurementPhase::kSetup; }
   AngleRow ToRow() const;
+  // A row of an angle file as a measurement: its angles and centres, no overlay shapes.
+  static ArmMeasurement FromRow(const AngleRow& row);
 };
 
 }  // namespace armmimic

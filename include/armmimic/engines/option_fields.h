@@ -69,6 +69,11 @@ Status SetEngineOption(const std::string& assignment, EngineOptions* o);
 // pairs that SetEngineOption reads back exactly (the angle file's header records them).
 std::vector<std::pair<std::string, std::string>> ChangedEngineOptions(const EngineOptions& o);
 
+// Every parameter of `o`'s engine, changed or not, in table order, the same way: the angle
+// file's header records them all, so `analyze --params-from` repeats a run exactly even if a
+// default changes later.
+std::vector<std::pair<std::string, std::string>> EngineOptionValues(const EngineOptions& o);
+
 // Every ENGINE.KEY=DEFAULT, one engine per paragraph, wrapped to `width` columns.
 std::string DescribeEngineOptions(int width = 78);
 

@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "armmimic/core/angles.h"
 #include "armmimic/robot/limits.h"
 #include "armmimic/robot/profile.h"
 
@@ -41,9 +42,11 @@ struct LinkLine {
   int line_no = 0;       // in the source file (for messages)
   int index = 0;         // 0-based position in the whole program (for the journal)
   double timeout_s = 5;  // how long after writing it the prompt may take
+  double time_s = kNaN;  // its planned time (the gate's speed check); NaN: untimed
 };
 
-enum class LinkState { kIdle, kWaking, kWaitingReply, kDone, kFailed };
+// kReady: an open-ended stream (StartStream) has every line acknowledged and waits for the next.
+enum class LinkState { kIdle, kWaking, kWaitingReply, kReady, kDone, kFailed };
 enum class LinkError { kNone, kControllerError, kTimeout, kNotReady, kAborted, kRefused };
 
 class LinkProtocol {
@@ -53,6 +56,17 @@ class LinkProtocol {
   // Starts: wakes the controller, then sends `lines` in order. `source_name` prefixes messages
   // ("PROGRAM.val:12: ...").
   void Start(std::vector<LinkLine> lines, const std::string& source_name, double now_s);
+  // An open-ended stream (live mimicking): wakes the controller, then sends each line given to
+  // Append() as soon as the one before it is acknowledged; with none waiting it is kReady.
+  // EndStream() lets it finish (kDone) once the last line is acknowledged.
+  void StartStream(const std::string& source_name, double now_s);
+  // Queues a line; in kReady it is written at once. May be called from the ack callback: the
+  // line then goes out right after the acknowledged one.
+  void Append(LinkLine line, double now_s);
+  void EndStream();
+  bool ready() const { return state_ == LinkState::kReady; }
+  // Lines appended and not yet written.
+  std::size_t queued() const { return lines_.size() - next_ - (written_ ? 1 : 0); }
   void OnBytes(std::string_view data, double now_s);
   void OnTick(double now_s);
   // Bytes to write to the port now (and clears them).
@@ -112,7 +126,8 @@ class LinkProtocol {
   std::string controller_text_;
   std::string source_name_;
   std::vector<LinkLine> lines_;
-  std::size_t next_ = 0;  // index into lines_ of the line in flight / to send
+  std::size_t next_ = 0;     // index into lines_ of the line in flight / to send
+  bool open_ended_ = false;  // StartStream: out of lines means kReady, not kDone
   std::string rx_;
   std::string out_;
   double deadline_s_ = 0;

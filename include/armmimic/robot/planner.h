@@ -71,6 +71,12 @@ struct PlanReport {
   std::vector<PlanIssue> warnings;  // flagged jumps, filled gaps, clamps (first few of each)
 };
 
+// The mapping used for a source of `source_kind`: `mapping` itself, or, when it follows the
+// file's kind and was left at the defaults of the other kind, that kind's defaults (keeping
+// mirror and holds; *adapted says so). A changed mapping for the other kind is refused.
+Status MappingForSource(const MappingOptions& mapping, SourceKind source_kind, MappingOptions* out,
+                        bool* adapted = nullptr);
+
 // A mapping left at the defaults of its kind follows the file's kind (DetectSourceKind), keeping
 // mirror and holds; a changed mapping for the other kind is refused.
 Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Trajectory* out,

@@ -58,6 +58,11 @@ std::string FormatJointDeg(double deg, int decimals);
 // profile's joint speeds at SPEED 100.
 int SpeedSettingFor(const JointLimits& limits, const ControllerProfile& profile);
 
+// One line of the profile's templates: the monitor SPEED line, and a stream-mode move (the
+// profile's move_template with the targets written at its decimals).
+std::string FormatSpeedLine(int speed, const ControllerProfile& profile);
+std::string FormatMoveLine(const JointArray& target_deg, const ControllerProfile& profile);
+
 // Writes a trajectory as .val text in the profile's mode. `header` lines are written as "; "
 // comments after the magic line (each "key=value ..."); the limits are added to the header.
 // Fails (naming the keyframe) when a line would exceed the profile's max_line_length or a

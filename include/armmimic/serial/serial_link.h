@@ -8,6 +8,7 @@
 #include <QSerialPort>
 #include <QTimer>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,13 @@ class SerialLink : public QObject {
   // Wakes the controller and streams `lines`. progress() follows each acknowledgement;
   // finished() comes once, when the protocol is done, failed or was cancelled.
   void Start(std::vector<robot::LinkLine> lines, const std::string& source_name);
+  // An open-ended stream (LinkProtocol::StartStream): lines given to Append() go out one at a
+  // time as each is acknowledged; EndStream() lets finished() come after the last one.
+  void StartStream(const std::string& source_name);
+  void Append(robot::LinkLine line);
+  void EndStream();
+  // Seconds on the protocol's clock (since Start/StartStream), as the protocol sees them.
+  double now_s() const { return Now(); }
   // Stops the stream (kAborted) with `reason`; nothing more is written.
   void Cancel(const std::string& reason);
   // Replaces the protocol (prompt, terminator, timeouts) for the next Start(). The protocol's
@@ -85,6 +93,8 @@ class SerialLink : public QObject {
   void portError(const QString& message);
 
  private:
+  // Resets the clock, the pause and the reports, then starts the protocol at the new time.
+  void Begin(const std::function<void(double now_s)>& start_protocol);
   void OnReadyRead();
   void OnError(QSerialPort::SerialPortError error);
   void OnTick();

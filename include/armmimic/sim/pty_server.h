@@ -49,8 +49,17 @@ class PtyServer {
  private:
   void Run();
   double Now() const;
+  // With EmulatorOptions::line_baud: bytes queued with the time each is due (in or out).
+  struct Paced {
+    std::string bytes;
+    std::vector<double> due_s;
+    double clock_s = 0;  // when the line finishes the last byte queued
+    void Push(const std::string& data, double now_s, double byte_s);
+    std::string Take(double now_s);  // the bytes due by now
+  };
 
   mutable std::mutex mutex_;
+  int line_baud_ = 0;
   PumaEmulator emulator_;
   int master_fd_ = -1;
   std::string device_path_;
@@ -61,6 +70,7 @@ class PtyServer {
   std::atomic<bool> held_{false};
   std::chrono::steady_clock::time_point start_;
   double last_activity_s_ = 0;
+  double byte_s_ = 0;  // one character time on the paced line (0: not paced)
 };
 
 }  // namespace armmimic::sim

@@ -39,6 +39,10 @@ struct EmulatorOptions {
   int silent_after = -1;
   // garble_after N: from line N+1 on, a line of noise bytes comes before every prompt.
   int garble_after = -1;
+  // PtyServer only: > 0 paces the bytes as an RS-232 line at this baud rate would (10 bits a
+  // byte, 8N1), both ways: a line reaches the controller, and its echo and prompt come back, one
+  // character time per byte, as on a real VAL terminal port. 0: the pseudo-terminal's speed.
+  int line_baud = 0;
 };
 
 // One executed motion.

@@ -4,6 +4,7 @@
 // without writing a video; WriteArmScene() also writes the scene to a folder.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -12,6 +13,7 @@
 #include <opencv2/core.hpp>
 
 #include "armmimic/core/status.h"
+#include "armmimic/synth/arm_scene_source.h"
 #include "armmimic/synth/truth_file.h"
 
 namespace armmimic::synth {
@@ -24,13 +26,8 @@ enum class ArmMotion {
   kMixed,  // smooth random poses: upper arm hanging..raised combined with elbow flexion
 };
 
-// Which side of the image the moving arm is on (as seen on screen, not the person's side).
-enum class ArmSide { kRight, kLeft };
-
 const char* ArmMotionName(ArmMotion m);  // "swing", "bend", "yaw", "mixed"
 bool ParseArmMotion(const std::string& name, ArmMotion* out);
-const char* ArmSideName(ArmSide s);  // "right", "left"
-bool ParseArmSide(const std::string& name, ArmSide* out);
 
 struct ArmSceneOptions {
   uint64_t seed = 1;
@@ -59,46 +56,28 @@ struct ArmSceneOptions {
   Status Check() const;
 };
 
-// The truth of one frame. Background frames have nan angles and positions.
-struct ArmTruth {
-  int frame = 0;
-  double time_s = 0;
-  bool person = false;  // false on the empty-background frames
-  double upper_deg = kNaN;
-  double fore_deg = kNaN;
-  double yaw_deg = kNaN;   // 0 for in-plane motion, the out-of-plane angle in yaw mode
-  double bend_deg = kNaN;  // fore - upper wrapped to (-180, 180]
-  cv::Point2d shoulder_px{kNaN, kNaN};
-  cv::Point2d elbow_px{kNaN, kNaN};  // projected (image) positions
-  cv::Point2d wrist_px{kNaN, kNaN};
-  TruthRow ToRow() const;
-};
-
-class ArmSceneRenderer {
+class ArmSceneRenderer : public ArmSceneSource {
  public:
   // Throws std::invalid_argument when options.Check() fails.
   explicit ArmSceneRenderer(const ArmSceneOptions& options);
-  ~ArmSceneRenderer();
+  ~ArmSceneRenderer() override;
   ArmSceneRenderer(const ArmSceneRenderer&) = delete;
   ArmSceneRenderer& operator=(const ArmSceneRenderer&) = delete;
 
   const ArmSceneOptions& options() const;
-  int frame_count() const;
-  // The truth of `frame` without rendering it.
-  ArmTruth Truth(int frame) const;
-  // Frame `frame` (CV_8UC3 BGR, options().size), identical for a given seed and frame whatever
-  // the order of calls. `truth` may be null.
-  cv::Mat Render(int frame, ArmTruth* truth = nullptr) const;
-  // Thesis 5.2.3: the same person and scene with the moving arm straight and horizontal
-  // (pointing away from the body) at zero yaw. `truth` may be null.
-  cv::Mat ArmLengthImage(ArmTruth* truth = nullptr) const;
-  // The empty scene without noise, lighting drift or shadow.
-  cv::Mat EmptyBackground() const;
+  cv::Size size() const override;
+  double fps() const override;
+  int background_frames() const override;
+  int standstill_frames() const override;
+  int motion_frames() const override;
+  ArmTruth Truth(int frame) const override;
+  cv::Mat Render(int frame, ArmTruth* truth = nullptr) const override;
+  cv::Mat ArmLengthImage(ArmTruth* truth = nullptr) const override;
+  cv::Mat EmptyBackground() const override;
+  double upper_length_px() const override;
+  double fore_length_px() const override;
   // Shoulder joint of the moving arm in pixels (fixed for the whole scene).
   cv::Point2d shoulder_px() const;
-  // Projected lengths of the upper arm and forearm at zero yaw, pixels (joint to joint).
-  double upper_length_px() const;
-  double fore_length_px() const;
 
  private:
   struct Impl;
@@ -107,8 +86,10 @@ class ArmSceneRenderer {
 
 // Writes scene.avi, armlength.png, background.png (the empty scene) and truth.tsv into `outdir`
 // (created if missing). Every file appears complete or not at all. `progress(done, total)` is
-// called after each video frame (may be empty).
+// called after each video frame (may be empty). When `cancel` becomes true the video is
+// dropped and nothing in `outdir` changes (the result is an error saying so).
 Status WriteArmScene(const ArmSceneOptions& options, const std::string& outdir,
-                     const std::function<void(int, int)>& progress);
+                     const std::function<void(int, int)>& progress,
+                     const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace armmimic::synth

@@ -6,6 +6,7 @@
 // the horizontal. Truth is the model's own pose, not a measurement (docs/marker.md).
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -102,8 +103,11 @@ class MarkerSceneRenderer {
 };
 
 // Writes reference.png, views/view_NNN.png and truth.tsv (with a `file` column) into `outdir`
-// (created if missing). Every file appears complete or not at all.
+// (created if missing). Every file appears complete or not at all. An earlier truth.tsv is
+// removed first and the new one written last, so a folder with a truth.tsv is a whole scene.
+// When `cancel` becomes true no further view is written (the result is an error saying so).
 Status WriteMarkerScene(const MarkerSceneOptions& options, const std::string& outdir,
-                        const std::function<void(int, int)>& progress);
+                        const std::function<void(int, int)>& progress,
+                        const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace armmimic::synth

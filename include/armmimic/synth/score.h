@@ -15,6 +15,10 @@
 
 namespace armmimic::synth {
 
+// An `ok` row whose worse segment is off by more than this many degrees is confidently wrong: a
+// wrong answer that looks like a right one.
+inline constexpr double kConfidentlyWrongDeg = 15;
+
 // One truth frame that has angles.
 struct ScoreRow {
   int frame = 0;
@@ -47,8 +51,12 @@ struct ScoreSummary {
   int missing_frames = 0;  // truth rows with angles and no row in the angle file
   int unmatched_rows = 0;  // angle rows whose frame is not a truth frame with angles
   double coverage = kNaN;  // ok_frames / matched_frames
-  ErrorStats upper, fore;  // direction errors
-  ErrorStats overall;      // upper and fore together
+  // Ok rows whose worse error exceeds kConfidentlyWrongDeg: of the upper arm and forearm
+  // directions where the truth has them (arm scenes), else of yaw and bend (marker scenes).
+  int confidently_wrong_frames = 0;
+  double confidently_wrong_rate = kNaN;            // confidently_wrong_frames / matched_frames
+  ErrorStats upper, fore;                          // direction errors
+  ErrorStats overall;                              // upper and fore together
   ErrorStats upper_axis, fore_axis, overall_axis;  // mod-180 errors
   ErrorStats yaw, bend;                            // where both sides have values
   bool has_directions = false;                     // the truth has upper/fore (arm scenes)

@@ -5,6 +5,8 @@
 #include <functional>
 
 #include <QApplication>
+#include <QChart>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
@@ -22,10 +24,16 @@
 #include <QToolButton>
 
 #include "analysis_job.h"
-#include "armmimic/synth/marker_scene.h"
+#include "angle_panel.h"
+#include "angle_plot.h"
 #include "app_actions.h"
+#include "arm_view_3d.h"
+#include "armmimic/synth/marker_scene.h"
+#include "csv_export_dialog.h"
 #include "engine_settings_panel.h"
 #include "main_window.h"
+#include "mimic_controller.h"
+#include "mimic_panel.h"
 #include "robot_panel.h"
 #include "sim_controller.h"
 #include "video_player.h"
@@ -44,6 +52,23 @@ void Shot(const QString& name) {
 }
 
 bool Wait(const std::function<bool()>& done, int ms = 60000) { return QTest::qWaitFor(done, ms); }
+
+// Runs `open` (which shows a modal dialog of type D), takes the shot `name` of the dialog and
+// closes it with `finish`.
+template <typename D>
+void ShotOfDialog(const QString& name, const std::function<void()>& open,
+                  const std::function<void(D*)>& finish) {
+  QTimer poll;
+  QObject::connect(&poll, &QTimer::timeout, [&] {
+    auto* dialog = qobject_cast<D*>(QApplication::activeModalWidget());
+    if (!dialog) return;
+    poll.stop();
+    Shot(name);
+    finish(dialog);
+  });
+  poll.start(50);
+  open();
+}
 
 }  // namespace
 
@@ -113,6 +138,19 @@ int main(int argc, char** argv) {
   Wait([&] { return w.view()->frameIndex() == 170; });
   Shot("05-overlay");
 
+  // The plot zoomed to the motion with a drag of the right button, and read under the mouse.
+  armmimic::gui::AnglePlot* plot = w.plot();
+  plot->zoomTo(95, 235, -150, 60);
+  plot->setCursorFrame(170);
+  QTest::mouseMove(
+      plot->viewport(),
+      plot->mapFromScene(plot->chart()->mapToScene(plot->chart()->mapToPosition(QPointF(150, 0)))));
+  Shot("05b-plot-zoom");
+  ShotOfDialog<armmimic::gui::CsvExportDialog>(
+      "05c-csv-export", [&] { w.actions()->exportCsv->trigger(); },
+      [](armmimic::gui::CsvExportDialog* d) { d->reject(); });
+  plot->resetZoom();
+
   w.actions()->ovContour->setChecked(true);
   w.settingsPanel()->setRoi(cv::Rect(120, 20, 190, 200));
   w.actions()->toolRoi->trigger();
@@ -123,12 +161,31 @@ int main(int argc, char** argv) {
 
   w.findChild<QDockWidget*>("robotDock")->raise();
   armmimic::gui::RobotPanel* robot = w.robotPanel();
+  // The 3-D view large: the Robot panel floated beside the window, the plan's wrist path drawn.
+  auto* robot_dock = w.findChild<QDockWidget*>("robotDock");
+  robot_dock->setFloating(true);
+  robot_dock->setGeometry(820, 60, 760, 900);
+  w.player()->seek(205);
+  Wait([&] { return w.view()->frameIndex() == 205; });
+  Shot("07d-robot-3d");
+  // A J3 limit the pose breaks: the forearm turns red, and the plan report says which frames.
+  armmimic::robot::PlannerOptions tight = robot->plannerOptions();
+  tight.limits.max_deg[2] = -80;
+  robot->setPlannerOptions(tight);
+  Shot("07e-robot-3d-limit");
+  robot->resetPlannerDefaults();
+  robot_dock->setFloating(false);
+  robot_dock->raise();
+
   robot->findChild<QTabWidget*>("robotTabs")->setCurrentIndex(1);
   robot->startSimulator(0.05);
   robot->connectTo(robot->simulator()->devicePath());
   Shot("07-robot");
   robot->findChild<QTabWidget*>("robotTabs")->setCurrentIndex(0);
   Shot("07b-plan");
+  robot->findChild<QPushButton*>("compactButton")->setChecked(true);
+  Shot("07c-compact");
+  robot->findChild<QPushButton*>("compactButton")->setChecked(false);
   robot->findChild<QTabWidget*>("robotTabs")->setCurrentIndex(1);
 
   QTimer::singleShot(800, [&] {
@@ -147,6 +204,23 @@ int main(int argc, char** argv) {
   Wait([&] { return sent; }, 300000);
   w.player()->seek(200);
   Shot("09-sent");
+
+  // Mimic live (docs/live.md): the sample video paced at its frame rate, the robot following.
+  w.findChild<QDockWidget*>("mimicDock")->raise();
+  w.resizeDocks({w.findChild<QDockWidget*>("mimicDock")}, {760}, Qt::Horizontal);
+  w.resizeDocks({w.findChild<QDockWidget*>("plotDock")}, {200}, Qt::Vertical);
+  armmimic::gui::MimicPanel* mimic = w.mimicPanel();
+  mimic->findChild<QCheckBox*>("mimicConfirm")->setChecked(true);
+  int mimic_commands = 0;
+  QObject::connect(mimic->controller(), &armmimic::gui::MimicController::commandWritten,
+                   [&](const armmimic::robot::JointArray&) { ++mimic_commands; });
+  if (mimic->startMimicking()) {
+    Wait([&] { return mimic_commands >= 8; }, 60000);
+    Shot("13-mimic-live");
+    mimic->stopMimicking();
+    Wait([&] { return !mimic->controller()->running(); }, 60000);
+  }
+  w.findChild<QDockWidget*>("robotDock")->raise();
 
   // File > Capture from camera: a camera number or a stream URL. With no camera 7 attached,
   // the failure is one line in Messages, not a dialog.
@@ -187,6 +261,9 @@ int main(int argc, char** argv) {
   w.player()->seek(4);
   Wait([&] { return w.view()->frameIndex() == 4 && w.view()->measurement().has_value(); });
   Shot("12-marker");
-  w.close();
+  // Closing with results in no exported file asks first.
+  ShotOfDialog<QMessageBox>(
+      "13-quit-unsaved", [&] { w.close(); },
+      [](QMessageBox* box) { box->button(QMessageBox::Discard)->click(); });
   return 0;
 }

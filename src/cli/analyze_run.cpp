@@ -1,0 +1,208 @@
+#include "analyze_run.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "armmimic/core/atomic_file.h"
+#include "armmimic/core/text.h"
+#include "interrupt.h"
+#include "progress.h"
+
+namespace armmimic::cli {
+namespace {
+
+std::string BaseName(std::string path) {
+  while (path.size() > 1 && path.back() == '/') path.pop_back();
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// The outcome of one analysis, for the one-line report and the summary table.
+struct Outcome {
+  Status status;
+  AnalysisSummary summary;
+  int frames_read = 0;
+};
+
+// Runs one analysis with a progress bar labelled `label`; `quiet` drops the estimate notes.
+Outcome Run(const AnalysisOptions& o, const std::string& output, const std::string& label,
+            const GlobalOptions& global) {
+  Outcome out;
+  ProgressBar bar(label, -1, global.ShowProgress());
+  AnalysisCallbacks cb;
+  cb.cancel = InterruptGuard::flag();
+  cb.on_phase = [&](const std::string& phase) { bar.SetLabel(label + " " + phase); };
+  cb.on_progress = [&](int done, int total) {
+    bar.SetTotal(total);
+    bar.Update(done);
+    out.frames_read = done;
+  };
+  cb.on_estimate = [&](const std::string& text) {
+    if (global.quiet) return;
+    bar.Finish();  // clears the bar line; the next update draws it again
+    std::cerr << "analyze: estimated: " << text << "\n";
+  };
+  out.status = AnalyzeToFile(o, output, cb, &out.summary);
+  bar.Finish();
+  return out;
+}
+
+std::string Source(const AnalysisOptions& o, const Outcome& r) {
+  return r.summary.video.path.empty() ? o.inputs[0] : r.summary.video.path;
+}
+
+// The end-of-run lines shared by both modes: the truncation warning and the rows report.
+void Report(const AnalysisOptions& o, const std::string& output, const Outcome& r,
+            const GlobalOptions& global) {
+  const AnalysisSummary& s = r.summary;
+  if (s.EndedEarly()) {
+    // Not an error (every row written is valid), but the operator must know rows stop early.
+    std::cerr << "armmimic-cli analyze: warning: " << Source(o, r) << ": the file announces "
+              << s.video.frame_count << " frames but only " << s.last_frame + 1
+              << " could be read (truncated or damaged video); the rows stop at frame "
+              << s.last_frame << "\n";
+  }
+  if (!global.quiet) {
+    char rate[64];
+    std::snprintf(rate, sizeof(rate), "%.2f s, %.0f frames/s", s.seconds,
+                  s.seconds > 0 ? r.frames_read / s.seconds : 0.0);
+    std::cerr << "analyze: " << s.frames << " rows (" << s.ok << " ok, " << s.lost << " lost) from "
+              << BaseName(Source(o, r)) << " in " << rate << " -> " << output << "\n";
+  }
+}
+
+std::string Cell(std::string text) {
+  for (char& c : text) {
+    if (c == '\t' || c == '\n' || c == '\r') c = ' ';
+  }
+  return text;
+}
+
+struct SummaryRow {
+  std::string video, angles, status = "skipped", error;
+  AnalysisSummary summary;
+};
+
+std::string SummaryText(const std::vector<SummaryRow>& rows) {
+  std::string text = "video\tangles\tframes\tok\tlost\tcoverage\tseconds\tstatus\terror\n";
+  for (const SummaryRow& r : rows) {
+    const AnalysisSummary& s = r.summary;
+    const bool ran = r.status != "skipped";
+    const double coverage = s.frames > 0 ? static_cast<double>(s.ok) / s.frames : kNaN;
+    text += Cell(r.video) + "\t" + Cell(r.angles) + "\t" + std::to_string(s.frames) + "\t" +
+            std::to_string(s.ok) + "\t" + std::to_string(s.lost) + "\t" +
+            FormatNumber(coverage, 3) + "\t" + (ran ? FormatNumber(s.seconds, 2) : "nan") + "\t" +
+            r.status + "\t" + Cell(r.error) + "\n";
+  }
+  return text;
+}
+
+}  // namespace
+
+int AnalyzeOne(const AnalysisOptions& o, const std::string& output, const GlobalOptions& global) {
+  const Outcome r = Run(o, output, "analyze", global);
+  if (!r.status) {
+    std::cerr << "armmimic-cli analyze: " << r.status.message() << "\n";
+    return kExitFailure;
+  }
+  if (r.summary.cancelled) {
+    std::cerr << "analyze: " << InterruptGuard::Message() << "; ";
+    if (r.summary.meta.empty()) {
+      std::cerr << "no row yet, " << output << " not written\n";
+    } else {
+      std::cerr << r.summary.frames << " rows kept in " << output << " (marked complete=no)\n";
+    }
+    return kExitFailure;
+  }
+  Report(o, output, r, global);
+  return kExitOk;
+}
+
+BatchPlan PlanBatch(const std::vector<std::string>& videos, const std::string& dir,
+                    const std::string& summary) {
+  BatchPlan plan;
+  plan.videos = videos;
+  const std::string folder = dir.empty() || dir.back() == '/' ? dir : dir + "/";
+  for (const std::string& v : videos) {
+    std::string name = BaseName(v);
+    const auto dot = name.find_last_of('.');
+    if (dot != std::string::npos && dot > 0) name.erase(dot);
+    plan.outputs.push_back(folder + name + ".tsv");
+  }
+  plan.summary = summary.empty() ? folder + "summary.tsv" : summary;
+  return plan;
+}
+
+int AnalyzeBatch(const AnalysisOptions& options, const BatchPlan& plan,
+                 const GlobalOptions& global) {
+  const std::size_t n = plan.videos.size();
+  std::vector<SummaryRow> rows(n);
+  int failed = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    rows[i].video = plan.videos[i];
+    rows[i].angles = plan.outputs[i];
+  }
+  for (std::size_t i = 0; i < n && !InterruptGuard::interrupted(); ++i) {
+    AnalysisOptions o = options;
+    o.inputs = {plan.videos[i]};
+    const std::string label = "[" + std::to_string(i + 1) + "/" + std::to_string(n) + "]";
+    if (!global.quiet) std::cerr << "analyze: " << label << " " << plan.videos[i] << "\n";
+    const Outcome r = Run(o, plan.outputs[i], label, global);
+    SummaryRow& row = rows[i];
+    row.summary = r.summary;
+    if (!r.status) {
+      row.status = "failed";
+      row.error = r.status.message();
+      ++failed;
+      std::cerr << "armmimic-cli analyze: " << label << " " << r.status.message() << "\n";
+    } else if (r.summary.cancelled) {
+      row.status = "interrupted";
+      row.error = InterruptGuard::Message() +
+                  (r.summary.meta.empty() ? "; not written" : "; rows kept, marked complete=no");
+      std::cerr << "analyze: " << label << " " << InterruptGuard::Message() << "; "
+                << (r.summary.meta.empty() ? plan.outputs[i] + " not written"
+                                           : std::to_string(r.summary.frames) + " rows kept in " +
+                                                 plan.outputs[i] + " (marked complete=no)")
+                << "\n";
+    } else {
+      row.status = "ok";
+      if (r.summary.EndedEarly()) row.error = "the video ended early (truncated or damaged)";
+      Report(o, plan.outputs[i], r, global);
+    }
+  }
+  const Status st = WriteFileAtomically(plan.summary, SummaryText(rows));
+  if (!st) {
+    std::cerr << "armmimic-cli analyze: " << st.message() << "\n";
+    return kExitFailure;
+  }
+  int done = 0;
+  for (const SummaryRow& r : rows) done += r.status == "ok" ? 1 : 0;
+  if (!global.quiet || done < static_cast<int>(n)) {
+    std::cerr << "analyze: " << done << " of " << n << " videos analysed";
+    if (failed > 0) std::cerr << ", " << failed << " failed";
+    if (InterruptGuard::interrupted()) std::cerr << ", " << InterruptGuard::Message();
+    std::cerr << " -> " << plan.summary << "\n";
+  }
+  return done == static_cast<int>(n) ? kExitOk : kExitFailure;
+}
+
+Status ReadVideoList(const std::string& path, std::vector<std::string>* videos) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Status::Error("--list " + path + ": cannot open");
+  std::string line;
+  int line_no = 0;
+  videos->clear();
+  while (std::getline(in, line)) {
+    if (++line_no == 1) StripUtf8Bom(&line);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const std::string entry = Trim(line);
+    if (entry.empty() || entry[0] == '#') continue;
+    videos->push_back(entry);
+  }
+  if (in.bad()) return Status::Error("--list " + path + ": read error");
+  return Status::Ok();
+}
+
+}  // namespace armmimic::cli

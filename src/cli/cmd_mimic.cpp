@@ -1,0 +1,235 @@
+// armmimic-cli mimic (VIDEO --realtime | --camera N | --stream URL) --engine E ... --port DEVICE:
+// live mimicking (docs/live.md). The analysis flags are analyze's, the mapping and limit flags
+// plan's, the port flags send's; live::MimicRun does the work, as in the desktop application.
+#include <QCoreApplication>
+#include <QTimer>
+#include <cmath>
+#include <csignal>
+#include <ctime>
+#include <iostream>
+#include <optional>
+
+#include "analysis_flags.h"
+#include "args.h"
+#include "armmimic/core/angle_file.h"
+#include "armmimic/live/mimic_run.h"
+#include "armmimic/robot/live_log.h"
+#include "armmimic/serial/serial_link.h"
+#include "command.h"
+#include "planner_flags.h"
+#include "port_flags.h"
+
+namespace armmimic::cli {
+namespace {
+
+volatile std::sig_atomic_t g_signal = 0;
+volatile std::sig_atomic_t g_signals = 0;
+extern "C" void OnMimicSignal(int sig) {
+  g_signal = sig;
+  g_signals = g_signals + 1;
+}
+
+const char* SignalName(int sig) {
+  switch (sig) {
+    case SIGINT:
+      return "SIGINT, Ctrl-C";
+    case SIGTERM:
+      return "SIGTERM";
+    case SIGHUP:
+      return "SIGHUP";
+  }
+  return "a signal";
+}
+
+int Fail(const std::string& message) {
+  std::cerr << "armmimic-cli mimic: " << message << "\n";
+  return kExitFailure;
+}
+
+// mimic-20240131-142501.tsv in the current folder.
+std::string DefaultOutput() {
+  const std::time_t now = std::time(nullptr);
+  char name[64];
+  std::strftime(name, sizeof(name), "mimic-%Y%m%d-%H%M%S.tsv", std::localtime(&now));
+  return name;
+}
+
+const char* kSynopsis =
+    "  armmimic-cli mimic (VIDEO --realtime | --camera N | --stream URL) --engine E\n"
+    "          [engine flags as analyze] (--port DEVICE | --dry-run) [-o ANGLES.tsv]\n"
+    "          [--baud 9600 ...] [--profile FILE] [--map-j1 S,O ...] [--mirror]\n"
+    "          [--cutoff HZ] [--deadband DEG] [--min-interval S] [--limits J2=MIN:MAX,...]\n"
+    "          [--speed-limit DEG/S[,...]] [--clamp] [--stale-after S]";
+
+const char* kDescription =
+    "Analyses live and streams the arm's pose to the robot as it is measured (docs/live.md).\n"
+    "Each analysed frame is planned causally with plan's mapping, limits, speed limits,\n"
+    "low-pass filter (forward only: it lags sqrt(2)/(2 pi cutoff) s, 75 ms at 3 Hz) and\n"
+    "deadband; one DO MOVE goes out whenever the controller has acknowledged the last and the\n"
+    "target moved enough. A lost frame, an impossible jump, a target outside the limits (without\n"
+    "--clamp) or no measured frame for --stale-after seconds holds the robot: it is never\n"
+    "extrapolated. Every line is checked against the limits right before it is written.\n"
+    "Writes the angle file (-o, default mimic-DATE-TIME.tsv), ANGLES.tsv.journal (every line\n"
+    "sent and acknowledged, and the last acknowledged move) and ANGLES.tsv.latency.tsv (per\n"
+    "frame: capture, analysis, planning, write and acknowledgement times), and prints a latency\n"
+    "summary. Ctrl-C or SIGTERM stops cleanly: no new command, the one in flight is acknowledged,\n"
+    "the angle file is kept (complete=no); a second one stops at once. Exit 0 when the input\n"
+    "ends, 1 when the link is lost, the controller refuses or is silent, or on an interrupt.\n";
+
+// What the flags say: the live run's options and the port.
+struct MimicSetup {
+  live::MimicOptions o;
+  serial::PortSettings port;
+  bool dry_run = false;
+  std::string output;
+};
+
+// Exactly one of VIDEO --realtime, --camera N and --stream URL, as the analysis input.
+std::optional<int> PickInput(const ArgParser& p, const std::vector<std::string>& videos,
+                             const std::string& camera, const std::string& stream_url,
+                             bool realtime, AnalysisOptions* analysis) {
+  const int sources =
+      (videos.empty() ? 0 : 1) + (camera.empty() ? 0 : 1) + (stream_url.empty() ? 0 : 1);
+  if (sources != 1) {
+    return p.UsageError(sources == 0 ? "no input: give VIDEO --realtime, --camera N or --stream URL"
+                                     : "give only one of VIDEO, --camera and --stream");
+  }
+  if (!videos.empty() && !realtime) {
+    return p.UsageError(
+        "VIDEO needs --realtime: mimic reads a file at its own frame rate, as a camera");
+  }
+  if (videos.empty() && realtime) {
+    return p.UsageError("--realtime paces a VIDEO file; a camera or stream is live already");
+  }
+  int index = 0;
+  if (!camera.empty() && (!ParseIntArg(camera, &index) || index < 0)) {
+    return p.UsageError("--camera: '" + camera + "' is not a camera number (0, 1, ...)");
+  }
+  analysis->inputs = {!videos.empty()  ? videos[0]
+                      : camera.empty() ? stream_url
+                                       : "camera:" + camera};
+  analysis->realtime = realtime;
+  return std::nullopt;
+}
+
+// Parses and checks every flag into `m`. Returns the exit code when the command must end now.
+std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* m) {
+  live::MimicOptions& o = m->o;
+  AnalysisFlags analysis_flags(&o.analysis);
+  PlannerFlags planner_flags(&o.stream.planner, true);
+  std::vector<std::string> videos;
+  std::string camera, stream_url, profile_path;
+  bool realtime = false;
+  ArgParser p("mimic", kSynopsis, kDescription + AnalysisFlags::ParamList());
+  p.Positionals(&videos, "VIDEO", 0, 1);
+  p.Flag("--realtime", &realtime, "read VIDEO at its own frame rate, as a camera delivers it");
+  p.String("--camera", &camera, "N", "analyse camera N (/dev/videoN)");
+  p.String("--stream", &stream_url, "URL", "analyse a network stream (rtsp://, http://)");
+  p.String("-o,--output", &m->output, "ANGLES.tsv",
+           "the angle file to write (default mimic-DATE-TIME.tsv)");
+  analysis_flags.Register(p);
+  AddPortFlags(p, &m->port);
+  p.Flag("--dry-run", &m->dry_run, "print the commands with their times; open no port");
+  p.String("--profile", &profile_path, "FILE", "controller profile (docs/profiles/)");
+  planner_flags.RegisterMapping(p);
+  planner_flags.RegisterFilter(p);
+  planner_flags.RegisterLimits(p);
+  p.Double("--stale-after", &o.stream.stale_after_s, "S",
+           "hold the robot when no frame was measured for this long (default 0.2)");
+  if (auto code = p.Parse(args)) return code;
+  if (auto code = PickInput(p, videos, camera, stream_url, realtime, &o.analysis)) return code;
+  if (auto code = analysis_flags.CheckEngine(p)) return code;
+  if (auto code = analysis_flags.Finish(p)) return code;
+  if (!m->dry_run && m->port.port.empty()) {
+    return p.UsageError("--port is required (or --dry-run; 'send --list-ports' lists the ports)");
+  }
+  if (const Status s = m->port.Check(); !m->dry_run && !s.ok()) return p.UsageError(s.message());
+  if (!(o.stream.stale_after_s > 0)) return p.UsageError("--stale-after must be > 0");
+  if (auto code = planner_flags.ParseTexts(p)) return code;
+  o.stream.kind = o.analysis.engine.kind == EngineKind::kMarker ? robot::SourceKind::kMarker
+                                                                : robot::SourceKind::kArm;
+  if (auto code = planner_flags.Finish(p, o.stream.kind, false)) return code;
+  if (!profile_path.empty()) {
+    const Status s = robot::ReadProfile(profile_path, &o.stream.profile);
+    if (!s.ok()) return Fail(s.message());
+  }
+  if (m->output.empty()) m->output = DefaultOutput();
+  o.angles_path = m->output;
+  o.stream.source_name = o.analysis.inputs[0];
+  o.stream.port_name = m->dry_run ? "dry-run" : m->port.port;
+  o.stream.journal_path = m->dry_run ? "" : robot::LiveJournal::PathFor(m->output);
+  o.stream.latency_path = robot::LatencyLog::PathFor(m->output);
+  if (const Status s = o.stream.Check(); !s.ok()) return p.UsageError("--profile: " + s.message());
+  return std::nullopt;
+}
+
+void Report(const live::MimicRun& run, const MimicSetup& m, const GlobalOptions& global) {
+  std::cout << "mimic: " << run.stream().Summary().Describe() << std::endl;
+  if (global.quiet) return;
+  const AnalysisSummary& a = run.analysis_summary();
+  const robot::StreamStats& st = run.stream().planner().stats();
+  std::cerr << "mimic: " << a.frames << " rows (" << a.ok << " ok, " << a.lost << " lost) in "
+            << m.output << (a.cancelled ? " (complete=no)" : "") << "; " << st.flagged_jumps
+            << " impossible jumps, " << st.limit_holds << " targets outside the limits, "
+            << st.rate_limited << " commands held back by the speed limits\n";
+  if (m.o.stream.journal_path.empty()) return;
+  const int last = run.stream().last_acked_seq();
+  std::cerr << "mimic: journal " << m.o.stream.journal_path << " (last acknowledged move: "
+            << (last > 0 ? "command " + std::to_string(last) : std::string("none"))
+            << "), latency log " << m.o.stream.latency_path << "\n";
+}
+
+int RunMimic(const std::vector<std::string>& args, const GlobalOptions& global) {
+  MimicSetup m;
+  if (auto code = ParseMimic(args, &m)) return *code;
+  int argc = 1;
+  char name[] = "armmimic-cli";
+  char* argv[] = {name, nullptr};
+  QCoreApplication app(argc, argv);
+  serial::SerialLink link(robot::LinkSettings::FromProfile(m.o.stream.profile));
+  if (!m.dry_run) {
+    const Status s = link.Open(m.port);
+    if (!s.ok()) return Fail(s.message());
+  }
+  live::MimicRun run(m.dry_run ? nullptr : &link);
+  run.SetDryWriter([](const robot::LinkLine& l) {
+    std::cout << (std::isnan(l.time_s) ? std::string("       -") : "t=" + FormatNumber(l.time_s, 3))
+              << "\t" << l.text << std::endl;
+  });
+  bool ok = false;
+  std::string message;
+  QObject::connect(&run, &live::MimicRun::finished, &app, [&](bool result, const QString& text) {
+    ok = result;
+    message = text.toStdString();
+    app.quit();
+  });
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, OnMimicSignal);
+  int stops_seen = 0;
+  QTimer poll;
+  poll.setInterval(20);
+  QObject::connect(&poll, &QTimer::timeout, &app, [&] {
+    while (stops_seen < g_signals) {
+      ++stops_seen;
+      run.Stop(std::string("interrupted (") + SignalName(g_signal) + ")");
+    }
+  });
+  poll.start();
+  if (const Status s = run.Start(m.o); !s.ok()) return Fail(s.message());
+  if (!global.quiet) {
+    std::cerr << "mimic: " << m.o.analysis.inputs[0] << " -> "
+              << (m.dry_run ? std::string("dry run (no port)") : m.port.port) << "; angles "
+              << m.output << "; Ctrl-C stops\n";
+  }
+  app.exec();
+  link.Close();
+  Report(run, m, global);
+  if (!ok) return Fail(message.empty() ? "stopped" : message);
+  return kExitOk;
+}
+
+}  // namespace
+
+ARMMIMIC_REGISTER_COMMAND(mimic, "mimic", "analyse live and stream the arm's pose to the robot", 85,
+                          RunMimic);
+
+}  // namespace armmimic::cli

@@ -1,0 +1,145 @@
+#include "planner_flags.h"
+
+#include <vector>
+
+namespace armmimic::cli {
+
+void PlannerFlags::RegisterMapping(ArgParser& p, const std::function<void()>& more) {
+  for (int j = 0; j < 3; ++j) {
+    const std::string joint = "j" + std::to_string(j + 1);
+    static const char* kHelp[3] = {
+        "J1 from yaw: sign (+1/-1) and offset in deg (default +1,0)",
+        "J2 from elevation (arm) or bend (marker): sign,offset (default -1,0; marker -1,-90)",
+        "J3 from flexion (arm; marker: held at the offset): sign,offset (default -1,0)"};
+    p.Custom("--map-" + joint, "SIGN,OFFSET", kHelp[j], [this, j](const std::string& v) {
+      map_[j].given = true;
+      return robot::ParseJointMap(v, &map_[j].map);
+    });
+  }
+  p.String("--hold", &hold_text_, "J4,J5,J6", "values J4..J6 are held at, deg (default 0,0,0)");
+  p.Flag("--mirror", &o_->mapping.mirror,
+         "the person is seen mirrored: yaw turns J1 the other way (and signed sources flip)");
+  if (more) more();
+  p.String("--j2-source", &j2_source_, "elevation|upper",
+           "arm: J2 from the folded elevation (default) or the continuous signed upper_deg");
+  p.String("--j3-source", &j3_source_, "flexion|bend",
+           "arm: J3 from the flexion |bend| (default) or the signed bend_deg");
+}
+
+void PlannerFlags::RegisterFilter(ArgParser& p, const std::function<void()>& more) {
+  if (live_) {
+    p.Double("--cutoff", &o_->cutoff_hz, "HZ",
+             "causal low-pass cutoff; lags sqrt(2)/(2 pi HZ) s; 0 = no filter (default 3)");
+    p.Double("--max-gap-s", &o_->max_gap_s, "S",
+             "after a longer run of lost frames the filter restarts (default 0.5)");
+  } else {
+    p.Double("--cutoff", &o_->cutoff_hz, "HZ",
+             "zero-phase low-pass cutoff; 0 = no filter (default 3)");
+    p.Double("--max-gap-s", &o_->max_gap_s, "S",
+             "longest run of lost frames filled in; longer refuses (default 0.5)");
+  }
+  if (more) more();
+  p.Double("--max-jump", &o_->max_jump_deg_s, "DEG/S",
+           "faster changes are impossible and flagged as lost (default 1000)");
+  p.Double("--deadband", &o_->deadband_deg, "DEG",
+           live_ ? "a new command when a joint moved more than this (default 2)"
+                 : "a new keyframe when a joint moved more than this (default 2)");
+  p.Double("--min-interval", &o_->min_interval_s, "S",
+           live_ ? "no two commands closer than this (default 0.2: at most 5 moves/s)"
+                 : "no two motion keyframes closer than this (default 0.2: at most 5 moves/s)");
+  p.Double("--max-interval", &o_->max_interval_s, "S",
+           live_ ? "a command at least this often while the target changes (default 1)"
+                 : "a keyframe at least this often (default 1)");
+}
+
+void PlannerFlags::RegisterLimits(ArgParser& p) {
+  p.String("--limits", &limits_text_, "J<n>=MIN:MAX,...",
+           "override joint limits (defaults J1 -160:160 J2 -200:20 J3 -225:45 J4 -266:266 J5 "
+           "-100:100 J6 -266:266)");
+  p.String("--speed-limit", &speed_text_, "DEG/S[,...]",
+           "joint speed limits, one value or six (default 45,45,45,90,90,90)");
+  p.Flag("--clamp", &o_->clamp,
+         live_ ? "clamp targets outside the limits instead of holding the robot"
+               : "clamp targets outside the limits (reported) instead of refusing");
+}
+
+std::optional<int> PlannerFlags::ParseTexts(const ArgParser& p) {
+  std::string err;
+  if (!limits_text_.empty() &&
+      !(err = robot::ParseLimitsOverride(limits_text_, &o_->limits)).empty()) {
+    return p.UsageError("--limits: " + err);
+  }
+  if (!speed_text_.empty() && !(err = robot::ParseSpeedLimits(speed_text_, &o_->limits)).empty()) {
+    return p.UsageError("--speed-limit: " + err);
+  }
+  if (!j2_source_.empty() && j2_source_ != "elevation" && j2_source_ != "upper") {
+    return p.UsageError("--j2-source: '" + j2_source_ + "' is not elevation or upper");
+  }
+  if (!j3_source_.empty() && j3_source_ != "flexion" && j3_source_ != "bend") {
+    return p.UsageError("--j3-source: '" + j3_source_ + "' is not flexion or bend");
+  }
+  if (!hold_text_.empty()) {
+    std::vector<double> v;
+    std::string part;
+    std::size_t start = 0;
+    while (start <= hold_text_.size()) {
+      const auto comma = hold_text_.find(',', start);
+      part =
+          hold_text_.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      double d = 0;
+      if (!ParseDoubleArg(part, &d)) {
+        return p.UsageError("--hold: '" + hold_text_ + "' is not three numbers J4,J5,J6");
+      }
+      v.push_back(d);
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+    if (v.size() != 3)
+      return p.UsageError("--hold: '" + hold_text_ + "' is not three numbers J4,J5,J6");
+    for (int j = 0; j < 3; ++j) hold_[3 + j] = v[j];
+  }
+
+  return std::nullopt;
+}
+
+std::optional<int> PlannerFlags::Finish(const ArgParser& p, robot::SourceKind kind,
+                                        bool follow_file_kind) {
+  const bool mirror = o_->mapping.mirror;
+  o_->mapping = robot::MappingOptions::Default(kind);
+  o_->mapping.mirror = mirror;
+  o_->mapping.follow_file_kind = follow_file_kind;
+  o_->mapping.hold_deg = hold_;
+  if (map_[0].given) o_->mapping.j1 = map_[0].map;
+  if (map_[1].given) o_->mapping.j2 = map_[1].map;
+  if (map_[2].given) o_->mapping.j3 = map_[2].map;
+  o_->mapping.j2_elevation = j2_source_ != "upper";
+  o_->mapping.j3_flexion = j3_source_ != "bend";
+  if (Status s = o_->Check(); !s.ok()) {
+    const std::string& m = s.message();
+    std::string flag = "--limits";
+    if (m.find("mapping") != std::string::npos || m.find("hold") != std::string::npos) {
+      flag = "--map-j*/--hold";
+    } else if (m.find("speed limit") != std::string::npos) {
+      flag = "--speed-limit";
+    } else if (m.rfind("cutoff", 0) == 0) {
+      flag = "--cutoff";
+    } else if (m.rfind("max gap", 0) == 0) {
+      flag = "--max-gap-s";
+    } else if (m.rfind("max jump", 0) == 0) {
+      flag = "--max-jump";
+    } else if (m.rfind("deadband", 0) == 0) {
+      flag = "--deadband";
+    } else if (m.rfind("min interval", 0) == 0) {
+      flag = "--min-interval";
+    } else if (m.rfind("max interval", 0) == 0) {
+      flag = "--max-interval";
+    } else if (m.rfind("fallback", 0) == 0) {
+      flag = "--fallback-fps";
+    }
+    return p.UsageError(flag + ": " + m);
+  }
+
+  return std::nullopt;
+}
+
+}  // namespace armmimic::cli

@@ -1,0 +1,46 @@
+// PlannerFlags: the mapping, filter, keyframe and limit flags `plan` and `mimic` share, parsed
+// into one robot::PlannerOptions with the same checks and messages ("the same mapping, limits,
+// speed limit, filter and deadband as plan").
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "args.h"
+#include "armmimic/robot/planner.h"
+
+namespace armmimic::cli {
+
+class PlannerFlags {
+ public:
+  // `live`: the help texts describe the causal planner of `mimic` (docs/live.md).
+  PlannerFlags(robot::PlannerOptions* options, bool live) : o_(options), live_(live) {}
+
+  // --map-j1..3, --hold, --mirror, then `more` (plan's --source), then --j2-source, --j3-source.
+  void RegisterMapping(ArgParser& p, const std::function<void()>& more = {});
+  // --cutoff, --max-gap-s, then `more` (plan's --gap), then --max-jump, --deadband,
+  // --min-interval, --max-interval.
+  void RegisterFilter(ArgParser& p, const std::function<void()>& more = {});
+  // --limits, --speed-limit, --clamp.
+  void RegisterLimits(ArgParser& p);
+
+  // After Parse: the texts of --limits, --speed-limit, --hold, --j2/j3-source. Exit code of a
+  // usage error, naming the flag.
+  std::optional<int> ParseTexts(const ArgParser& p);
+  // Sets the mapping for `kind` (its defaults, then the flags given) and checks every option.
+  std::optional<int> Finish(const ArgParser& p, robot::SourceKind kind, bool follow_file_kind);
+
+ private:
+  struct MapFlag {
+    bool given = false;
+    robot::JointMap map;
+  };
+  robot::PlannerOptions* o_;
+  bool live_;
+  MapFlag map_[3];
+  std::string limits_text_, speed_text_, hold_text_, j2_source_, j3_source_;
+  robot::JointArray hold_{};
+};
+
+}  // namespace armmimic::cli

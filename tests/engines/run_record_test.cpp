@@ -1,0 +1,129 @@
+// The run an angle file's header records (run_record.h): every engine setting and input image
+// is written, and reading it back gives the same options.
+#include "armmimic/engines/run_record.h"
+
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "armmimic/engines/option_fields.h"
+
+namespace armmimic {
+namespace {
+
+std::string Value(const AngleMeta& meta, const std::string& key) {
+  for (const auto& [k, v] : meta) {
+    if (k == key) return v;
+  }
+  return "<absent>";
+}
+
+TEST(RunRecord, WritesEverySettingOfTheEngineChangedOrNot) {
+  for (EngineKind kind :
+       {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kMarker, EngineKind::kPose}) {
+    AnalysisOptions o;
+    o.engine.kind = kind;
+    const AngleMeta meta = RunRecordMeta(o);
+    const std::string engine = EngineName(kind);
+    std::size_t fields = kind == EngineKind::kBgsub    ? BgsubOptionFields().size()
+                         : kind == EngineKind::kLk     ? LkOptionFields().size()
+                         : kind == EngineKind::kMarker ? MarkerOptionFields().size()
+                                                       : PoseOptionFields().size();
+    std::size_t found = 0;
+    for (const auto& [k, v] : meta) {
+      if (k.rfind(engine + ".", 0) == 0) ++found;
+      EXPECT_TRUE(k.find('.') == std::string::npos || k.rfind(engine + ".", 0) == 0) << k;
+    }
+    EXPECT_EQ(found, fields) << engine;
+  }
+  AnalysisOptions o;
+  EXPECT_EQ(Value(RunRecordMeta(o), "bgsub.threshold"), "45");
+  EXPECT_EQ(Value(RunRecordMeta(o), "bgsub.straight_ratio"), "0.3");
+}
+
+TEST(RunRecord, ReadingTheRecordBackGivesTheSameRun) {
+  AnalysisOptions o;
+  o.inputs = {"v.avi"};
+  o.engine.kind = EngineKind::kLk;
+  o.background_path = "my bg%.png";  // a space and a percent sign survive the meta line
+  o.start = 12;
+  o.shoulder_px = cv::Point2d(100.25, 80.125);
+  o.elbow_px = cv::Point2d(101, 120.5);
+  o.wrist_px = cv::Point2d(99.1, 160.3);
+  o.roi = cv::Rect(10, 20, 200, 150);
+  o.engine.lk.max_corners = 123;
+  o.engine.lk.quality_level = 0.0123456789;
+  o.engine.lk.side = LkArmSide::kLeft;
+  o.engine.lk.use_bar = false;
+  o.engine.lk.initial_upper_deg = -45.5;
+  o.model_dir = "/opt/models";
+  o.auto_calibrate = true;
+  o.calibrate_side = PoseSide::kLeft;
+  AngleMeta meta = {{"engine", "lk"}, {"source", "v.avi"}, {"start", "12"}};
+  for (auto& kv : RunRecordMeta(o)) meta.push_back(kv);
+  // Through the text of a header line, as a file stores it.
+  const std::string line = FormatMetaLine(meta);
+  AngleMeta parsed;
+  std::istringstream in(std::string(kAngleFileMagic) + "\n" + line + "\n" +
+                        "frame\ttime_s\tstatus\tupper_deg\tfore_deg\tyaw_deg\tbend_deg\tupper_cx\t"
+                        "upper_cy\tfore_cx\tfore_cy\n");
+  AngleFile file;
+  ASSERT_TRUE(ParseAngleFile(in, "old.tsv", &file).ok());
+  AnalysisOptions back;
+  back.inputs = {"new.avi"};
+  const Status st = RunFromMeta(file.meta, "old.tsv", &back);
+  ASSERT_TRUE(st.ok()) << st.message();
+  EXPECT_EQ(back.inputs, std::vector<std::string>{"new.avi"});  // the video is the caller's
+  EXPECT_EQ(back.engine.kind, EngineKind::kLk);
+  EXPECT_EQ(back.background_path, "my bg%.png");
+  EXPECT_EQ(back.start, 12);
+  EXPECT_EQ(*back.shoulder_px, *o.shoulder_px);
+  EXPECT_EQ(*back.elbow_px, *o.elbow_px);
+  EXPECT_EQ(*back.wrist_px, *o.wrist_px);
+  EXPECT_EQ(*back.roi, *o.roi);
+  EXPECT_EQ(back.model_dir, "/opt/models");
+  EXPECT_TRUE(back.auto_calibrate);
+  EXPECT_EQ(back.calibrate_side, PoseSide::kLeft);
+  EXPECT_EQ(back.background_frames, 0);
+  EXPECT_TRUE(back.arm_length_path.empty());
+  // Every setting, to the last bit.
+  EXPECT_EQ(EngineOptionValues(back.engine), EngineOptionValues(o.engine));
+  EXPECT_EQ(back.engine.lk.quality_level, o.engine.lk.quality_level);
+}
+
+TEST(RunRecord, AnOldHeaderWithOnlyChangedSettingsKeepsTheDefaults) {
+  AnalysisOptions back;
+  const Status st = RunFromMeta(
+      {{"engine", "bgsub"}, {"threshold", "45"}, {"bgsub.closing_size", "3"}}, "old.tsv", &back);
+  ASSERT_TRUE(st.ok()) << st.message();
+  EXPECT_EQ(back.engine.bgsub.closing_size, 3);
+  EXPECT_EQ(back.engine.bgsub.threshold, 45);
+  EXPECT_EQ(back.engine.bgsub.straight_ratio, BgsubOptions().straight_ratio);
+}
+
+TEST(RunRecord, BadRecordsNameTheFileAndTheKey) {
+  struct Case {
+    AngleMeta meta;
+    std::string expect;
+  };
+  const std::vector<Case> cases = {
+      {{{"source", "v.avi"}}, "old.tsv: the header records no engine"},
+      {{{"engine", "warp"}}, "engine=warp"},
+      {{{"engine", "bgsub"}, {"lk.max_corners", "100"}}, "lk.max_corners=100"},
+      {{{"engine", "bgsub"}, {"bgsub.threshold", "999"}}, "bgsub.threshold '999'"},
+      {{{"engine", "bgsub"}, {"bgsub.nope", "1"}}, "'bgsub.nope' is no bgsub parameter"},
+      {{{"engine", "lk"}, {"shoulder", "1;2"}}, "shoulder=1;2"},
+      {{{"engine", "lk"}, {"roi", "1,2,3"}}, "roi=1,2,3"},
+      {{{"engine", "lk"}, {"start", "-4"}}, "start=-4"},
+  };
+  for (const Case& c : cases) {
+    AnalysisOptions o;
+    const Status st = RunFromMeta(c.meta, "old.tsv", &o);
+    ASSERT_FALSE(st.ok()) << c.expect;
+    EXPECT_NE(st.message().find("old.tsv: "), std::string::npos) << st.message();
+    EXPECT_NE(st.message().find(c.expect), std::string::npos) << st.message();
+  }
+}
+
+}  // namespace
+}  // namespace armmimic
