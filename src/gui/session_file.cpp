@@ -155,8 +155,16 @@ FileKind ClassifyFile(const QString& path) {
   if (suffix == "val") return FileKind::kValProgram;
   if (suffix == kSessionSuffix) return FileKind::kSession;
   if (suffix == "json") {
+    // The keys are written in sorted order, so "format" can follow a long "angles" text:
+    // the whole document is parsed rather than its first bytes searched.
     QFile f(path);
-    if (f.open(QIODevice::ReadOnly) && f.read(4096).contains(kFormat)) return FileKind::kSession;
+    constexpr qint64 kMaxSessionBytes = 256ll << 20;
+    if (f.open(QIODevice::ReadOnly) && f.size() <= kMaxSessionBytes) {
+      const QJsonDocument doc = QJsonDocument::fromJson(f.readAll());
+      if (doc.isObject() && doc.object().value("format").toString() == kFormat) {
+        return FileKind::kSession;
+      }
+    }
   }
   return FileKind::kMedia;
 }

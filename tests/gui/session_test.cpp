@@ -290,7 +290,8 @@ TEST_F(SessionTest, DropsOpenAngleFilesProgramsAndSessions) {
   MainWindow w2;
   Show(w2);
   Drop(w2, session);
-  ASSERT_TRUE(WaitUntil([&] { return w2.player()->isOpen() && w2.results().rows() > 0; }));
+  ASSERT_TRUE(WaitUntil([&] { return w2.player()->isOpen() && w2.results().rows() > 0; }))
+      << w2.log()->text().toStdString();
   EXPECT_EQ(w2.results().rows(), w.results().rows());
 }
 
