@@ -424,7 +424,9 @@ Status AnalyzeToFile(const AnalysisOptions& options, const std::string& output_p
                      const AnalysisCallbacks& callbacks, AnalysisSummary* summary) {
   AngleFileWriter writer;
   const bool file_column = options.engine.kind == EngineKind::kMarker;
-  const bool confidence_column = options.engine.kind == EngineKind::kPose;
+  // The engines that rate their own rows (pose, lk) write the optional confidence column.
+  const bool confidence_column =
+      options.engine.kind == EngineKind::kPose || options.engine.kind == EngineKind::kLk;
   Status st = Run(
       options, callbacks,
       [&](const AngleMeta& meta) {
