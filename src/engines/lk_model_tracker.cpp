@@ -147,13 +147,10 @@ class ModelTracker : public Tracker {
     // The forearm's own margin decides only what is written: the pose is still the best one, and
     // is tracked on as before.
     double written = support;
-    if (written >= o_.min_support) {
-      const double fore_rival = arm::ForeRivalScore(evidence_, shape_, best.pose, kForeApartDeg);
-      if (fore_rival > kForeAmbiguousShare * best.score.fore.score) {
-        written = 0;
-        note = "ambiguous forearm: a direction " + FormatNumber(kForeApartDeg, 0) +
-               "+ deg away explains it as well";
-      }
+    if (written >= o_.min_support && ForeAmbiguous(best)) {
+      written = 0;
+      note = "ambiguous forearm: a direction " + FormatNumber(kForeApartDeg, 0) +
+             "+ deg away explains it as well";
     }
     note += " (score " + FormatNumber(best.score.total, 2) + " of a usual " +
             FormatNumber(typical_, 2) + ")";
@@ -180,6 +177,13 @@ class ModelTracker : public Tracker {
  private:
   static constexpr double kMinTypical = 0.1;
   static constexpr double kDefaultFrameS = 1.0 / 30;  // still images: one frame at 30 fps
+
+  // Another forearm direction, the upper arm kept, explains the image about as well as the
+  // fitted forearm: its evidence does not say where it points.
+  bool ForeAmbiguous(const arm::FitResult& best) const {
+    const double rival = arm::ForeRivalScore(evidence_, shape_, best.pose, kForeApartDeg);
+    return rival > kForeAmbiguousShare * best.score.fore.score;
+  }
 
   static double Reach(const arm::ArmShape& s) { return s.upper_px + s.fore_px + s.hand_px; }
 
