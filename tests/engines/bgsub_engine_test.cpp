@@ -92,8 +92,10 @@ TEST(BgsubEngine, StraightArmDirectionsFollowTheContract) {
     // just past the joint: the derived shoulder sits up to an arm radius inwards.
     EXPECT_NEAR(m.shoulder_px->x, kShoulder.x, 7);
     EXPECT_NEAR(m.shoulder_px->y, kShoulder.y, 3);
-    EXPECT_FALSE(m.arm_contour.empty());
-    EXPECT_FALSE(m.arm_hull.empty());
+    ASSERT_TRUE(m.wrist_px.has_value());
+    const cv::Point2d w = kShoulder + DirectionVector(deg) * (kUpper + kFore);
+    EXPECT_LT(cv::norm(*m.wrist_px - w), 12) << deg;
+    EXPECT_GT(m.confidence, 0.5) << deg;
   }
 }
 
