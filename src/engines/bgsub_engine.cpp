@@ -180,18 +180,26 @@ class BgsubEngine final : public Engine {
       return;
     }
     pixels_.Compare(frame.image(region_), evidence_.rect(), cv::Mat(), &person_, &moved_);
+    // Specks of a textured shirt moving a little (sway, noise, compression) are no arm; a moved
+    // arm is a solid region.
+    cv::morphologyEx(moved_, moved_, cv::MORPH_OPEN, kSpeckKernel);
     evidence_.Update(person_, moved_);
     const bgsub::ArmFit fit = fitter_.Fit(evidence_.weights(), evidence_.origin());
     if (!fit.found) {
       m->note = "no arm";
       return;
     }
-    const double conf = std::clamp(
-        std::min(fit.upper_support, fit.fore_support) * (1 - fit.against) / 0.5, 0.0, 1.0);
+    // Confidence: the weaker segment's support, less what speaks against the arm, 0 when the
+    // arm's surroundings look like arm too (a flooded mask: any pose there would fit).
+    const double conf =
+        fit.clutter > kMaxClutter
+            ? 0.0
+            : std::clamp(std::min(fit.upper_support, fit.fore_support) * (1 - fit.against) / 0.5,
+                         0.0, 1.0);
     std::ostringstream note;
     note.precision(2);
     note << "fit u " << fit.upper_support << " f " << fit.fore_support << " a " << fit.against
-         << " m " << fit.margin;
+         << " m " << fit.margin << " c " << fit.clutter;
     const cv::Point2d o = cv::Point2d(region_.tl()) + cv::Point2d(evidence_.window_tl());
     m->phase = MeasurementPhase::kOk;
     m->note = note.str();
@@ -264,6 +272,9 @@ class BgsubEngine final : public Engine {
     return DegFromRad(std::acos(std::min(1.0, std::max(0.0, a / b))));
   }
 
+  // The moved mask's opening, and the largest share of the arm's flanks that may look like arm.
+  inline static const cv::Mat kSpeckKernel = cv::Mat::ones(3, 3, CV_8UC1);
+  static constexpr double kMaxClutter = 0.5;
   // A bend under this many degrees is a straight arm (yaw is measured, not nan).
   static constexpr double kStraightDeg = 10;
 

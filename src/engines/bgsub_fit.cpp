@@ -54,6 +54,9 @@ std::vector<int> Peaks(const std::vector<int>& score, int half, std::size_t coun
 // Sample lines across a segment, as shares of the calibrated half-width (the forearm is a little
 // thinner than the upper arm, so the outer lines stay inside it).
 constexpr double kAcrossInner = 0.35, kAcrossOuter = 0.7;
+// The flanks: from this share of the half-width outside the segment, along its middle part (the
+// ends touch the body at the shoulder and the other segment at the elbow).
+constexpr double kFlankGap = 0.5, kFlankFrom = 0.25, kFlankTo = 0.8;
 
 int Wrap360(int deg) { return ((deg % 360) + 360) % 360; }
 
@@ -111,6 +114,23 @@ std::vector<ArmFitter::Ray> ArmFitter::MakeRays(int stride, double t0, double t1
   return rays;
 }
 
+std::vector<ArmFitter::Ray> ArmFitter::MakeFlanks(int stride, double len, double half_width) {
+  std::vector<Ray> rays(360);
+  const double gap = std::max(2.0, kFlankGap * half_width);
+  const double across[] = {-(half_width + gap), half_width + gap, -(2 * half_width + gap),
+                           2 * half_width + gap};
+  for (int k = 0; k < 360; ++k) {
+    const cv::Point2d d = DirectionVector(k), n(-d.y, d.x);
+    for (double t = kFlankFrom * len; t <= kFlankTo * len; t += 1.0) {
+      for (double a : across) {
+        const cv::Point2d p = d * t + n * a;
+        rays[static_cast<std::size_t>(k)].offsets.push_back(cvRound(p.y) * stride + cvRound(p.x));
+      }
+    }
+  }
+  return rays;
+}
+
 void ArmFitter::Begin(int stride, double upper_len, double fore_len, double half_width) {
   stride_ = stride;
   upper_len_ = upper_len;
@@ -119,6 +139,8 @@ void ArmFitter::Begin(int stride, double upper_len, double fore_len, double half
   // arm), the forearm from half a radius past the elbow to the fingertip.
   upper_ = MakeRays(stride, std::min(half_width, 0.5 * upper_len), upper_len, half_width);
   fore_ = MakeRays(stride, std::min(0.5 * half_width, 0.5 * fore_len), fore_len, half_width);
+  upper_flank_ = MakeFlanks(stride, upper_len, half_width);
+  fore_flank_ = MakeFlanks(stride, fore_len, half_width);
 }
 
 int ArmFitter::Score(const cv::Mat& weights, int from, int deg,
@@ -190,6 +212,10 @@ ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
   int upos = 0, uneg = 0, un = 0, fpos = 0, fneg = 0, fn = 0;
   Count(weights, from, best.up, upper_, &upos, &uneg, &un);
   Count(weights, e, best.fore, fore_, &fpos, &fneg, &fn);
+  int cpos = 0, cneg = 0, cn = 0;
+  Count(weights, from, best.up, upper_flank_, &cpos, &cneg, &cn);
+  Count(weights, e, best.fore, fore_flank_, &cpos, &cneg, &cn);
+  fit.clutter = cn > 0 ? static_cast<double>(cpos) / cn : 0;
   fit.found = true;
   fit.upper_deg = Wrap180(best.up);
   fit.fore_deg = Wrap180(best.fore);

@@ -43,7 +43,8 @@ struct ArmFit {
   double upper_support = 0;        // share of the upper arm's samples with weight for the arm
   double fore_support = 0;         // the same for the forearm and hand
   double against = 0;              // share of all samples with weight against the arm
-  double margin = 0;               // mean weight per sample over the best distinct other pose
+  double clutter = 0;  // share of the samples flanking both segments with weight for an arm
+  double margin = 0;   // mean weight per sample over the best distinct other pose
 };
 
 class ArmFitter {
@@ -57,6 +58,8 @@ class ArmFitter {
     std::vector<int> offsets;  // sample offsets from the ray's origin, in weights' elements
   };
   static std::vector<Ray> MakeRays(int stride, double t0, double t1, double half_width);
+  // Lines beside a segment, outside its width, over its middle part.
+  static std::vector<Ray> MakeFlanks(int stride, double len, double half_width);
   int Score(const cv::Mat& weights, int from, int deg, const std::vector<Ray>& rays) const;
   void Count(const cv::Mat& weights, int from, int deg, const std::vector<Ray>& rays, int* pos,
              int* neg, int* n) const;
@@ -64,6 +67,7 @@ class ArmFitter {
   int stride_ = 0;
   double upper_len_ = 0, fore_len_ = 0;
   std::vector<Ray> upper_, fore_;  // one per degree, 0..359 (DirectionVector)
+  std::vector<Ray> upper_flank_, fore_flank_;
 };
 
 }  // namespace armmimic::bgsub
