@@ -12,6 +12,7 @@ namespace {
 // Bits of a pixel's code: differs from the empty room, differs from the standstill, the standing
 // body of the standstill, the standstill's hanging arm.
 constexpr int kPerson = 1, kMoved = 2, kBody = 4, kRest = 8;
+constexpr int kArmNow = 2;  // the weight of the person where the standstill was not
 
 // The weight of each code.
 cv::Mat WeightTable() {
@@ -20,7 +21,7 @@ cv::Mat WeightTable() {
     const bool person = c & kPerson, moved = c & kMoved, body = c & kBody, rest = c & kRest;
     int w;
     if (person && moved) {
-      w = 2;  // the person where the standstill was not: the arm now
+      w = kArmNow;  // the person where the standstill was not: the arm now
     } else if (person) {
       w = rest || !body ? 1 : 0;  // the hanging arm unchanged; the unchanged body says nothing
     } else {
@@ -114,11 +115,11 @@ std::vector<ArmFitter::Ray> ArmFitter::MakeRays(int stride, double t0, double t1
   return rays;
 }
 
-std::vector<ArmFitter::Ray> ArmFitter::MakeFlanks(int stride, double len, double half_width) {
+std::vector<ArmFitter::Ray> ArmFitter::MakeFlanks(int stride, double len, double half_width,
+                                                  int side) {
   std::vector<Ray> rays(360);
   const double gap = std::max(2.0, kFlankGap * half_width);
-  const double across[] = {-(half_width + gap), half_width + gap, -(2 * half_width + gap),
-                           2 * half_width + gap};
+  const double across[] = {side * (half_width + gap), side * (2 * half_width + gap)};
   for (int k = 0; k < 360; ++k) {
     const cv::Point2d d = DirectionVector(k), n(-d.y, d.x);
     for (double t = kFlankFrom * len; t <= kFlankTo * len; t += 1.0) {
@@ -131,16 +132,34 @@ std::vector<ArmFitter::Ray> ArmFitter::MakeFlanks(int stride, double len, double
   return rays;
 }
 
+double ArmFitter::Clutter(const cv::Mat& weights, int from, int deg,
+                          const std::vector<Ray> (&flanks)[2]) const {
+  // Only new arm evidence (the person where the standstill was not) counts: beside an arm at
+  // rest lies the standstill's own arm or body, unchanged.
+  double clearer = 1;
+  const schar* w = weights.ptr<schar>() + from;
+  for (const std::vector<Ray>& side : flanks) {
+    const std::vector<int>& offsets = side[static_cast<std::size_t>(Wrap360(deg))].offsets;
+    int now = 0;
+    for (int off : offsets) now += w[off] >= kArmNow;
+    clearer = std::min(clearer, offsets.empty() ? 0.0 : static_cast<double>(now) / offsets.size());
+  }
+  return clearer;
+}
+
 void ArmFitter::Begin(int stride, double upper_len, double fore_len, double half_width) {
   stride_ = stride;
   upper_len_ = upper_len;
   fore_len_ = fore_len;
+  half_width_ = half_width;
   // The upper arm from one arm radius out (its first part is the shoulder, under the standstill's
   // arm), the forearm from half a radius past the elbow to the fingertip.
   upper_ = MakeRays(stride, std::min(half_width, 0.5 * upper_len), upper_len, half_width);
   fore_ = MakeRays(stride, std::min(0.5 * half_width, 0.5 * fore_len), fore_len, half_width);
-  upper_flank_ = MakeFlanks(stride, upper_len, half_width);
-  fore_flank_ = MakeFlanks(stride, fore_len, half_width);
+  for (int i = 0; i < 2; ++i) {
+    upper_flank_[i] = MakeFlanks(stride, upper_len, half_width, i == 0 ? 1 : -1);
+    fore_flank_[i] = MakeFlanks(stride, fore_len, half_width, i == 0 ? 1 : -1);
+  }
 }
 
 int ArmFitter::Score(const cv::Mat& weights, int from, int deg,
@@ -161,6 +180,14 @@ void ArmFitter::Count(const cv::Mat& weights, int from, int deg, const std::vect
   }
 }
 
+const cv::Mat& ArmFitter::WithoutUpper(const cv::Mat& weights, const cv::Point& origin,
+                                       int deg) const {
+  weights.copyTo(without_upper_);
+  const cv::Point2d elbow = cv::Point2d(origin) + DirectionVector(deg) * upper_len_;
+  cv::line(without_upper_, origin, elbow, cv::Scalar(0), 2 * static_cast<int>(half_width_) + 1);
+  return without_upper_;
+}
+
 ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
   ArmFit fit;
   if (upper_.empty() || weights.empty()) return fit;
@@ -177,9 +204,10 @@ ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
   };
   for (int u : Peaks(up, 4, 4)) {
     const int e = elbow_at(u);
+    const cv::Mat& rest = WithoutUpper(weights, origin, u);
     Pose best{u, u, std::numeric_limits<int>::min() / 2};
     for (int f = u - 160; f <= u + 160; f += 2) {
-      const int s = Score(weights, e, f, fore_);
+      const int s = Score(rest, e, f, fore_);
       if (s > best.score) best = {u, Wrap360(f), s};
     }
     best.score += up[static_cast<std::size_t>(u)];
@@ -193,9 +221,10 @@ ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
   const Pose coarse = best;
   for (int du = -1; du <= 1; ++du) {
     const int u = Wrap360(coarse.up + du), e = elbow_at(u);
+    const cv::Mat& rest = WithoutUpper(weights, origin, u);
     for (int df = -2; df <= 2; ++df) {
       const int f = Wrap360(coarse.fore + df);
-      const int s = up[static_cast<std::size_t>(u)] + Score(weights, e, f, fore_);
+      const int s = up[static_cast<std::size_t>(u)] + Score(rest, e, f, fore_);
       if (s > best.score) best = {u, f, s};
     }
   }
@@ -205,17 +234,16 @@ ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
     if (std::abs(AngleDiff(poses[i].up, best.up)) > 15) second = std::max(second, poses[i].score);
   }
   const int e = elbow_at(best.up);
+  const cv::Mat& rest = WithoutUpper(weights, origin, best.up);
   for (int f = best.up - 160; f <= best.up + 160; f += 2) {
     if (std::abs(AngleDiff(f, best.fore)) <= 15) continue;
-    second = std::max(second, up[static_cast<std::size_t>(best.up)] + Score(weights, e, f, fore_));
+    second = std::max(second, up[static_cast<std::size_t>(best.up)] + Score(rest, e, f, fore_));
   }
   int upos = 0, uneg = 0, un = 0, fpos = 0, fneg = 0, fn = 0;
   Count(weights, from, best.up, upper_, &upos, &uneg, &un);
   Count(weights, e, best.fore, fore_, &fpos, &fneg, &fn);
-  int cpos = 0, cneg = 0, cn = 0;
-  Count(weights, from, best.up, upper_flank_, &cpos, &cneg, &cn);
-  Count(weights, e, best.fore, fore_flank_, &cpos, &cneg, &cn);
-  fit.clutter = cn > 0 ? static_cast<double>(cpos) / cn : 0;
+  fit.clutter = std::max(Clutter(weights, from, best.up, upper_flank_),
+                         Clutter(weights, e, best.fore, fore_flank_));
   fit.found = true;
   fit.upper_deg = Wrap180(best.up);
   fit.fore_deg = Wrap180(best.fore);

@@ -43,8 +43,11 @@ struct ArmFit {
   double upper_support = 0;        // share of the upper arm's samples with weight for the arm
   double fore_support = 0;         // the same for the forearm and hand
   double against = 0;              // share of all samples with weight against the arm
-  double clutter = 0;  // share of the samples flanking both segments with weight for an arm
-  double margin = 0;   // mean weight per sample over the best distinct other pose
+  // The flanks of a segment (lines beside it, outside its width) with weight for an arm: the
+  // clearer side's share, of the worse segment. A folded arm covers one flank of each segment;
+  // a mask flooded by light or texture covers both.
+  double clutter = 0;
+  double margin = 0;  // mean weight per sample over the best distinct other pose
 };
 
 class ArmFitter {
@@ -58,16 +61,24 @@ class ArmFitter {
     std::vector<int> offsets;  // sample offsets from the ray's origin, in weights' elements
   };
   static std::vector<Ray> MakeRays(int stride, double t0, double t1, double half_width);
-  // Lines beside a segment, outside its width, over its middle part.
-  static std::vector<Ray> MakeFlanks(int stride, double len, double half_width);
+  // Lines beside a segment on one side (+1 left of its direction, -1 right), outside its width,
+  // over its middle part.
+  static std::vector<Ray> MakeFlanks(int stride, double len, double half_width, int side);
+  double Clutter(const cv::Mat& weights, int from, int deg,
+                 const std::vector<Ray> (&flanks)[2]) const;
   int Score(const cv::Mat& weights, int from, int deg, const std::vector<Ray>& rays) const;
   void Count(const cv::Mat& weights, int from, int deg, const std::vector<Ray>& rays, int* pos,
              int* neg, int* n) const;
 
+  // `weights` with the upper arm at `deg` cleared: the forearm is scored on what the upper arm
+  // does not already explain (a forearm folded back over it would count its pixels twice).
+  const cv::Mat& WithoutUpper(const cv::Mat& weights, const cv::Point& origin, int deg) const;
+
   int stride_ = 0;
-  double upper_len_ = 0, fore_len_ = 0;
+  double upper_len_ = 0, fore_len_ = 0, half_width_ = 0;
+  mutable cv::Mat without_upper_;  // WithoutUpper's buffer
   std::vector<Ray> upper_, fore_;  // one per degree, 0..359 (DirectionVector)
-  std::vector<Ray> upper_flank_, fore_flank_;
+  std::vector<Ray> upper_flank_[2], fore_flank_[2];
 };
 
 }  // namespace armmimic::bgsub
