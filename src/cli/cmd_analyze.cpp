@@ -59,6 +59,7 @@ constexpr const char* kDescription =
     "lk --auto-calibrate: the pose network finds the shoulder, elbow and wrist in frame F, as\n"
     "if clicked (--side names the person's own arm; default: the better seen).\n"
     "marker: one row per input image, in input order.\n"
+    "bgsub (not --thesis) follows the angles with a confidence column (0-1), as pose does.\n"
     "pose: a pose network (MoveNet) finds the person's arm in every frame from F on, with no\n"
     "background or calibration; a row is lost where the arm is not seen or a segment points at\n"
     "the camera, and a confidence column (0-1) follows the angles. --side names the person's\n"

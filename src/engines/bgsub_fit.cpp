@@ -198,6 +198,12 @@ ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
     int up, fore, score;
   };
   std::vector<Pose> poses;  // the best forearm of each upper-arm peak
+  // Of equal scores the straighter arm: a straight arm's segments can tilt within its width.
+  auto better = [](int score, int u, int f, const Pose& than) {
+    return score > than.score ||
+           (score == than.score &&
+            std::abs(AngleDiff(f, u)) < std::abs(AngleDiff(than.fore, than.up)));
+  };
   auto elbow_at = [&](int deg) {
     const cv::Point2d e = DirectionVector(deg) * upper_len_;
     return from + cvRound(e.y) * stride_ + cvRound(e.x);
@@ -208,7 +214,7 @@ ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
     Pose best{u, u, std::numeric_limits<int>::min() / 2};
     for (int f = u - 160; f <= u + 160; f += 2) {
       const int s = Score(rest, e, f, fore_);
-      if (s > best.score) best = {u, Wrap360(f), s};
+      if (better(s, u, f, best)) best = {u, Wrap360(f), s};
     }
     best.score += up[static_cast<std::size_t>(u)];
     poses.push_back(best);
@@ -225,7 +231,7 @@ ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
     for (int df = -2; df <= 2; ++df) {
       const int f = Wrap360(coarse.fore + df);
       const int s = up[static_cast<std::size_t>(u)] + Score(rest, e, f, fore_);
-      if (s > best.score) best = {u, f, s};
+      if (better(s, u, f, best)) best = {u, f, s};
     }
   }
   // The best other pose: another upper-arm peak, or another forearm from the best elbow.
