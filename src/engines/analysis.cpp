@@ -87,7 +87,7 @@ Status PreparePose(const AnalysisOptions& options, const VideoInfo& info,
     PoseSide side = options.calibrate_side;
     Status st = internal::DetectArmJointsFrom(
         [&options](Status* s) { return OpenInput(options, s); }, options.start,
-        options.calibrate_side, options.model_dir, options.engine.pose.min_score, &arm, &side);
+        options.calibrate_side, options.model_dir, options.engine.pose, &arm, &side);
     if (!st) return Status::Error("--auto-calibrate: " + st.message());
     resolved->shoulder_px = arm.shoulder;
     resolved->elbow_px = arm.elbow;

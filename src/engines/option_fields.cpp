@@ -324,6 +324,15 @@ const std::vector<OptionField<PoseOptions>>& PoseOptionFields() {
           .Main(),
       Real<P>("crop_score", &P::crop_score, 0.2, 0, 1, 2, "Crop keypoint score",
               "keypoints above this score place the next frame's crop"),
+      Real<P>("arm_crop", &P::arm_crop, 1.5, 0, 4, 2, "Arm look size",
+              "a second look through a square this many times the upper body's extent gives the "
+              "directions (0: one look)"),
+      Real<P>("max_disagreement_deg", &P::max_disagreement_deg, 15, 1, 180, 1,
+              "Maximum disagreement",
+              "a segment whose direction differs more between the looks "
+              "(degrees) is lost"),
+      Bool<P>("flip", &P::flip, false, "Mirrored look",
+              "also look at the mirrored crop and average (one more inference per frame)"),
   };
   return fields;
 }
