@@ -431,7 +431,8 @@ Status AnalyzeToFile(const AnalysisOptions& options, const std::string& output_p
   Status st = Run(
       options, callbacks,
       [&](const AngleMeta& meta) {
-        return writer.Open(output_path, meta, file_column, confidence_column);
+        return writer.Open(output_path, meta, file_column, confidence_column,
+                           /*signed_yaw_column=*/file_column);
       },
       [&](const ArmMeasurement& m) { return writer.Write(m.ToRow()); }, summary);
   if (!st) return st;
