@@ -51,6 +51,14 @@ void Shot(const QString& name) {
   std::printf("%s\n", qPrintable(path));
 }
 
+// The window as it is drawn right now, without turning the event loop: for a state that the
+// next queued events would end (the analysis running, its progress bar in the status bar).
+void ShotOfWindowNow(QWidget* window, const QString& name) {
+  const QString path = QDir(g_out).filePath(name + ".png");
+  if (!window->grab().save(path)) std::fprintf(stderr, "cannot write %s\n", qPrintable(path));
+  std::printf("%s\n", qPrintable(path));
+}
+
 bool Wait(const std::function<bool()>& done, int ms = 60000) { return QTest::qWaitFor(done, ms); }
 
 // Runs `open` (which shows a modal dialog of type D), takes the shot `name` of the dialog and
@@ -127,9 +135,10 @@ int main(int argc, char** argv) {
 
   bool mid_shot = false;
   QObject::connect(w.job(), &armmimic::gui::AnalysisJob::progress, [&](int done, int total) {
+    // Waiting here would let the queued progress and the end of the run through first.
     if (!mid_shot && total > 0 && done > total / 3) {
       mid_shot = true;
-      Shot("04-analysing");
+      ShotOfWindowNow(&w, "04-analysing");
     }
   });
   w.startAnalysis();
