@@ -48,10 +48,12 @@ ControllerSettings::ControllerSettings(Ui::RobotPanelForm& ui, QWidget* dialog_p
   ui_.flowCombo->addItem(tr("RTS/CTS (hardware)"), int(serial::FlowControl::kRtsCts));
 
   const robot::ControllerProfile builtin;
-  ui_.profileCombo->addItem(tr("Built-in (%1, %2 mode)")
-                                .arg(QString::fromStdString(builtin.name))
-                                .arg(robot::SendModeName(builtin.mode)),
+  ui_.profileCombo->addItem(tr("Built-in: %1").arg(QString::fromStdString(builtin.name)),
                             QString());
+  ui_.profileCombo->setItemData(0,
+                                tr("The built-in profile (%1 mode): docs/profiles/default.profile")
+                                    .arg(robot::SendModeName(builtin.mode)),
+                                Qt::ToolTipRole);
   for (const QString& path : InstalledProfiles()) addProfileItem(path);
   connect(ui_.profileCombo, &QComboBox::activated, this, [this](int index) {
     if (!setProfileFile(ui_.profileCombo->itemData(index).toString())) {
