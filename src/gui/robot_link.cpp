@@ -21,13 +21,6 @@ bool RobotLink::isConnected() const { return link_->is_open(); }
 bool RobotLink::isPaused() const { return isSending() && link_->paused(); }
 int RobotLink::acknowledged() const { return static_cast<int>(link_->protocol().acknowledged()); }
 
-bool RobotLink::connectPort(const QString& device, int baud) {
-  serial::PortSettings port;
-  port.port = device.toStdString();
-  port.baud = baud;
-  return connectPort(port);
-}
-
 bool RobotLink::connectPort(const serial::PortSettings& port) {
   disconnectPort();
   const Status st = link_->Open(port);

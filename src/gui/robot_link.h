@@ -26,7 +26,6 @@ class RobotLink : public QObject {
   ~RobotLink() override;
 
   bool connectPort(const serial::PortSettings& port);
-  bool connectPort(const QString& device, int baud);
   void disconnectPort();
   bool isConnected() const;
   QString device() const { return device_; }

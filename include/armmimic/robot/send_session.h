@@ -48,7 +48,7 @@ struct SendStart {
   };
   Mode mode = Mode::kFresh;
   int resume_at_line = 0;  // > 0: continue from this file line (--resume-at), needs the journal
-  bool journal = true;     // false: no journal is read or written (dry runs, the GUI for now)
+  bool journal = true;     // false: no journal is read or written
   bool dry_run = false;    // a dry run never refuses because of an unfinished journal
 };
 
