@@ -145,8 +145,9 @@ TEST_F(RobotSendTest, TheProfilePickedChangesWhatIsSent) {
   EXPECT_EQ(panel_->simulator()->movesExecuted(), static_cast<int>(keys.size()));
 
   // The built-in profile streams DO MOVE lines instead.
-  Combo("profileCombo")->setCurrentIndex(0);
-  emit Combo("profileCombo")->activated(0);
+  QTest::keyClick(Combo("profileCombo"), Qt::Key_Home);  // the first entry: built in
+  EXPECT_EQ(Combo("profileCombo")->currentIndex(), 0);
+  EXPECT_TRUE(panel_->controllerSettings()->sendSettings().profile_path.empty());
   ASSERT_TRUE(panel_->exportVal(QString::fromStdString(tmp_.file("stream.val"))));
   const std::string stream = ReadFile(tmp_.file("stream.val"));
   EXPECT_NE(stream.find("DO MOVE #PPOINT("), std::string::npos);
@@ -192,7 +193,7 @@ TEST_F(RobotSendTest, TheConfirmationShowsDurationStartPoseAndRanges) {
 
 TEST_F(RobotSendTest, ADroppedSendResumesFromTheJournalToTheSameFinalPose) {
   MainWindow w;
-  Prepare(w, 1.0);  // real-time moves, so the link can drop mid-send
+  Prepare(w, 0.3);  // moves slow enough for the link to drop mid-send
   Connect(w);
   const auto& keys = panel_->plan().trajectory().keyframes;
   ASSERT_GE(keys.size(), 5u);
@@ -221,6 +222,8 @@ TEST_F(RobotSendTest, ADroppedSendResumesFromTheJournalToTheSameFinalPose) {
   EXPECT_NE(confirm.indexOf("resuming at plan.val:"), -1) << confirm.toStdString();
   ASSERT_TRUE(WaitUntil([&] { return finished; }, 60000)) << w.log()->text().toStdString();
   ASSERT_TRUE(ok) << w.log()->text().toStdString() << panel_->replyLog().toStdString();
+  // The move in flight when the link dropped was settled by asking the arm.
+  EXPECT_NE(w.log()->text().indexOf("WHERE shows the arm"), -1) << w.log()->text().toStdString();
   // Every planned move ran exactly once, and the arm ends at the plan's last pose.
   EXPECT_EQ(panel_->simulator()->movesExecuted(), static_cast<int>(keys.size()))
       << w.log()->text().toStdString();
