@@ -8,6 +8,7 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QTabWidget>
@@ -121,12 +122,18 @@ TEST_F(RobotSendTest, TheProfilePickedChangesWhatIsSent) {
   const std::string profile = tmp_.file("upload.profile");
   WriteFile(profile, "name = upload-test\nmode = program\nprogram_name = GUIPROF\n");
   // Open… picks the file; the picker then shows it.
-  const bool asked =
-      AnswerModal<QFileDialog>([&] { Button("profileButton")->click(); },
-                               [&](QFileDialog* d) {
-                                 d->selectFile(QString::fromStdString(profile));
-                                 QMetaObject::invokeMethod(d, "accept");  // as the Open button does
-                               });
+  const bool asked = AnswerModal<QFileDialog>([&] { Button("profileButton")->click(); },
+                                              [&](QFileDialog* d) {
+                                                // The path typed into the file name field, then
+                                                // Return.
+                                                auto* edit =
+                                                    d->findChild<QLineEdit*>("fileNameEdit");
+                                                if (edit) {
+                                                  edit->setText(QString::fromStdString(profile));
+                                                  QTest::keyClick(edit, Qt::Key_Return);
+                                                }
+                                                if (d->isVisible()) d->reject();  // never left open
+                                              });
   ASSERT_TRUE(asked);
   EXPECT_EQ(Combo("profileCombo")->currentText(), "upload.profile");
   EXPECT_EQ(panel_->controllerSettings()->sendSettings().profile_path, profile);
