@@ -55,7 +55,7 @@ void AnalyzeFile(benchmark::State& state, const AnalysisOptions& options) {
       state.SkipWithError(st.message().c_str());
       return;
     }
-    frames += summary.video.frame_count;
+    frames += summary.last_frame + 1 - options.start;  // the frames read, from --start on
   }
   state.counters["frames/s"] =
       benchmark::Counter(static_cast<double>(frames), benchmark::Counter::kIsRate);

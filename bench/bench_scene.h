@@ -20,7 +20,7 @@ const std::string& SceneDir(const synth::ArmSceneOptions& options);
 void DecodeOnly(benchmark::State& state, const std::string& video);
 
 // Runs the whole analysis (what `armmimic-cli analyze` does minus the file write) per
-// iteration; counter "frames/s": frames of the file per CPU second.
+// iteration; counter "frames/s": frames read (from options.start on) per CPU second.
 void AnalyzeFile(benchmark::State& state, const AnalysisOptions& options);
 
 }  // namespace armmimic::bench

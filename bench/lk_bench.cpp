@@ -4,7 +4,9 @@
 //   BM_LkDecodeOnly      decoding the MJPG scene alone, the ceiling for any engine;
 //   BM_LkAnalyzeEndToEnd what `analyze --engine lk` does minus the file write: with the
 //                        background estimated from frames [0, 45) and the standstill (arg 0), or
-//                        from a given shoulder (arg 1); every frame of the file counts;
+//                        from a given shoulder (arg 1), or from the shoulder, elbow and wrist
+//                        clicked on the start frame (arg 2, the two-segment model); every frame
+//                        of the file counts;
 //   BM_LkEngine          the engine alone on frames rendered beforehand.
 #include <string>
 #include <vector>
@@ -48,11 +50,17 @@ void BM_LkAnalyzeEndToEnd(benchmark::State& state) {
     synth::ArmSceneRenderer renderer(so);
     o.shoulder_px = renderer.shoulder_px();
     o.start = so.first_motion_frame() - 1;
+    if (state.range(0) == 2) {
+      const synth::ArmTruth t = renderer.Truth(o.start);
+      o.elbow_px = t.elbow_px;
+      o.wrist_px = t.wrist_px;
+    }
   }
-  state.SetLabel(state.range(0) ? "given shoulder" : "background + standstill");
+  const char* labels[] = {"background + standstill", "given shoulder", "joints clicked"};
+  state.SetLabel(labels[state.range(0)]);
   bench::AnalyzeFile(state, o);
 }
-BENCHMARK(BM_LkAnalyzeEndToEnd)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LkAnalyzeEndToEnd)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 void BM_LkEngine(benchmark::State& state) {
   synth::ArmSceneOptions scene;

@@ -3,7 +3,9 @@
 // --with-model). Rates are per CPU second. Run: build/bench/pose_bench
 //   BM_PoseNetwork         one inference (192x192 input) plus the decoder;
 //   BM_PoseAnalyzeEndToEnd what `analyze --engine pose --side left` does minus the file write:
-//                          model load and checks, decoding, crop tracking, every frame a row.
+//                          model load and checks, decoding, crop tracking, every frame a row;
+//                          /1: one look a frame (pose.arm_crop=0), /2: the body and arm looks
+//                          (the default), /3: with the mirrored look too (pose.flip=true).
 #include <string>
 
 #include <benchmark/benchmark.h>
@@ -46,9 +48,11 @@ void BM_PoseAnalyzeEndToEnd(benchmark::State& state) {
   o.engine.kind = EngineKind::kPose;
   o.engine.pose.side = PoseSide::kLeft;
   o.start = so.first_motion_frame();
+  o.engine.pose.arm_crop = state.range(0) >= 2 ? PoseOptions().arm_crop : 0;
+  o.engine.pose.flip = state.range(0) >= 3;
   bench::AnalyzeFile(state, o);
 }
-BENCHMARK(BM_PoseAnalyzeEndToEnd)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PoseAnalyzeEndToEnd)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

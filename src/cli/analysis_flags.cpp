@@ -27,6 +27,7 @@ const std::map<std::string, std::set<EngineKind>>& AnalysisFlags::EngineFlags() 
       {"--reference", {EngineKind::kMarker}},
       {"--low", {EngineKind::kMarker}},
       {"--high", {EngineKind::kMarker}},
+      {"--fov", {EngineKind::kMarker}},
   };
   return flags;
 }
@@ -89,11 +90,14 @@ void AnalysisFlags::Register(ArgParser& p) {
   p.Double("--initial-fore", &o_->engine.lk.initial_fore_deg, "DEG",
            "lk: forearm direction at the start (default -90)");
   p.String("--reference", &o_->reference_path, "REF.png",
-           "marker: joint at zero yaw and zero bend (gives N)");
+           "marker: the joint at zero yaw and zero bend");
   p.Int("--low", &o_->engine.marker.low, "L",
         "marker: lower grey level of the markers (default 20)", 0, 255);
   p.Int("--high", &o_->engine.marker.high, "H",
         "marker: upper grey level of the markers (default 80)", 0, 255);
+  p.Double("--fov", &o_->engine.marker.fov_deg, "D",
+           "marker: the camera's horizontal field of view, degrees (default 60; 0: a distant "
+           "camera)");
   p.String("--side", &side_name_, "left|right",
            "pose, lk --auto-calibrate: the person's own arm (default: the better seen)");
   p.String("--model", &o_->model_dir, "DIR",

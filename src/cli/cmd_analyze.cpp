@@ -41,7 +41,7 @@ constexpr const char* kSynopsis =
     "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine lk --auto-calibrate\n"
     "          [--side left|right] [--start F] [--model DIR]\n"
     "  armmimic-cli analyze INPUT... -o ANGLES.tsv --engine marker --reference REF.png\n"
-    "          [--low 20] [--high 80]\n"
+    "          [--low 20] [--high 80] [--fov 60]\n"
     "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine pose [--side left|right] [--start F]\n"
     "          [--model DIR]\n"
     "  armmimic-cli analyze VIDEO -o NEW.tsv --params-from OLD.tsv [flags]\n"
@@ -58,7 +58,8 @@ constexpr const char* kDescription =
     "segment lengths; otherwise the arm length is estimated and the estimate is printed.\n"
     "lk --auto-calibrate: the pose network finds the shoulder, elbow and wrist in frame F, as\n"
     "if clicked (--side names the person's own arm; default: the better seen).\n"
-    "marker: one row per input image, in input order.\n"
+    "marker: one row per input image, in input order, with the image's name and the signed\n"
+    "yaw (yaw_signed_deg) after the listed columns; --thesis reads yaw as acos(n/N), unsigned.\n"
     "pose: a pose network (MoveNet) finds the person's arm in every frame from F on, with no\n"
     "background or calibration; a row is lost where the arm is not seen or a segment points at\n"
     "the camera, and a confidence column (0-1) follows the angles. --side names the person's\n"
@@ -124,11 +125,14 @@ void DefineFlags(ArgParser& p, AnalyzeFlags& a) {
   p.Double("--initial-fore", &f.engine.lk.initial_fore_deg, "DEG",
            "lk: forearm direction at the start (default -90)");
   p.String("--reference", &f.reference_path, "REF.png",
-           "marker: joint at zero yaw and zero bend (gives N)");
+           "marker: the joint at zero yaw and zero bend");
   p.Int("--low", &f.engine.marker.low, "L", "marker: lower grey level of the markers (default 20)",
         0, 255);
   p.Int("--high", &f.engine.marker.high, "H",
         "marker: upper grey level of the markers (default 80)", 0, 255);
+  p.Double("--fov", &f.engine.marker.fov_deg, "D",
+           "marker: the camera's horizontal field of view, degrees (default 60; 0: a distant "
+           "camera)");
   p.String("--side", &a.side_name, "left|right",
            "pose, lk --auto-calibrate: the person's own arm (default: the better seen)");
   p.String("--model", &f.model_dir, "DIR",
@@ -183,6 +187,7 @@ void ApplyGivenFlags(const ArgParser& p, const AnalyzeFlags& a, AnalysisOptions*
   if (p.Given("--low")) o->engine.marker.low = f.engine.marker.low;
   if (p.Given("--high")) o->engine.marker.high = f.engine.marker.high;
   if (p.Given("--low") || p.Given("--high")) o->engine.marker.auto_window = false;
+  if (p.Given("--fov")) o->engine.marker.fov_deg = f.engine.marker.fov_deg;
   if (a.thesis) {
     o->engine.bgsub.thesis_mode = true;
     o->engine.lk.thesis_mode = true;

@@ -16,15 +16,18 @@ int RunSynthMarker(const std::vector<std::string>& args, const GlobalOptions& gl
   ArgParser p(
       "synth marker",
       "  armmimic-cli synth marker OUTDIR [--seed N] [--size WxH] [--views N] [--max-yaw D]\n"
-      "      [--max-bend D] [--noise S] [--background plain|gradient|texture|room|mixed]\n"
-      "      [--lighting normal|bright|dim|side|shadow|mixed] [--clutter K]",
-      "Renders the thesis' model joint (chapter 4) in 3D: two equal cylinders, the lower one\n"
-      "upright and turning about its axis (yaw), the upper one bending at the pivot; two black\n"
-      "markers on the lower part at equal angles either side of the front, one on the front of\n"
-      "the upper part at the same distance from the pivot. Writes OUTDIR/reference.png (zero yaw,\n"
-      "zero bend), OUTDIR/views/view_NNN.png and OUTDIR/truth.tsv (yaw and bend from the model,\n"
-      "a `file` column, and `readable` = 0 where a marker is turned past 75 degrees, i.e. past\n"
-      "about 35 degrees of yaw). Analyse with:\n"
+      "      [--max-bend D] [--noise S] [--background plain|gradient|texture|room|simple|mixed]\n"
+      "      [--lighting normal|bright|dim|side|shadow|mixed] [--clutter K]\n"
+      "      [--camera perspective|orthographic] [--fov D]",
+      "Ray casts the thesis' model joint (chapter 4): two equal Lambertian-shaded cylinders, the\n"
+      "lower one upright and turning about its axis (yaw), the upper one bending at the pivot;\n"
+      "two black markers on the lower part's curved surface at equal angles either side of the\n"
+      "front, one on the front of the upper part at the same distance from the pivot. A level\n"
+      "pinhole camera looks at it (--camera orthographic: the flat model, a parallel\n"
+      "projection). Writes OUTDIR/reference.png (zero yaw, zero bend), OUTDIR/views/view_NNN.png\n"
+      "and OUTDIR/truth.tsv (yaw and bend from the model, a `file` column, the signed yaw, the\n"
+      "projected marker centres, and `readable` = 1 where a lower marker faces the camera within\n"
+      "75 degrees; per marker in upper/left/right_readable). Analyse with:\n"
       "  armmimic-cli analyze OUTDIR/views -o angles.tsv --engine marker "
       "--reference OUTDIR/reference.png\n"
       "The same seed and options give the same files.");
@@ -35,11 +38,12 @@ int RunSynthMarker(const std::vector<std::string>& args, const GlobalOptions& gl
            [&o](const std::string& v) { return ParseSizeArg(v, &o.size); });
   p.Int("--views", &o.views, "N", "images besides the reference (default 48)", 1, 100000);
   p.Double("--max-yaw", &o.max_yaw_deg, "D",
-           "yaw uniform in [-D, D] degrees (default 45; past ~35 a marker hides)");
+           "yaw uniform in [-D, D] degrees, up to 180 (default 45)");
   p.Double("--max-bend", &o.max_bend_deg, "D", "bend uniform in [-D, D] degrees (default 60)");
   p.Double("--noise", &o.noise_sigma, "S", "Gaussian sensor noise sigma, grey levels (default 2)");
   p.String("--background", &o.background, "KIND",
-           "plain, gradient, texture, room or mixed (default: picked by the seed)");
+           "plain, gradient, texture, room, simple (plain or gradient) or mixed (default: any, "
+           "picked by the seed)");
   p.String("--lighting", &o.lighting, "KIND",
            "normal, bright, dim, side, shadow (a dark shadow on the wall, thesis Fig. 4-10) or "
            "mixed (default: picked by the seed)");
@@ -47,6 +51,10 @@ int RunSynthMarker(const std::vector<std::string>& args, const GlobalOptions& gl
         "dark marker-like blobs on the background, every third beside the lower markers "
         "(default 0)",
         0, 100);
+  p.String("--camera", &o.camera.projection, "KIND",
+           "perspective (default) or orthographic (the flat model, to compare)");
+  p.Double("--fov", &o.camera.fov_deg, "D",
+           "the perspective camera's horizontal field of view, degrees (default 60)");
   if (auto code = p.Parse(args)) return *code;
   if (Status st = o.Check(); !st.ok()) return p.UsageError(st.message());
 

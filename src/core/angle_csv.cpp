@@ -44,7 +44,8 @@ std::string FormatCsvHeader(bool file_column, CsvStyle style) {
     if (!s.empty()) s += sep;
     s += c;
   }
-  if (file_column) s += std::string(1, sep) + "file";
+  // Marker files: the view's image and the signed yaw, as in the angle file.
+  if (file_column) s += std::string(1, sep) + "file" + sep + "yaw signed (deg)";
   return s;
 }
 
@@ -67,6 +68,8 @@ std::string FormatCsvRow(const AngleRow& row, bool file_column, CsvStyle style) 
   if (file_column) {
     s += sep;
     s += Quoted(row.file, sep);
+    s += sep;
+    if (ok) s += Cell(row.yaw_signed_deg, 3, style);
   }
   return s;
 }

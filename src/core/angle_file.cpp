@@ -47,7 +47,8 @@ std::string FormatMetaLine(const AngleMeta& meta) {
   return line;
 }
 
-std::string FormatAngleRow(const AngleRow& row, bool file_column, bool confidence_column) {
+std::string FormatAngleRow(const AngleRow& row, bool file_column, bool confidence_column,
+                           bool signed_yaw_column) {
   const bool ok = row.ok();
   auto ang = [&](double v) { return FormatNumber(ok ? v : kNaN, 3); };
   auto px = [&](double v) { return FormatNumber(ok ? v : kNaN, 2); };
@@ -73,6 +74,10 @@ std::string FormatAngleRow(const AngleRow& row, bool file_column, bool confidenc
     s += '\t';
     s += row.file;
   }
+  if (signed_yaw_column) {
+    s += '\t';
+    s += ang(row.yaw_signed_deg);
+  }
   return s;
 }
 
@@ -89,6 +94,7 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
   std::size_t confidence_index = 0;
   int last_frame = -1;
   bool seen_meta = false;
+  std::size_t signed_yaw_index = 0;
   while (true) {
     line.clear();
     // Bounded getline: never holds more than kMaxAngleLineLength + 1 characters of one line.
@@ -151,9 +157,11 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
       for (std::size_t i = 11; i < cols.size(); ++i) {
         if (cols[i] == "file") file_index = i;
         if (cols[i] == "confidence") confidence_index = i;
+        if (cols[i] == kSignedYawColumn) signed_yaw_index = i;
       }
       out->has_file_column = file_index > 0;
       out->has_confidence_column = confidence_index > 0;
+      out->has_signed_yaw_column = signed_yaw_index > 0;
       have_header = true;
       continue;
     }
@@ -212,6 +220,21 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
                    "confidence \"" + f[confidence_index] + "\" is not a number in [0, 1] (or nan)");
       }
     }
+    if (signed_yaw_index > 0) {
+      const std::string& v = f[signed_yaw_index];
+      if (!ParseTableNumber(v, true, &row.yaw_signed_deg)) {
+        return err(line_no, std::string(kSignedYawColumn) + " \"" + v +
+                                "\" is not a number (use '.' decimals, or nan)");
+      }
+      if (row.status == RowStatus::kLost && !std::isnan(row.yaw_signed_deg)) {
+        return err(line_no, std::string("status is lost but ") + kSignedYawColumn +
+                                " is a number (lost rows carry nan angles)");
+      }
+      if (!std::isnan(row.yaw_signed_deg) &&
+          (row.yaw_signed_deg <= -180.0 - 1e-9 || row.yaw_signed_deg > 180.0 + 1e-9)) {
+        return err(line_no, std::string(kSignedYawColumn) + " " + v + " is outside (-180, 180]");
+      }
+    }
     out->rows.push_back(std::move(row));
   }
   if (!have_header) {
@@ -233,6 +256,7 @@ struct AngleFileWriter::Impl {
   AngleMeta meta;
   bool file_column = false;
   bool confidence_column = false;
+  bool signed_yaw_column = false;
   bool open = false;
   int rows = 0;
 };
@@ -243,18 +267,20 @@ AngleFileWriter::~AngleFileWriter() = default;
 int AngleFileWriter::rows_written() const { return impl_->rows; }
 
 namespace {
-std::string HeaderText(const AngleMeta& meta, bool file_column, bool confidence_column) {
+std::string HeaderText(const AngleMeta& meta, bool file_column, bool confidence_column,
+                       bool signed_yaw_column) {
   std::string s =
       std::string(kAngleFileMagic) + "\n" + FormatMetaLine(meta) + "\n" + kAngleFileUnits + "\n";
   for (int i = 0; i < 11; ++i) s += (i ? "\t" : "") + std::string(kAngleColumns[i]);
   if (confidence_column) s += "\tconfidence";
   if (file_column) s += "\tfile";
+  if (signed_yaw_column) s += std::string("\t") + kSignedYawColumn;
   return s + "\n";
 }
 }  // namespace
 
 Status AngleFileWriter::Open(const std::string& path, const AngleMeta& meta, bool file_column,
-                             bool confidence_column) {
+                             bool confidence_column, bool signed_yaw_column) {
   impl_ = std::make_unique<Impl>();
   Status st = impl_->file.Open(path);
   if (!st) return st;
@@ -262,7 +288,8 @@ Status AngleFileWriter::Open(const std::string& path, const AngleMeta& meta, boo
   impl_->meta = meta;
   impl_->file_column = file_column;
   impl_->confidence_column = confidence_column;
-  const std::string header = HeaderText(meta, file_column, confidence_column);
+  impl_->signed_yaw_column = signed_yaw_column;
+  const std::string header = HeaderText(meta, file_column, confidence_column, signed_yaw_column);
   if (std::fputs(header.c_str(), impl_->file.file()) < 0) {
     return Status::Error(path + ": write failed (" + std::strerror(errno) + ")");
   }
@@ -276,7 +303,9 @@ Status AngleFileWriter::Write(const AngleRow& row) {
     return Status::Error(impl_->path + ": file name \"" + row.file +
                          "\" contains a tab or newline");
   }
-  const std::string s = FormatAngleRow(row, impl_->file_column, impl_->confidence_column) + "\n";
+  const std::string s =
+      FormatAngleRow(row, impl_->file_column, impl_->confidence_column, impl_->signed_yaw_column) +
+      "\n";
   if (std::fputs(s.c_str(), impl_->file.file()) < 0) {
     return Status::Error(impl_->path + ": write failed (" + std::strerror(errno) + ")");
   }
@@ -295,7 +324,8 @@ Status AngleFileWriter::Commit(bool complete) {
   if (!st) return st;
   AngleMeta meta = impl_->meta;
   meta.emplace_back("complete", "no");
-  const std::string header = HeaderText(meta, impl_->file_column, impl_->confidence_column);
+  const std::string header =
+      HeaderText(meta, impl_->file_column, impl_->confidence_column, impl_->signed_yaw_column);
   std::fputs(header.c_str(), marked.file());
   std::ifstream rows(impl_->file.temp_path(), std::ios::binary);
   std::string line;

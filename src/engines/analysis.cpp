@@ -87,7 +87,7 @@ Status PreparePose(const AnalysisOptions& options, const VideoInfo& info,
     PoseSide side = options.calibrate_side;
     Status st = internal::DetectArmJointsFrom(
         [&options](Status* s) { return OpenInput(options, s); }, options.start,
-        options.calibrate_side, options.model_dir, options.engine.pose.min_score, &arm, &side);
+        options.calibrate_side, options.model_dir, options.engine.pose, &arm, &side);
     if (!st) return Status::Error("--auto-calibrate: " + st.message());
     resolved->shoulder_px = arm.shoulder;
     resolved->elbow_px = arm.elbow;
@@ -424,11 +424,14 @@ Status AnalyzeToFile(const AnalysisOptions& options, const std::string& output_p
                      const AnalysisCallbacks& callbacks, AnalysisSummary* summary) {
   AngleFileWriter writer;
   const bool file_column = options.engine.kind == EngineKind::kMarker;
-  const bool confidence_column = options.engine.kind == EngineKind::kPose;
+  // The engines that rate their own rows (pose, lk) write the optional confidence column.
+  const bool confidence_column =
+      options.engine.kind == EngineKind::kPose || options.engine.kind == EngineKind::kLk;
   Status st = Run(
       options, callbacks,
       [&](const AngleMeta& meta) {
-        return writer.Open(output_path, meta, file_column, confidence_column);
+        return writer.Open(output_path, meta, file_column, confidence_column,
+                           /*signed_yaw_column=*/file_column);
       },
       [&](const ArmMeasurement& m) { return writer.Write(m.ToRow()); }, summary);
   if (!st) return st;

@@ -5,6 +5,7 @@
 // (phase kSetup, no rows); the body box of standstill vs background gives the shoulder, and the
 // last standstill frame is the known starting posture. With --shoulder, there is no setup: the
 // first frame processed is the known starting posture and already gets a row.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -80,7 +81,9 @@ class LkEngine : public Engine {
           "lk: needs a background (--background or --background-frames) or a shoulder "
           "(--shoulder X,Y)");
     }
-    tracker_ = o_.thesis_mode ? lk::CreateThesisTracker(o_) : lk::CreateAnchoredTracker(o_);
+    tracker_ = o_.thesis_mode         ? lk::CreateThesisTracker(o_)
+               : upper_length_px_ > 0 ? lk::CreateModelTracker(o_)
+                                      : lk::CreateAnchoredTracker(o_);
     ArmGateOptions gate;
     gate.max_speed_deg_s = o_.max_speed_deg_s;
     gate.min_support = o_.min_support;
@@ -107,6 +110,7 @@ class LkEngine : public Engine {
     const cv::Mat view = frame.image(roi_);
     cv::Mat gray;
     cv::cvtColor(view, gray, cv::COLOR_BGR2GRAY);
+    tracker_->SetTime(frame.time_s);
     switch (state_) {
       case State::kStandstill:
         return Standstill(view, gray, m);
@@ -209,6 +213,7 @@ class LkEngine : public Engine {
     m.phase = pose.ok ? MeasurementPhase::kOk : MeasurementPhase::kLost;
     m.note = pose.note;
     m.body_box = body_box_;
+    if (std::isfinite(pose.support)) m.confidence = std::clamp(pose.support, 0.0, 1.0);
     if (!pose.ok) {
       if (!o_.thesis_mode) gate_.Review(&m, pose.support);
       return m;

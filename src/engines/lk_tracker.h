@@ -48,10 +48,17 @@ class Tracker {
   virtual ~Tracker() = default;
   virtual TrackerPose Start(const TrackerStart& start) = 0;
   virtual TrackerPose Track(const cv::Mat& gray, const cv::Mat& bgr) = 0;
+  // The time stamp of the frame given to the next Start() or Track(), seconds.
+  void SetTime(double time_s) { time_s_ = time_s; }
+
+ protected:
+  double time_s_ = 0;
 };
 
 std::unique_ptr<Tracker> CreateThesisTracker(const LkOptions& options);
 std::unique_ptr<Tracker> CreateAnchoredTracker(const LkOptions& options);
+// The two-segment model tracker (lk_model_tracker.cpp): needs the joints in the start frame.
+std::unique_ptr<Tracker> CreateModelTracker(const LkOptions& options);
 
 // Of `shoulders`, the one whose side moved first: the index whose half of the picture (split
 // halfway between the shoulders) holds at least `min_count` features that moved more than

@@ -70,9 +70,13 @@ std::vector<MarkerBlob> FindMarkerCandidates(const cv::Mat& bgr, const MarkerOpt
     for (std::size_t j = i + 1; j < small.size(); ++j) {
       const cv::Rect& b = s->components[small[j]].box;
       if (b.x >= a.x + a.width) break;
-      // Fragments of one marker nest (a rim around its core); a neighbour only touches.
+      // Fragments of one marker nest (a rim around its core) or, when shading across a large
+      // marker exceeds the flood range, split it into two overlapping halves whose union is
+      // hardly bigger than either; a neighbour only touches.
       const int overlap = (a & b).area();
-      if (overlap > 0 && 2 * overlap >= std::min(a.area(), b.area())) {
+      const int larger = std::max(a.area(), b.area());
+      if (overlap > 0 &&
+          (2 * overlap >= std::min(a.area(), b.area()) || 5 * (a | b).area() <= 8 * larger)) {
         parent[Find(parent, static_cast<int>(j))] = Find(parent, static_cast<int>(i));
       }
     }
@@ -161,26 +165,30 @@ bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_rati
     ring.emplace_back(w.x, y);
     ring.emplace_back(w.x + w.width - 1, y);
   }
-  cv::Vec3d plane(0, 0, 0);
-  auto level = [&](double x, double y) {
-    return plane[0] + plane[1] * (x - xc) + plane[2] * (y - yc);
+  using Vec6 = cv::Vec<double, 6>;
+  Vec6 plane(0, 0, 0, 0, 0, 0);
+  const double scale = 1.0 / std::max(w.width, w.height);
+  auto basis = [&](double x, double y) {
+    const double u = (x - xc) * scale, v = (y - yc) * scale;
+    return Vec6(1, u, v, u * u, u * v, v * v);
   };
+  auto level = [&](double x, double y) { return plane.dot(basis(x, y)); };
   double threshold = 1e9;
   for (int pass = 0; pass < 2; ++pass) {
-    cv::Matx33d a = cv::Matx33d::zeros();
-    cv::Vec3d b(0, 0, 0);
+    cv::Matx<double, 6, 6> a = cv::Matx<double, 6, 6>::zeros();
+    Vec6 b(0, 0, 0, 0, 0, 0);
     int used = 0;
     for (const cv::Point& p : ring) {
       const double v = gray.at<uchar>(p);
       if (pass > 0 && std::abs(v - level(p.x, p.y)) > threshold) continue;
-      const cv::Vec3d f(1, p.x - xc, p.y - yc);
+      const Vec6 f = basis(p.x, p.y);
       a += f * f.t();
       b += f * v;
       ++used;
     }
     if (used < 6) return false;
-    cv::Vec3d solved;
-    if (!cv::solve(a, b, solved, cv::DECOMP_CHOLESKY)) return false;
+    Vec6 solved;
+    if (!cv::solve(a, b, solved, cv::DECOMP_SVD)) return false;
     plane = solved;
     std::vector<double> residuals;
     residuals.reserve(ring.size());
@@ -257,6 +265,8 @@ MarkerTriple Ordered(const MarkerBlob& upper, const MarkerBlob& a, const MarkerB
   return t;
 }
 
+}  // namespace
+
 bool ThreeLargest(const std::vector<MarkerBlob>& blobs, MarkerTriple* out) {
   if (blobs.size() < 3) return false;
   int top = 0;
@@ -268,8 +278,6 @@ bool ThreeLargest(const std::vector<MarkerBlob>& blobs, MarkerTriple* out) {
   *out = Ordered(blobs[top], blobs[a], blobs[b]);
   return true;
 }
-
-}  // namespace
 
 SurfaceStretch SampleStretch(const cv::Mat& filtered, cv::Point2d a, cv::Point2d b) {
   constexpr int kSamples = 16;
@@ -341,109 +349,14 @@ bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, const cv::Mat& 
   return best < 1e9;
 }
 
-bool ChooseTriple(const std::vector<MarkerBlob>& blobs, const cv::Mat& filtered,
-                  const MarkerReference& ref, const MarkerOptions& options, MarkerTriple* out,
-                  bool* ambiguous) {
-  if (ambiguous) *ambiguous = false;
-  // The stretch between two lower markers and between the pivot and the upper one lie on the
-  // joint: even, and about as bright as in the reference.
-  auto on_surface = [](const SurfaceStretch& s, double ref_level) {
-    if (s.uneven > 0.3 || ref_level <= 0) return false;
-    const double r = s.level / ref_level;
-    return r > 0.55 && r < 1.8;
-  };
-  if (options.thesis_mode) return ThreeLargest(blobs, out);
-  const int count = std::min<int>(static_cast<int>(blobs.size()), 24);
-  const double big_n = ref.n_px;
-  const double e = ref.e_px;
-  double best = 1e9;
-  double second = 1e9;
-  for (int i = 0; i < count; ++i) {
-    for (int j = 0; j < count; ++j) {
-      const MarkerBlob& a = blobs[i];
-      const MarkerBlob& b = blobs[j];
-      if (i == j || b.centre.x <= a.centre.x) continue;
-      const double ratio = (b.centre.x - a.centre.x) / big_n;
-      if (ratio < options.min_width_ratio || ratio > options.max_width_ratio) continue;
-      const double dy = std::abs(a.centre.y - b.centre.y);
-      if (dy > 0.1 * big_n + 2) continue;
-      if (std::min(a.area_px, b.area_px) * 10 < std::max(a.area_px, b.area_px)) continue;
-      const double cos_yaw = std::min(1.0, ratio);
-      // Areas: the pair together shows about cos(yaw) of the reference pair's area.
-      const double pair_area = (a.area_px + b.area_px) /
-                               (cos_yaw * (ref.markers.left.area_px + ref.markers.right.area_px));
-      if (pair_area < 0.3 || pair_area > 2.5) continue;
-      const cv::Point2d mid = (a.centre + b.centre) * 0.5;
-      const double pivot_y = mid.y - e;
-      if (!on_surface(SampleStretch(filtered, a.centre, b.centre), ref.pair_level)) continue;
-      for (int k = 0; k < count; ++k) {
-        if (k == i || k == j) continue;
-        const MarkerBlob& c = blobs[k];
-        if (c.centre.y > mid.y - 0.5 * e) continue;
-        const double dx = (c.centre.x - mid.x) / cos_yaw;
-        const double resid = std::abs(std::hypot(dx, pivot_y - c.centre.y) - e) / e;
-        if (resid > options.geometry_tolerance) continue;
-        // The upper marker faces the camera turned by the yaw only.
-        const double upper_area = c.area_px / (cos_yaw * ref.markers.upper.area_px);
-        if (upper_area < 0.4 || upper_area > 2.5) continue;
-        if (!on_surface(SampleStretch(filtered, {mid.x, pivot_y}, c.centre), ref.upper_level)) {
-          continue;
-        }
-        const double score = resid + dy / big_n + 0.1 * std::abs(std::log(upper_area)) +
-                             0.1 * std::abs(std::log(pair_area));
-        if (score < best) {
-          second = best;
-          best = score;
-          *out = Ordered(c, a, b);
-        } else if (score < second) {
-          second = score;
-        }
-      }
-    }
-  }
-  // Another triple that fits about as well: clutter competes, and a guess is not a measurement.
-  if (ambiguous) *ambiguous = best < 1e9 && second < best + options.ambiguity_margin;
-  return best < 1e9 && second >= best + options.ambiguity_margin;
-}
-
-MarkerAngles ComputeMarkerAngles(const MarkerTriple& t, const MarkerReference& ref,
-                                 bool thesis_mode) {
+MarkerAngles ComputeThesisAngles(const MarkerTriple& t, const MarkerReference& ref) {
   MarkerAngles out;
   const double n = t.right.centre.x - t.left.centre.x;
-  const double ratio = std::clamp(n / ref.n_px, 0.0, 1.0);
-  double yaw = std::acos(ratio);  // eq. 4-1
-  out.acos_yaw_deg = DegFromRad(yaw);
+  const double yaw = std::acos(std::clamp(n / ref.n_px, 0.0, 1.0));  // eq. 4-1
+  out.yaw_deg = DegFromRad(yaw);
   const cv::Point2d mid = (t.left.centre + t.right.centre) * 0.5;
   out.pivot_px = {mid.x, mid.y - ref.e_px};
-  double dx = t.upper.centre.x - mid.x;
-  double signed_yaw = yaw;
-  if (!thesis_mode && t.left.coverage_px > 0 && t.right.coverage_px > 0) {
-    const double al = t.left.coverage_px;
-    const double ar = t.right.coverage_px;
-    out.foreshortening = std::min(al, ar) / ref.face_area_px;
-    // The turned-away marker shows less area; that gives the sign acos cannot.
-    const double tan_alpha = std::tan(RadFromDeg(ref.alpha_deg));
-    const double yaw_area = std::atan(((al - ar) / (al + ar)) / std::max(0.05, tan_alpha));
-    out.area_yaw_deg = DegFromRad(yaw_area);
-    // acos is blunt near zero yaw (d cos = 0) where the areas are sharp, and the reverse far
-    // from zero: weigh each by its expected spread (ratio noise 0.004, area estimate 3 deg).
-    const double sd_acos = 0.004 / std::max(std::sin(yaw), 0.03);
-    const double sd_area = RadFromDeg(3);
-    const double w_acos = 1 / (sd_acos * sd_acos);
-    const double w_area = 1 / (sd_area * sd_area);
-    yaw = (w_acos * yaw + w_area * std::abs(yaw_area)) / (w_acos + w_area);
-    signed_yaw = yaw_area < 0 ? -yaw : yaw;
-    // Together the pair shows 2 cos(alpha) cos(yaw) of a full face.
-    out.pair_area_ratio =
-        (al + ar) / (2 * ref.face_area_px * std::cos(RadFromDeg(ref.alpha_deg)) * std::cos(yaw));
-    // The upper marker sits on the front surface, R(1 - cos alpha) nearer the camera than the
-    // lower pair's midpoint: after yaw it is shifted sideways by that depth times sin(yaw).
-    const double depth = 0.5 * ref.n_px * std::tan(0.5 * RadFromDeg(ref.alpha_deg));
-    dx -= depth * std::sin(signed_yaw);
-    out.pivot_px.x += depth * std::sin(signed_yaw);
-  }
-  out.yaw_deg = DegFromRad(yaw);
-  out.signed_yaw_deg = DegFromRad(signed_yaw);
+  const double dx = t.upper.centre.x - mid.x;
   const double cos_yaw = std::max(1e-3, std::cos(yaw));
   // Eqs. 4-2..4-5: the upper marker's offset from the pivot; the horizontal part shrinks by
   // cos(yaw) (a = e / cos(yaw) in the thesis).

@@ -53,52 +53,36 @@ struct MarkerTriple {
   MarkerBlob upper, left, right;
 };
 
-// Reference calibration (4.3.1): N, e and what the refinements need.
+// The thesis path's calibration from the reference (4.3.1): N and e.
 struct MarkerReference {
-  double n_px = 0;           // N: lower markers' horizontal distance at zero yaw
-  double e_px = 0;           // pivot distance: half the upper-to-lower-midpoint height
-  double alpha_deg = 0;      // the lower markers' angle from the front, from their areas
-  double face_area_px = 0;   // the upper marker's area (facing the camera)
-  double core_ratio = 0;     // marker / surround level
-  int marker_height_px = 0;  // the upper marker's box height
-  double pair_level = 0;     // surface level between the lower markers
-  double upper_level = 0;    // ... and between the pivot and the upper marker
+  double n_px = 0;  // N: lower markers' horizontal distance at zero yaw
+  double e_px = 0;  // pivot distance: half the upper-to-lower-midpoint height
   MarkerTriple markers;
 };
 
 // The reference's markers: the most symmetric triple (two side by side, one centred above).
 // In thesis mode: the three largest, the top-most as upper.
 // `filtered` is the median image: the stretches between the markers must look like the joint's
-// surface (even, and in the current image as bright as in the reference), not background.
+// surface (even), not background.
 bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, const cv::Mat& filtered,
                            bool thesis_mode, MarkerTriple* out);
-// The current image's markers. Thesis mode: the three largest. Otherwise the triple that best
-// fits the joint's geometry given the reference; false when none fits.
-// `ambiguous` (may be null) is set when a second triple fits nearly as well (then false).
-bool ChooseTriple(const std::vector<MarkerBlob>& blobs, const cv::Mat& filtered,
-                  const MarkerReference& ref, const MarkerOptions& options, MarkerTriple* out,
-                  bool* ambiguous = nullptr);
+// Thesis 4.2.5: the three largest survivors, the top-most as upper.
+bool ThreeLargest(const std::vector<MarkerBlob>& blobs, MarkerTriple* out);
 
-// The joint's surface along a stretch: the mean level of the median image between `a` and `b`
-// (their ends left out) and the share of samples more than 15 % off a straight ramp.
+// The joint's surface along a stretch: the mean level of `image` between `a` and `b` (their
+// ends left out) and the share of samples more than 15 % off a straight ramp.
 struct SurfaceStretch {
   double level = 0;
   double uneven = 1;
 };
-SurfaceStretch SampleStretch(const cv::Mat& filtered, cv::Point2d a, cv::Point2d b);
+SurfaceStretch SampleStretch(const cv::Mat& image, cv::Point2d a, cv::Point2d b);
 
-// Eqs. 4-1..4-5 and the yaw correction; see docs/marker.md.
+// Eqs. 4-1..4-5 (the thesis path); see docs/marker.md.
 struct MarkerAngles {
-  double yaw_deg = 0;          // >= 0
-  double signed_yaw_deg = 0;   // sign from the lower markers' areas (default mode)
-  double acos_yaw_deg = 0;     // eq. 4-1 alone
-  double pair_area_ratio = 1;  // the lower pair's area over what the model expects
-  double area_yaw_deg = kNaN;  // signed, from the lower markers' areas alone (default mode)
-  double bend_deg = 0;         // CCW on screen positive, 0 = straight
-  double foreshortening = 1;   // smaller lower-marker area / face area
+  double yaw_deg = 0;   // acos(n / N), >= 0
+  double bend_deg = 0;  // CCW on screen positive, 0 = straight
   cv::Point2d pivot_px;
 };
-MarkerAngles ComputeMarkerAngles(const MarkerTriple& t, const MarkerReference& ref,
-                                 bool thesis_mode);
+MarkerAngles ComputeThesisAngles(const MarkerTriple& t, const MarkerReference& ref);
 
 }  // namespace armmimic::internal

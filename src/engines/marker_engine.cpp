@@ -1,12 +1,16 @@
-// The marker-joint engine (thesis chapter 4, docs/marker.md): three black markers on a model
-// joint give its yaw (acos(n/N)) and bend (eqs. 4-2..4-5) from every image.
+// The marker-joint engine (thesis chapter 4, docs/marker.md): the lower part's silhouette and
+// markers give the joint's signed yaw through a cylinder model, the upper marker its bend; the
+// thesis path (acos(n/N), eqs. 4-2..4-5) runs under --thesis.
 #include <cmath>
 #include <cstdio>
 #include <string>
 
+#include <opencv2/imgproc.hpp>
+
 #include "armmimic/core/angle_file.h"
 #include "engine_factories.h"
 #include "marker_detect.h"
+#include "marker_model.h"
 
 namespace armmimic {
 
@@ -31,20 +35,15 @@ Status MarkerOptions::Check() const {
     return Status::Error("--min-aspect/--max-aspect: need 0 < min-aspect <= max-aspect");
   }
   if (!(min_fill >= 0 && min_fill <= 1)) return Status::Error("--min-fill must be in [0, 1]");
-  if (!(max_marker_turn_deg > 0 && max_marker_turn_deg <= 90)) {
-    return Status::Error("--max-marker-turn must be in (0, 90] degrees");
+  if (!(fov_deg >= 0 && fov_deg <= 140)) return Status::Error("--fov must be in [0, 140] degrees");
+  if (!(max_marker_turn_deg > 0 && max_marker_turn_deg < 90)) {
+    return Status::Error("marker option max_marker_turn_deg must be in (0, 90)");
   }
-  if (!(min_foreshortening >= 0 && min_foreshortening < 1)) {
-    return Status::Error("--min-foreshortening must be in [0, 1)");
+  if (!(agreement_sigmas > 0)) return Status::Error("marker option agreement_sigmas must be > 0");
+  if (!(max_upper_turn_deg > 0 && max_upper_turn_deg < 90)) {
+    return Status::Error("marker option max_upper_turn_deg must be in (0, 90)");
   }
-  if (!(geometry_tolerance > 0 && geometry_tolerance <= 1)) {
-    return Status::Error("--geometry-tolerance must be in (0, 1]");
-  }
-  if (!(ambiguity_margin >= 0)) return Status::Error("--ambiguity-margin must be >= 0");
-  if (!(max_area_misfit > 0)) return Status::Error("--max-area-misfit must be > 0");
-  if (!(min_width_ratio > 0 && max_width_ratio >= min_width_ratio)) {
-    return Status::Error("marker options: need 0 < min_width_ratio <= max_width_ratio");
-  }
+  if (!(upper_tolerance > 0)) return Status::Error("marker option upper_tolerance must be > 0");
   return Status::Ok();
 }
 
@@ -75,75 +74,39 @@ class MarkerEngine : public Engine {
                            std::to_string(context.frame_size.height));
     }
     options_ = requested_;
-    std::vector<MarkerBlob> blobs = FindMarkerCandidates(ref, options_, &scratch_);
     MarkerTriple t;
-    bool found = ChooseReferenceTriple(blobs, scratch_.filtered, options_.thesis_mode, &t);
-    if (!found && options_.auto_window && !options_.thesis_mode) {
-      // Other illumination: shift the window, nearest first, until the markers show.
-      const int width = requested_.high - requested_.low;
-      for (int shift = 5; shift <= 255 && !found; shift += 5) {
-        for (int sign : {-1, 1}) {
-          MarkerOptions o = requested_;
-          o.low = requested_.low + sign * shift;
-          o.high = o.low + width;
-          if (o.low < 0 || o.high > 255) continue;
-          std::vector<MarkerBlob> b = FindMarkerCandidates(ref, o, &scratch_);
-          if (ChooseReferenceTriple(b, scratch_.filtered, false, &t)) {
-            options_ = o;
-            blobs = std::move(b);
-            found = true;
-            break;
-          }
-        }
-      }
-      if (found) FindMarkerCandidates(ref, options_, &scratch_);  // scratch for the refinement
-    }
-    if (!found) {
+    if (!FindReferenceMarkers(ref, &t)) {
       return Status::Error("--reference: cannot find the three markers (" +
-                           std::to_string(blobs.size()) +
+                           std::to_string(reference_blobs_) +
                            " dark blobs passed the threshold and the heuristics; expected two "
                            "side by side and one centred above them)");
     }
-    MarkerReference r;
-    if (!options_.thesis_mode) {
-      // Refine once with the darkest level, learn marker / surround, refine again with it.
+    if (options_.thesis_mode) {
+      ref_.markers = t;
+      ref_.n_px = t.right.centre.x - t.left.centre.x;
+      ref_.e_px = 0.5 * ((t.left.centre.y + t.right.centre.y) * 0.5 - t.upper.centre.y);
+      if (ref_.n_px < 3 || ref_.e_px < 3) {
+        return Status::Error("--reference: the markers are too close together (N = " +
+                             Fixed(ref_.n_px, 1) + " px, e = " + Fixed(ref_.e_px, 1) + " px)");
+      }
+    } else {
+      // Sub-pixel centroids: once with the darkest level, then with the learnt marker/surround.
       double ratio = 0;
-      int count = 0;
       for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
-        if (RefineMarker(scratch_.gray, scratch_.filtered, 0, 0, b)) {
-          ratio += b->core / b->surround;
-          ++count;
+        if (!RefineMarker(scratch_.gray, scratch_.filtered, 0, 0, b)) {
+          return Status::Error("--reference: the markers have too little contrast to measure");
         }
+        ratio += b->core / b->surround;
       }
-      if (count == 3) {
-        r.core_ratio = ratio / 3;
-        for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
-          b->centre = {b->box.x + (b->box.width - 1) / 2.0, b->box.y + (b->box.height - 1) / 2.0};
-          RefineMarker(scratch_.gray, scratch_.filtered, r.core_ratio, 0, b);
-        }
-        r.face_area_px = t.upper.coverage_px;
-        r.marker_height_px = t.upper.box.height;
-        const double cos_alpha =
-            std::clamp(0.5 * (t.left.coverage_px + t.right.coverage_px) / r.face_area_px, 0.0, 1.0);
-        r.alpha_deg = DegFromRad(std::acos(cos_alpha));
+      for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
+        b->centre = {b->box.x + (b->box.width - 1) / 2.0, b->box.y + (b->box.height - 1) / 2.0};
+        RefineMarker(scratch_.gray, scratch_.filtered, ratio / 3, 0, b);
+      }
+      std::string message;
+      if (!CalibrateMarkerJoint(scratch_.gray, t, options_, &cal_, &message)) {
+        return Status::Error("--reference: " + message);
       }
     }
-    r.markers = t;
-    const cv::Point2d mid = (t.left.centre + t.right.centre) * 0.5;
-    r.pair_level = SampleStretch(scratch_.filtered, t.left.centre, t.right.centre).level;
-    r.upper_level =
-        SampleStretch(scratch_.filtered, {mid.x, 0.5 * (mid.y + t.upper.centre.y)}, t.upper.centre)
-            .level;
-    r.n_px = t.right.centre.x - t.left.centre.x;
-    r.e_px = 0.5 * ((t.left.centre.y + t.right.centre.y) * 0.5 - t.upper.centre.y);
-    if (r.n_px < 3 || r.e_px < 3) {
-      return Status::Error("--reference: the markers are too close together (N = " +
-                           Fixed(r.n_px, 1) + " px, e = " + Fixed(r.e_px, 1) + " px)");
-    }
-    if (!options_.thesis_mode && r.face_area_px <= 0) {
-      return Status::Error("--reference: the markers have too little contrast to measure");
-    }
-    ref_ = r;
     size_ = ref.size();
     begun_ = true;
     return Status::Ok();
@@ -163,53 +126,25 @@ class MarkerEngine : public Engine {
       m.note = "image size differs from the reference";
       return m;
     }
-    const std::vector<MarkerBlob> blobs = FindMarkerCandidates(frame.image, options_, &scratch_);
-    m.candidate_boxes.reserve(blobs.size());
-    for (const MarkerBlob& b : blobs) m.candidate_boxes.push_back(b.box);
-    MarkerTriple t;
-    bool ambiguous = false;
-    if (!ChooseTriple(blobs, scratch_.filtered, ref_, options_, &t, &ambiguous)) {
-      m.note = blobs.size() < 3 ? "fewer than three markers found (one hidden?)"
-               : ambiguous      ? "two sets of blobs fit the joint's geometry (clutter competes)"
-                                : "no three blobs fit the joint's geometry";
-      return m;
+    if (options_.thesis_mode) return ProcessThesis(frame.image, m);
+    cv::cvtColor(frame.image, scratch_.gray, cv::COLOR_BGR2GRAY);
+    const MarkerViewResult r = MeasureMarkerView(scratch_.gray, cal_, options_, &view_);
+    m.note = r.note;
+    m.candidate_boxes = r.candidates;
+    if (std::isfinite(r.axis_x_px)) {
+      m.cylinder_axis_px = {{r.axis_x_px, static_cast<double>(r.bottom_row)}, r.pivot_px};
+      m.cylinder_edges_px = {{r.left_edge_px, r.pivot_px.y},
+                             {r.left_edge_px, static_cast<double>(r.bottom_row)},
+                             {r.right_edge_px, r.pivot_px.y},
+                             {r.right_edge_px, static_cast<double>(r.bottom_row)}};
     }
-    if (!options_.thesis_mode) {
-      for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
-        RefineMarker(scratch_.gray, scratch_.filtered, ref_.core_ratio, ref_.marker_height_px, b);
-      }
-    }
-    m.marker_centres = {t.upper.centre, t.left.centre, t.right.centre};
-    const MarkerAngles a = ComputeMarkerAngles(t, ref_, options_.thesis_mode);
-    if (!options_.thesis_mode && std::isfinite(a.area_yaw_deg) &&
-        std::abs(std::abs(a.area_yaw_deg) - a.acos_yaw_deg) > options_.max_yaw_disagreement_deg) {
-      m.note = "the lower markers' areas (yaw " + Fixed(std::abs(a.area_yaw_deg), 0) +
-               ") disagree with their distance (yaw " + Fixed(a.acos_yaw_deg, 0) +
-               "): not the markers";
-      return m;
-    }
-    if (!options_.thesis_mode && std::abs(a.pair_area_ratio - 1) > options_.max_area_misfit) {
-      m.note = "the lower pair shows " + Fixed(100 * a.pair_area_ratio, 0) +
-               " % of the area the joint would: not the markers";
-      return m;
-    }
-    if (!options_.thesis_mode && ref_.alpha_deg + a.yaw_deg > options_.max_marker_turn_deg) {
-      m.note = "a lower marker is nearly edge-on (turned " + Fixed(ref_.alpha_deg + a.yaw_deg, 0) +
-               " degrees from the camera)";
-      return m;
-    }
-    if (!options_.thesis_mode && a.foreshortening < options_.min_foreshortening) {
-      m.note = "a lower marker is nearly edge-on (shows " + Fixed(100 * a.foreshortening, 0) +
-               " % of its face)";
-      return m;
-    }
+    if (!r.ok) return m;
     m.phase = MeasurementPhase::kOk;
-    m.yaw_deg = a.yaw_deg;
-    m.bend_deg = a.bend_deg;
-    m.shoulder_px = a.pivot_px;  // the pivot, for the overlay
-    m.note = options_.thesis_mode ? "three largest"
-                                  : "geometry check; the more turned lower marker shows " +
-                                        Fixed(100 * a.foreshortening, 0) + " % of its face";
+    m.yaw_signed_deg = DegFromRad(r.yaw);
+    m.yaw_deg = std::abs(m.yaw_signed_deg);
+    m.bend_deg = std::isfinite(r.bend) ? Wrap180(DegFromRad(r.bend)) : kNaN;
+    m.shoulder_px = r.pivot_px;  // the pivot, for the overlay
+    m.marker_centres = {r.upper_px, r.left_px, r.right_px};
     return m;
   }
 
@@ -220,23 +155,74 @@ class MarkerEngine : public Engine {
         {"high", std::to_string(options_.high)},
         {"flood_range", std::to_string(options_.flood_range)},
         {"area", std::to_string(options_.min_area) + ".." + std::to_string(options_.max_area)},
-        {"mode", options_.thesis_mode ? "thesis" : "geometry"}};
-    if (begun_) {
+        {"mode", options_.thesis_mode ? "thesis" : "cylinder"}};
+    if (!begun_) return meta;
+    if (options_.thesis_mode) {
       meta.emplace_back("N_px", Fixed(ref_.n_px, 3));
       meta.emplace_back("e_px", Fixed(ref_.e_px, 3));
-      if (!options_.thesis_mode) meta.emplace_back("alpha_deg", Fixed(ref_.alpha_deg, 2));
+    } else {
+      meta.emplace_back("fov_deg", Fixed(options_.fov_deg, 1));
+      meta.emplace_back("radius_px", Fixed(cal_.radius_px, 2));
+      meta.emplace_back(
+          "alpha_deg",
+          Fixed(DegFromRad(0.5 * (cal_.lower.theta_right0 - cal_.lower.theta_left0)), 2));
+      meta.emplace_back("e_radii", Fixed(cal_.upper.e, 3));
     }
     return meta;
   }
 
-  // For tests and the benchmark: the calibration from the reference.
-  const MarkerReference& reference() const { return ref_; }
-
  private:
+  // The reference's three markers (4.2); when [low, high] does not show them (other
+  // illumination), the nearest window of the same width that does.
+  bool FindReferenceMarkers(const cv::Mat& ref, MarkerTriple* t) {
+    std::vector<MarkerBlob> blobs = FindMarkerCandidates(ref, options_, &scratch_);
+    reference_blobs_ = static_cast<int>(blobs.size());
+    if (ChooseReferenceTriple(blobs, scratch_.filtered, options_.thesis_mode, t)) return true;
+    if (!options_.auto_window || options_.thesis_mode) return false;
+    const int width = requested_.high - requested_.low;
+    for (int shift = 5; shift <= 255; shift += 5) {
+      for (int sign : {-1, 1}) {
+        MarkerOptions o = requested_;
+        o.low = requested_.low + sign * shift;
+        o.high = o.low + width;
+        if (o.low < 0 || o.high > 255) continue;
+        blobs = FindMarkerCandidates(ref, o, &scratch_);
+        if (ChooseReferenceTriple(blobs, scratch_.filtered, false, t)) {
+          options_ = o;
+          return true;
+        }
+      }
+    }
+    FindMarkerCandidates(ref, options_, &scratch_);  // leave the scratch as for the window used
+    return false;
+  }
+
+  ArmMeasurement& ProcessThesis(const cv::Mat& image, ArmMeasurement& m) {
+    const std::vector<MarkerBlob> blobs = FindMarkerCandidates(image, options_, &scratch_);
+    m.candidate_boxes.reserve(blobs.size());
+    for (const MarkerBlob& b : blobs) m.candidate_boxes.push_back(b.box);
+    MarkerTriple t;
+    if (!ThreeLargest(blobs, &t)) {
+      m.note = "fewer than three markers found (one hidden?)";
+      return m;
+    }
+    m.marker_centres = {t.upper.centre, t.left.centre, t.right.centre};
+    const MarkerAngles a = ComputeThesisAngles(t, ref_);
+    m.phase = MeasurementPhase::kOk;
+    m.yaw_deg = a.yaw_deg;
+    m.bend_deg = a.bend_deg;
+    m.shoulder_px = a.pivot_px;
+    m.note = "three largest; yaw = acos(n/N)";
+    return m;
+  }
+
   MarkerOptions requested_;
   MarkerOptions options_;  // as used: the window may be shifted by Begin
-  MarkerReference ref_;
+  MarkerReference ref_;    // thesis path
+  MarkerCalibration cal_;  // cylinder model
   MarkerScratch scratch_;
+  MarkerViewScratch view_;
+  int reference_blobs_ = 0;
   cv::Size size_;
   bool begun_ = false;
 };

@@ -14,6 +14,7 @@ AngleRow ArmMeasurement::ToRow() const {
     row.fore_deg = fore_deg;
     row.yaw_deg = yaw_deg;
     row.bend_deg = bend_deg;
+    row.yaw_signed_deg = yaw_signed_deg;
     row.upper_cx = upper_com_px.x;
     row.upper_cy = upper_com_px.y;
     row.fore_cx = fore_com_px.x;
@@ -32,6 +33,8 @@ ArmMeasurement ArmMeasurement::FromRow(const AngleRow& row) {
   m.fore_deg = row.fore_deg;
   m.yaw_deg = row.yaw_deg;
   m.bend_deg = row.bend_deg;
+  m.yaw_signed_deg = row.yaw_signed_deg;
+  m.confidence = row.confidence;
   m.upper_com_px = {row.upper_cx, row.upper_cy};
   m.fore_com_px = {row.fore_cx, row.fore_cy};
   return m;

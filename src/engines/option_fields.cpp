@@ -286,27 +286,21 @@ const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields() {
               "when [low, high] misses the reference's markers, use the nearest window that "
               "shows them"),
       Bool<M>("thesis_mode", &M::thesis_mode, false, "Thesis path only",
-              "--thesis: three largest survivors, box centres, no geometry check")
+              "--thesis: three largest survivors, box centres, yaw = acos(n/N)")
           .Main(),
-      Real<M>("max_marker_turn_deg", &M::max_marker_turn_deg, 70, 1, 90, 1, "Max. marker turn",
-              "a view is lost when a lower marker faces the camera at more than this, degrees"),
-      Real<M>("min_foreshortening", &M::min_foreshortening, 0.2, 0, 0.99, 2, "Min. foreshortening",
-              "... or shows less than this share of its full-face area"),
-      Real<M>("geometry_tolerance", &M::geometry_tolerance, 0.15, 0.01, 1, 2, "Geometry tolerance",
-              "how far (relative to e) the upper marker may be off"),
-      Real<M>("max_yaw_disagreement_deg", &M::max_yaw_disagreement_deg, 10, 0, 180, 1,
-              "Max. yaw disagreement",
-              "lost when the yaw from areas and from distance differ "
-              "by more, degrees"),
-      Real<M>("max_area_misfit", &M::max_area_misfit, 0.2, 0.01, 10, 2, "Max. area misfit",
-              "lost when the pair's area is off the model by more than this share"),
-      Real<M>("ambiguity_margin", &M::ambiguity_margin, 0.05, 0, 10, 3, "Ambiguity margin",
-              "lost when a second triple's misfit is within this margin of the best"),
-      Real<M>("min_width_ratio", &M::min_width_ratio, 0.6, 0.01, 10, 2, "Min. width ratio",
-              "accepted range of the markers' width ratio, lower end")
-          .Below("max_width_ratio"),
-      Real<M>("max_width_ratio", &M::max_width_ratio, 1.1, 0.01, 10, 2, "Max. width ratio",
-              "accepted range of the markers' width ratio, upper end"),
+      Real<M>("fov_deg", &M::fov_deg, 60, 0, 140, 1, "Camera field of view",
+              "--fov: the camera's horizontal field of view, degrees (0: a distant camera)")
+          .Main(),
+      Real<M>("max_marker_turn_deg", &M::max_marker_turn_deg, 74, 1, 89, 1, "Max. marker turn",
+              "a view is read only when a lower marker faces the camera within this, degrees"),
+      Real<M>("agreement_sigmas", &M::agreement_sigmas, 4, 0.5, 100, 1, "Marker agreement",
+              "lost when the two lower markers' yaws differ by more than this many expected "
+              "spreads (plus 1 degree)"),
+      Real<M>("max_upper_turn_deg", &M::max_upper_turn_deg, 60, 1, 89, 1, "Max. upper turn",
+              "the bend is measured while the upper marker faces the camera within this, "
+              "degrees"),
+      Real<M>("upper_tolerance", &M::upper_tolerance, 0.06, 0.01, 1, 2, "Upper marker tolerance",
+              "how far (relative to e) the upper marker may lie from where the model puts it"),
   };
   return fields;
 }
@@ -324,6 +318,15 @@ const std::vector<OptionField<PoseOptions>>& PoseOptionFields() {
           .Main(),
       Real<P>("crop_score", &P::crop_score, 0.2, 0, 1, 2, "Crop keypoint score",
               "keypoints above this score place the next frame's crop"),
+      Real<P>("arm_crop", &P::arm_crop, 1.5, 0, 4, 2, "Arm look size",
+              "a second look through a square this many times the upper body's extent gives the "
+              "directions (0: one look)"),
+      Real<P>("max_disagreement_deg", &P::max_disagreement_deg, 15, 1, 180, 1,
+              "Maximum disagreement",
+              "a segment whose direction differs more between the looks "
+              "(degrees) is lost"),
+      Bool<P>("flip", &P::flip, false, "Mirrored look",
+              "also look at the mirrored crop and average (one more inference per frame)"),
   };
   return fields;
 }

@@ -1,9 +1,11 @@
 // Uses of the pose network outside the pose engine: the arm's joints in one frame
-// (--auto-calibrate for the tracking engines) and the choice of arm over the first second.
+// (--auto-calibrate for the tracking engines, looked at as the engine does) and the choice of arm
+// over the first second.
 #include <algorithm>
 
 #include "armmimic/core/video_source.h"
 #include "armmimic/engines/pose.h"
+#include "pose_looks.h"
 #include "pose_prepare.h"
 
 namespace armmimic {
@@ -28,17 +30,17 @@ Status ReadFrame(VideoSource* source, int index, Frame* frame) {
 }  // namespace
 
 Status DetectArmJoints(const std::vector<std::string>& inputs, int frame, PoseSide side,
-                       const std::string& model_dir, double min_score, PoseArm* arm,
+                       const std::string& model_dir, const PoseOptions& options, PoseArm* arm,
                        PoseSide* chosen) {
   return internal::DetectArmJointsFrom(
       [&inputs](Status* st) { return VideoSource::Open(inputs, st); }, frame, side, model_dir,
-      min_score, arm, chosen);
+      options, arm, chosen);
 }
 
 namespace internal {
 
 Status DetectArmJointsFrom(const SourceOpener& open, int frame, PoseSide side,
-                           const std::string& model_dir, double min_score, PoseArm* arm,
+                           const std::string& model_dir, const PoseOptions& options, PoseArm* arm,
                            PoseSide* chosen) {
   Status st;
   std::unique_ptr<PoseNetwork> net = PoseNetwork::Load(model_dir, &st);
@@ -48,29 +50,32 @@ Status DetectArmJointsFrom(const SourceOpener& open, int frame, PoseSide side,
   Frame f;
   st = ReadFrame(source.get(), frame, &f);
   if (!st) return st;
-  // Two passes as the engine's crop tracking would make them: the whole image, then a crop
-  // around what it found (the arm is seen larger).
-  PoseKeypoints k = net->Run(f.image, WholeImageCrop(f.image.size()));
-  const PoseKeypoints closer = net->Run(f.image, NextCrop(k, f.image.size(), 0.2));
+  // The body look as the engine's crop tracking would take it (the whole image, then a crop
+  // around what it found, where the person is seen larger), then the engine's closer looks.
+  const PoseCrop whole = WholeImageCrop(f.image.size());
+  PoseKeypoints k = net->Run(f.image, whole);
+  const PoseCrop near = NextCrop(k, f.image.size(), options.crop_score);
+  const PoseKeypoints closer = net->Run(f.image, near);
   auto best = [&](const PoseKeypoints& kp) {
     return std::max(ArmOf(kp, PoseSide::kLeft).score, ArmOf(kp, PoseSide::kRight).score);
   };
-  if ((side == PoseSide::kAuto ? best(closer) : ArmOf(closer, side).score) >=
-      (side == PoseSide::kAuto ? best(k) : ArmOf(k, side).score)) {
-    k = closer;
-  }
+  const bool take_closer = (side == PoseSide::kAuto ? best(closer) : ArmOf(closer, side).score) >=
+                           (side == PoseSide::kAuto ? best(k) : ArmOf(k, side).score);
+  if (take_closer) k = closer;
   if (side == PoseSide::kAuto) {
     side = ArmOf(k, PoseSide::kLeft).score >= ArmOf(k, PoseSide::kRight).score ? PoseSide::kLeft
                                                                                : PoseSide::kRight;
   }
-  *arm = ArmOf(k, side);
+  const internal::PoseLooks looks =
+      internal::TakeLooks(net.get(), f.image, k, take_closer ? near : whole, side, options);
+  *arm = ArmOf(looks.Combined(), side);
   *chosen = side;
-  if (arm->score < min_score) {
+  if (arm->score < options.min_score) {
     return Status::Error("the person's " + std::string(PoseSideName(side)) +
                          " arm is not seen clearly in frame " + std::to_string(f.index) + " of " +
                          source->info().path + " (keypoint score " +
                          std::to_string(arm->score).substr(0, 4) + ", at least " +
-                         std::to_string(min_score).substr(0, 4) +
+                         std::to_string(options.min_score).substr(0, 4) +
                          " needed); choose another --start or give the joints");
   }
   return Status::Ok();

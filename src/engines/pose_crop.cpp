@@ -1,4 +1,5 @@
-// MoveNet's crop tracking (the demo's init_crop_region and determine_crop_region), in pixels.
+// MoveNet's crop tracking (the demo's init_crop_region and determine_crop_region), in pixels,
+// and the arm look's closer square around the upper body.
 #include <algorithm>
 #include <cmath>
 
@@ -52,6 +53,24 @@ PoseCrop NextCrop(const PoseKeypoints& k, const cv::Size& image, double min_scor
   half = std::min(half, std::max({centre.x, w - centre.x, centre.y, h - centre.y}));
   if (!(half > 0) || half > std::max(w, h) / 2) return WholeImageCrop(image);
   return {centre.x - half, centre.y - half, 2 * half};
+}
+
+bool ArmLookCrop(const PoseKeypoints& k, double factor, double min_score, PoseCrop* crop) {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  int seen = 0;
+  for (int j = kLeftShoulder; j <= kRightHip; ++j) {
+    if (k.score[j] < min_score) continue;
+    const cv::Point2d& p = k.px[j];
+    x0 = seen ? std::min(x0, p.x) : p.x;
+    x1 = seen ? std::max(x1, p.x) : p.x;
+    y0 = seen ? std::min(y0, p.y) : p.y;
+    y1 = seen ? std::max(y1, p.y) : p.y;
+    ++seen;
+  }
+  const double half = factor * std::max(x1 - x0, y1 - y0) / 2;
+  if (seen < 4 || !(half > 0)) return false;
+  *crop = {(x0 + x1) / 2 - half, (y0 + y1) / 2 - half, 2 * half};
+  return true;
 }
 
 PoseArm ArmOf(const PoseKeypoints& k, PoseSide side) {

@@ -126,6 +126,12 @@ Status ReadConstants(const internal::TfjsGraph& g, const std::string& json,
   return Status::Ok();
 }
 
+// Input pixels to image pixels (MoveNet's demo: crop corner + normalised keypoint * crop size).
+void ToImage(const PoseCrop& crop, PoseKeypoints* k) {
+  const double n = PoseNetwork::kInputSize;
+  for (cv::Point2d& p : k->px) p = {crop.x + p.x / n * crop.size, crop.y + p.y / n * crop.size};
+}
+
 }  // namespace
 
 struct PoseNetwork::Impl {
@@ -242,10 +248,23 @@ PoseKeypoints PoseNetwork::RunInput(const cv::Mat& rgb192) {
 
 PoseKeypoints PoseNetwork::Run(const cv::Mat& bgr, const PoseCrop& crop) {
   PoseKeypoints k = RunInput(MakeInput(bgr, crop));
-  // MoveNet's demo: image = crop corner + normalised keypoint * crop size.
-  for (cv::Point2d& p : k.px) {
-    p = {crop.x + p.x / kInputSize * crop.size, crop.y + p.y / kInputSize * crop.size};
+  ToImage(crop, &k);
+  return k;
+}
+
+PoseKeypoints PoseNetwork::RunMirrored(const cv::Mat& bgr, const PoseCrop& crop) {
+  cv::Mat mirrored;
+  cv::flip(MakeInput(bgr, crop), mirrored, 1);
+  const PoseKeypoints m = RunInput(mirrored);
+  PoseKeypoints k;
+  for (int i = 0; i < kPoseKeypointCount; ++i) {
+    // The nose is 0; left and right pairs follow (1, 2), (3, 4), ... (15, 16).
+    const int j = i == 0 ? 0 : (i % 2 == 1 ? i + 1 : i - 1);
+    // Input column c mirrors to column 191 - c, and the network's x counts columns.
+    k.px[i] = {(kInputSize - 1) - m.px[j].x, m.px[j].y};
+    k.score[i] = m.score[j];
   }
+  ToImage(crop, &k);
   return k;
 }
 

@@ -33,6 +33,12 @@ Status PoseOptions::Check() const {
     return Status::Error("pose option min_length_ratio must be in [0, 1]");
   }
   if (!in(crop_score, 0, 1)) return Status::Error("pose option crop_score must be in [0, 1]");
+  if (!in(arm_crop, 0, 4) || (arm_crop > 0 && arm_crop < 1)) {
+    return Status::Error("pose option arm_crop must be 0 (one look) or in [1, 4]");
+  }
+  if (!in(max_disagreement_deg, 1, 180)) {
+    return Status::Error("pose option max_disagreement_deg must be in [1, 180]");
+  }
   return Status::Ok();
 }
 

@@ -18,7 +18,7 @@ using SourceOpener = std::function<std::unique_ptr<VideoSource>(Status*)>;
 
 // DetectArmJoints (pose.h) on the input `open` gives.
 Status DetectArmJointsFrom(const SourceOpener& open, int frame, PoseSide side,
-                           const std::string& model_dir, double min_score, PoseArm* arm,
+                           const std::string& model_dir, const PoseOptions& options, PoseArm* arm,
                            PoseSide* chosen);
 
 // The arm better seen over frames [start, start + one second): the scores summed over a few

@@ -231,6 +231,11 @@ void AnglePlot::setResults(const ResultStore& results) {
   legend_[int(PlotCurve::kUpper)]->setVisible(!file_column_);
   legend_[int(PlotCurve::kFore)]->setVisible(!file_column_);
   legend_[int(PlotCurve::kBend)]->setVisible(file_column_);
+  // The marker engine's yaw has a sign; the plot shows it, so turns either way stay apart.
+  const bool signed_yaw = std::any_of(rows_.begin(), rows_.end(), [](const AngleRow& r) {
+    return r.ok() && std::isfinite(r.yaw_signed_deg);
+  });
+  legend_[int(PlotCurve::kYaw)]->setName(signed_yaw ? tr("yaw (signed)") : tr("yaw"));
   // An engine that measures no yaw (LK) gets no yaw entry in the legend; no results yet, all.
   legend_[int(PlotCurve::kYaw)]->setVisible(has_yaw_ || rows_.empty());
   redrawLayers();
@@ -246,7 +251,7 @@ double AnglePlot::valueOf(const AngleRow& row, PlotCurve c) const {
     case PlotCurve::kFore:
       return row.fore_deg;
     case PlotCurve::kYaw:
-      return row.yaw_deg;
+      return std::isfinite(row.yaw_signed_deg) ? row.yaw_signed_deg : row.yaw_deg;
     case PlotCurve::kBend:
       return row.bend_deg;
   }
@@ -386,6 +391,15 @@ QPointF AnglePlot::valueAt(const QPointF& widget_pos) const {
   const double y =
       y_->min() + (area.bottom() - chart_pos.y()) / area.height() * (y_->max() - y_->min());
   return QPointF(frameOf(x), y);
+}
+
+QList<QPointF> AnglePlot::yawPoints() const {
+  QList<QPointF> out;
+  for (const AngleRow& row : rows_) {
+    const double v = valueOf(row, PlotCurve::kYaw);
+    if (std::isfinite(v)) out.append(QPointF(row.frame, v));
+  }
+  return out;
 }
 
 int AnglePlot::frameAt(const QPointF& widget_pos) const {

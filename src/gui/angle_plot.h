@@ -42,8 +42,9 @@ class AnglePlot : public QChartView {
   int cursorFrame() const { return cursor_frame_; }
   int pointCount() const;  // measured frames on the upper-arm curve, for tests
   int lostCount() const;
-  int bendCount() const;  // measured frames on the bend curve (marker views)
-  bool yawShown() const;  // the yaw curve and its legend entry
+  int bendCount() const;             // measured frames on the bend curve (marker views)
+  bool yawShown() const;             // the yaw curve and its legend entry
+  QList<QPointF> yawPoints() const;  // (frame, yaw) drawn: signed for marker views
   // Runs of consecutive frames a curve is drawn through, as (first, last) frame pairs.
   std::vector<std::pair<int, int>> runs(PlotCurve curve) const;
   // The frame axis' label step: 1, 2, 5, 10, 20, ... so that every label is a whole frame (in

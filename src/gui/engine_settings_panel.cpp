@@ -346,8 +346,8 @@ Status EngineSettingsPanel::autoCalibrate(const std::vector<std::string>& inputs
   const AnalysisOptions o = options();
   PoseArm arm;
   PoseSide side = PoseSide::kAuto;
-  const Status st = DetectArmJoints(inputs, o.start, PoseSide::kAuto, o.model_dir,
-                                    o.engine.pose.min_score, &arm, &side);
+  const Status st =
+      DetectArmJoints(inputs, o.start, PoseSide::kAuto, o.model_dir, o.engine.pose, &arm, &side);
   if (!st) return Status::Error("Auto-calibrate: " + st.message());
   setJoint(1, arm.elbow);
   setJoint(2, arm.wrist);

@@ -17,6 +17,12 @@ QString Deg(double v) {
   return QString::number(v, 'f', 1) + QChar(0x00B0);
 }
 
+// A signed angle with its sign spelled out ("+12.3°", "-4.0°").
+QString SignedDeg(double v) {
+  if (std::isnan(v)) return Deg(v);
+  return (v >= 0 ? QStringLiteral("+") : QString()) + Deg(v);
+}
+
 bool Finite(const cv::Point2d& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 QPointF Q(const cv::Point2d& p) { return QPointF(p.x, p.y); }
 
@@ -24,6 +30,7 @@ const QColor kUpper(255, 196, 0);
 const QColor kFore(0, 200, 255);
 const QColor kJoint(255, 64, 64);
 const QColor kMarker(80, 255, 80);
+const QColor kAxis(255, 0, 220);  // the marker joint's fitted cylinder
 
 // Text with a dark halo so it reads over any video.
 void HaloText(QPainter& p, const QPointF& baseline, const QString& text, const QColor& color) {
@@ -48,7 +55,9 @@ OverlayTexts MakeOverlayTexts(const ArmMeasurement* m, int frame_index, int fram
     t.state = "not analysed";
     return t;
   }
-  t.yaw = "yaw " + Deg(m->yaw_deg);
+  // The marker engine's yaw has a sign: positive turns the joint's right side to the camera.
+  t.yaw = std::isnan(m->yaw_signed_deg) ? "yaw " + Deg(m->yaw_deg)
+                                        : "yaw " + SignedDeg(m->yaw_signed_deg);
   if (IsMarkerView(*m)) {
     t.orientation = "bend " + Deg(m->bend_deg);  // the 2-DOF joint has no arm segments
   } else {
@@ -138,14 +147,28 @@ void PaintOverlayShapes(QPainter& p, QSize image_size, const ArmMeasurement* m,
       for (const cv::Rect& r : m->candidate_boxes) p.drawRect(QRectF(r.x, r.y, r.width, r.height));
       p.setPen(QPen(kMarker, 1.5 * unit));
       for (std::size_t i = 0; i < m->marker_centres.size(); ++i) {
+        if (!Finite(m->marker_centres[i])) continue;  // a marker not measured in this view
         const QPointF c = Q(m->marker_centres[i]);
         p.drawLine(c - QPointF(4 * unit, 0), c + QPointF(4 * unit, 0));
         p.drawLine(c - QPointF(0, 4 * unit), c + QPointF(0, 4 * unit));
       }
       if (m->marker_centres.size() >= 3) {
         p.setPen(QPen(kMarker, unit, Qt::DashLine));
-        p.drawLine(Q(m->marker_centres[0]), Q(m->marker_centres[1]));
-        p.drawLine(Q(m->marker_centres[0]), Q(m->marker_centres[2]));
+        for (int i : {1, 2}) {
+          if (Finite(m->marker_centres[0]) && Finite(m->marker_centres[i])) {
+            p.drawLine(Q(m->marker_centres[0]), Q(m->marker_centres[i]));
+          }
+        }
+      }
+      // The lower part's fitted cylinder: its silhouette and, bolder, its axis up to the pivot.
+      if (m->cylinder_edges_px.size() == 4) {
+        p.setPen(QPen(kAxis, 0.75 * unit, Qt::DotLine));
+        p.drawLine(Q(m->cylinder_edges_px[0]), Q(m->cylinder_edges_px[1]));
+        p.drawLine(Q(m->cylinder_edges_px[2]), Q(m->cylinder_edges_px[3]));
+      }
+      if (m->cylinder_axis_px.size() == 2) {
+        p.setPen(QPen(kAxis, 1.5 * unit, Qt::DashDotLine));
+        p.drawLine(Q(m->cylinder_axis_px[0]), Q(m->cylinder_axis_px[1]));
       }
     }
     if (o.features) {

@@ -1,8 +1,8 @@
 // The thesis overlay (appendix B, Fig. 4-3): frame count upper left, yaw middle right, upper-arm
 // and forearm orientation lower right, centres of mass as circles, the segments, elbow and
-// shoulder, for the marker engine the markers and candidate boxes, and for the pose engine the
-// skeleton with each keypoint's score. Painted in image pixels,
-// so the same code draws the view and the saved frame.
+// shoulder, for the marker engine the markers, candidate boxes, the lower part's fitted cylinder
+// (silhouette and axis) and the signed yaw, and for the pose engine the skeleton with each
+// keypoint's score. Painted in image pixels, so the same code draws the view and the saved frame.
 #pragma once
 
 #include <QPainter>
@@ -21,7 +21,7 @@ struct OverlayOptions {
   bool segments = true;
   bool elbow = true;
   bool shoulder = true;
-  bool markers = true;   // marker centres and candidate boxes
+  bool markers = true;   // marker centres, candidate boxes and the fitted cylinder
   bool features = true;  // LK features
   bool contour = false;  // arm contour and hull
   bool skeleton = true;  // pose engine: the keypoints, bones and keypoint scores
@@ -30,7 +30,7 @@ struct OverlayOptions {
 // The texts the overlay shows, so tests and the status bar read the same values.
 struct OverlayTexts {
   QString frame;        // "frame 12 / 300"
-  QString yaw;          // "yaw 23.4°" or "yaw —"
+  QString yaw;          // "yaw 23.4°", for the marker engine signed ("yaw -23.4°"), or "yaw —"
   QString orientation;  // "upper -90.0°  fore -45.0°"; for a marker view "bend 12.0°"
   QString state;        // "ok", "lost: <note>", "setup"
 };

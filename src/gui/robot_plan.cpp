@@ -119,7 +119,7 @@ bool RobotPlan::MappedPose(int frame, const robot::PlannerOptions& options,
     if (!row.ok() || (std::isnan(row.upper_deg) && mapping.kind == robot::SourceKind::kArm)) {
       return false;
     }
-    const double yaw = std::isnan(row.yaw_deg) ? 0.0 : row.yaw_deg;
+    const double yaw = std::isnan(row.turn_yaw_deg()) ? 0.0 : row.turn_yaw_deg();
     const double bend = std::isnan(row.bend_deg) ? 0.0 : row.bend_deg;
     const double upper = std::isnan(row.upper_deg) ? -90.0 : row.upper_deg;
     *out = mapping.Map(upper, bend, yaw);

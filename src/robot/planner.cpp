@@ -242,7 +242,7 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
     double u = marker ? 0.0 : r.upper_deg;
     double b = r.bend_deg;
     if (!std::isfinite(u) || !std::isfinite(b)) continue;
-    const double y = std::isfinite(r.yaw_deg) ? r.yaw_deg : kNaN;
+    const double y = std::isfinite(r.turn_yaw_deg()) ? r.turn_yaw_deg() : kNaN;
     if (prev >= 0) {
       u -= 360.0 * std::round((u - upper[prev]) / 360.0);
       b -= 360.0 * std::round((b - bend[prev]) / 360.0);

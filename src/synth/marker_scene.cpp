@@ -11,14 +11,15 @@
 #include <opencv2/imgproc.hpp>
 
 #include "armmimic/core/angle_file.h"
+#include "armmimic/core/angles.h"
 #include "armmimic/core/image_io.h"
 #include "marker_render.h"
 
 namespace armmimic::synth {
 
-const char* const kMarkerTruthExtra[9] = {"file",    "readable", "yaw_signed_deg",
-                                          "upper_x", "upper_y",  "left_x",
-                                          "left_y",  "right_x",  "right_y"};
+const char* const kMarkerTruthExtra[12] = {
+    "file",   "readable", "yaw_signed_deg", "upper_x",        "upper_y",       "left_x",
+    "left_y", "right_x",  "right_y",        "upper_readable", "left_readable", "right_readable"};
 
 namespace {
 
@@ -106,22 +107,29 @@ Status MarkerSceneOptions::Check() const {
     return Status::Error("--size: the image must be at least 4:3 wide so the bent joint fits");
   }
   if (views < 1 || views > 100000) return Status::Error("--views must be in [1, 100000]");
-  if (!(max_yaw_deg >= 0 && max_yaw_deg <= 80)) {
-    return Status::Error("--max-yaw must be in [0, 80] degrees");
+  if (!(max_yaw_deg >= 0 && max_yaw_deg <= 180)) {
+    return Status::Error("--max-yaw must be in [0, 180] degrees");
   }
   if (!(max_bend_deg >= 0 && max_bend_deg <= 80)) {
     return Status::Error("--max-bend must be in [0, 80] degrees");
   }
   if (!(noise_sigma >= 0 && noise_sigma <= 50)) return Status::Error("--noise must be in [0, 50]");
-  if (background != "mixed" && !OneOf(background, kBackgrounds)) {
+  if (background != "mixed" && background != "simple" && !OneOf(background, kBackgrounds)) {
     return Status::Error("--background '" + background +
-                         "' is not one of plain, gradient, texture, room, mixed");
+                         "' is not one of plain, gradient, texture, room, simple, mixed");
   }
   if (lighting != "mixed" && !OneOf(lighting, kLightings)) {
     return Status::Error("--lighting '" + lighting +
                          "' is not one of normal, bright, dim, side, shadow, mixed");
   }
   if (clutter < 0 || clutter > 100) return Status::Error("--clutter must be in [0, 100]");
+  if (camera.projection != "perspective" && camera.projection != "orthographic") {
+    return Status::Error("--camera '" + camera.projection +
+                         "' is not one of perspective, orthographic");
+  }
+  if (!(camera.fov_deg >= 10 && camera.fov_deg <= 120)) {
+    return Status::Error("--fov must be in [10, 120] degrees");
+  }
   return Status::Ok();
 }
 
@@ -139,13 +147,17 @@ TruthRow MarkerTruth::ToRow() const {
                FormatNumber(left_px.x, 3),
                FormatNumber(left_px.y, 3),
                FormatNumber(right_px.x, 3),
-               FormatNumber(right_px.y, 3)};
+               FormatNumber(right_px.y, 3),
+               upper_readable ? "1" : "0",
+               left_readable ? "1" : "0",
+               right_readable ? "1" : "0"};
   return row;
 }
 
 struct MarkerSceneRenderer::Impl {
   MarkerSceneOptions options;
   MarkerJointModel model;
+  internal::MarkerView view;
   std::string background_kind;
   std::string lighting_kind;
   internal::MarkerLight light;
@@ -167,8 +179,14 @@ MarkerSceneRenderer::MarkerSceneRenderer(const MarkerSceneOptions& options)
   m.model.pivot_px.x += rng.uniform(-22.0, 22.0) * k;
   m.model.pivot_px.y += rng.uniform(-6.0, 6.0) * k;
 
-  m.background_kind =
-      options.background != "mixed" ? options.background : kBackgrounds[rng.uniform(0, 4)];
+  m.view = internal::MarkerView::Make(m.model, options.camera, size);
+  if (options.background == "mixed") {
+    m.background_kind = kBackgrounds[rng.uniform(0, 4)];
+  } else if (options.background == "simple") {
+    m.background_kind = kBackgrounds[rng.uniform(0, 2)];
+  } else {
+    m.background_kind = options.background;
+  }
   if (options.lighting != "mixed") {
     m.lighting_kind = options.lighting;
   } else {
@@ -207,7 +225,8 @@ MarkerSceneRenderer::MarkerSceneRenderer(const MarkerSceneOptions& options)
     for (cv::Mat& c3 : ch) c3 = c3.mul(shade);
     cv::merge(ch, m.background);
   }
-  // Dark clutter: every third blob sits beside the lower markers, where it competes best.
+  // Dark clutter: every third blob sits beside the lower markers and every third within the
+  // upper marker's reach, where they compete best.
   const double lower_y = m.model.pivot_px.y + m.model.pivot_distance_px;
   for (int i = 0; i < options.clutter; ++i) {
     cv::Point2d c;
@@ -215,6 +234,11 @@ MarkerSceneRenderer::MarkerSceneRenderer(const MarkerSceneOptions& options)
       const double side = rng.uniform(0.0, 1.0) < 0.5 ? -1 : 1;
       c = cv::Point2d(m.model.pivot_px.x + side * (m.model.radius_px + rng.uniform(6.0, 30.0) * k),
                       lower_y + rng.uniform(-5.0, 5.0) * k);
+    } else if (i % 3 == 1) {
+      const double a = RadFromDeg(rng.uniform(-90.0, 90.0));
+      const double dist = m.model.pivot_distance_px * rng.uniform(0.8, 1.25);
+      c = cv::Point2d(m.model.pivot_px.x + dist * std::sin(a),
+                      m.model.pivot_px.y - dist * std::cos(a));
     } else {
       c = cv::Point2d(rng.uniform(0.0, 1.0) * size.width, rng.uniform(0.0, 1.0) * size.height);
     }
@@ -249,7 +273,7 @@ MarkerPose MarkerSceneRenderer::Pose(int index) const {
 
 MarkerTruth MarkerSceneRenderer::Truth(int index) const {
   MarkerTruth t;
-  internal::ProjectMarkerJoint(impl_->model, Pose(index), impl_->options.size, &t);
+  internal::ProjectMarkerJoint(impl_->model, impl_->view, Pose(index), impl_->options.size, &t);
   t.frame = index;
   char name[32];
   std::snprintf(name, sizeof(name), "view_%03d.png", index);
@@ -261,7 +285,7 @@ cv::Mat MarkerSceneRenderer::RenderPose(const MarkerPose& pose, uint64_t noise_s
                                         MarkerTruth* truth) const {
   const Impl& m = *impl_;
   cv::Mat canvas = m.background.clone();
-  internal::RenderMarkerJoint(m.model, pose, m.light, m.material, &canvas);
+  internal::RenderMarkerJoint(m.model, m.view, pose, m.light, m.material, &canvas);
   if (m.options.noise_sigma > 0) {
     cv::Mat noise(canvas.size(), CV_32FC3);
     cv::RNG rng(noise_seed * 6364136223846793005ULL + m.options.seed + 1);
@@ -270,7 +294,7 @@ cv::Mat MarkerSceneRenderer::RenderPose(const MarkerPose& pose, uint64_t noise_s
   }
   cv::Mat out;
   canvas.convertTo(out, CV_8UC3);  // rounds and saturates
-  if (truth) internal::ProjectMarkerJoint(m.model, pose, m.options.size, truth);
+  if (truth) internal::ProjectMarkerJoint(m.model, m.view, pose, m.options.size, truth);
   return out;
 }
 
@@ -314,6 +338,8 @@ Status WriteMarkerScene(const MarkerSceneOptions& options, const std::string& ou
                 {"background", scene.background_kind()},
                 {"lighting", scene.lighting_kind()},
                 {"clutter", std::to_string(options.clutter)},
+                {"camera", options.camera.projection},
+                {"fov_deg", FormatNumber(options.camera.fov_deg, 2)},
                 {"noise", FormatNumber(options.noise_sigma, 2)},
                 {"radius_px", FormatNumber(model.radius_px, 3)},
                 {"marker_radius_px", FormatNumber(model.marker_radius_px, 3)},

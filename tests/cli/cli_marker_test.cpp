@@ -1,4 +1,6 @@
 // armmimic-cli synth marker / analyze --engine marker / score, end to end, and exit codes.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "armmimic/core/angle_file.h"
@@ -24,9 +26,14 @@ TEST(CliMarker, SynthAnalyzeScore) {
   ASSERT_EQ(f.rows.size(), 12u);
   EXPECT_EQ(f.rows[0].file, "view_000.png");
   EXPECT_EQ(f.rows[11].file, "view_011.png");
+  EXPECT_TRUE(f.has_signed_yaw_column);
+  EXPECT_EQ(f.Meta("mode"), "cylinder");
   int ok = 0;
-  for (const AngleRow& row : f.rows) ok += row.ok();
-  EXPECT_GE(ok, 6);
+  for (const AngleRow& row : f.rows) {
+    ok += row.ok();
+    if (row.ok()) EXPECT_DOUBLE_EQ(row.yaw_deg, std::abs(row.yaw_signed_deg));
+  }
+  EXPECT_GE(ok, 10);
   r = test::RunCli({"score", scene + "/truth.tsv", angles});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("yaw"), std::string::npos) << r.out;

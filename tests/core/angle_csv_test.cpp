@@ -29,7 +29,7 @@ TEST(AngleCsv, HeaderNamesEveryColumnWithItsUnit) {
             "upper_cy (px),fore_cx (px),fore_cy (px)");
   EXPECT_EQ(FormatCsvHeader(true, CsvStyle::kSemicolon),
             "frame;time (s);status;upper (deg);fore (deg);yaw (deg);bend (deg);upper_cx (px);"
-            "upper_cy (px);fore_cx (px);fore_cy (px);file");
+            "upper_cy (px);fore_cx (px);fore_cy (px);file;yaw signed (deg)");
 }
 
 TEST(AngleCsv, MissingValuesAreEmptyCells) {
@@ -51,13 +51,16 @@ TEST(AngleCsv, FileNamesAreQuotedOnlyWhenNeeded) {
   AngleRow r = OkRow();
   r.file = "view 1.png";
   EXPECT_EQ(FormatCsvRow(r, true, CsvStyle::kComma),
-            "12,0.4000,ok,-90.500,12.346,,102.846,160.25,100.50,170.00,80.00,view 1.png");
+            "12,0.4000,ok,-90.500,12.346,,102.846,160.25,100.50,170.00,80.00,view 1.png,");
+  r.yaw_signed_deg = -23.4567;  // the marker engine's signed yaw follows the file
+  EXPECT_EQ(FormatCsvRow(r, true, CsvStyle::kSemicolon),
+            "12;0,4000;ok;-90,500;12,346;;102,846;160,25;100,50;170,00;80,00;view 1.png;-23,457");
   r.file = "a,b\"c.png";
   const std::string comma = FormatCsvRow(r, true, CsvStyle::kComma);
-  EXPECT_EQ(comma.substr(comma.rfind(",\"") + 1), "\"a,b\"\"c.png\"");
+  EXPECT_EQ(comma.substr(comma.rfind(",\"") + 1), "\"a,b\"\"c.png\",-23.457");
   // With ';' as separator a comma in a name needs no quotes, but the quote still does.
   const std::string semi = FormatCsvRow(r, true, CsvStyle::kSemicolon);
-  EXPECT_EQ(semi.substr(semi.rfind(';') + 1), "\"a,b\"\"c.png\"");
+  EXPECT_EQ(semi.substr(semi.rfind(";\"") + 1), "\"a,b\"\"c.png\";-23,457");
 }
 
 TEST(AngleCsv, FileFromTheCliHasOneLinePerRowAndTheSameValues) {

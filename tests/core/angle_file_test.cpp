@@ -111,6 +111,42 @@ TEST(AngleFile, MarkerFileColumnRoundTrips) {
   EXPECT_DOUBLE_EQ(f.rows[0].yaw_deg, 12);
 }
 
+TEST(AngleFile, MarkerSignedYawRoundTripsAndIsFoundByName) {
+  test::TempDir dir;
+  const std::string path = dir.file("m.tsv");
+  AngleFileWriter w;
+  ASSERT_TRUE(w.Open(path, {{"engine", "marker"}}, true, false, true).ok());
+  AngleRow r;
+  r.status = RowStatus::kOk;
+  r.yaw_deg = 12.5;
+  r.yaw_signed_deg = -12.5;
+  r.bend_deg = 3;
+  r.file = "img_000.png";
+  ASSERT_TRUE(w.Write(r).ok());
+  AngleRow lost;
+  lost.frame = 1;
+  lost.file = "img_001.png";
+  ASSERT_TRUE(w.Write(lost).ok());
+  ASSERT_TRUE(w.Commit().ok());
+  EXPECT_NE(test::ReadFile(path).find("\tfile\tyaw_signed_deg\n"), std::string::npos);
+  AngleFile f;
+  ASSERT_TRUE(ReadAngleFile(path, &f).ok());
+  ASSERT_TRUE(f.has_file_column && f.has_signed_yaw_column);
+  EXPECT_DOUBLE_EQ(f.rows[0].yaw_signed_deg, -12.5);
+  EXPECT_DOUBLE_EQ(f.rows[0].turn_yaw_deg(), -12.5);
+  EXPECT_TRUE(std::isnan(f.rows[1].yaw_signed_deg));
+  // Found by name among other trailing columns, in any order; without it the yaw is yaw_deg.
+  const std::string text = std::string(kHeader) + "\tconfidence\tyaw_signed_deg\tfile\n" +
+                           "0\t0\tok\tnan\tnan\t7\t1\tnan\tnan\tnan\tnan\t0.9\t7\ta.png\n";
+  ASSERT_TRUE(Parse(text, &f).ok()) << Parse(text, &f).message();
+  EXPECT_DOUBLE_EQ(f.rows[0].yaw_signed_deg, 7);
+  const std::string plain =
+      std::string(kHeader) + "\n0\t0\tok\tnan\tnan\t7\t1\tnan\tnan\tnan\tnan\n";
+  ASSERT_TRUE(Parse(plain, &f).ok());
+  EXPECT_FALSE(f.has_signed_yaw_column);
+  EXPECT_DOUBLE_EQ(f.rows[0].turn_yaw_deg(), 7);
+}
+
 TEST(AngleFile, UnknownTrailingColumnsAreIgnored) {
   std::string text =
       std::string(kHeader) + "\textra\n" + "3\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t7\twhatever\n";
@@ -158,6 +194,8 @@ struct BadCase {
 
 TEST(AngleFile, MalformedFilesNameTheLine) {
   const std::string h = std::string("# armmimic angles v1\n") + kHeader + "\n";
+  const std::string signed_h =
+      std::string("# armmimic angles v1\n") + kHeader + "\tyaw_signed_deg\n";
   const std::vector<BadCase> cases = {
       {"bad number", h + "0\t0\tok\t1,5\tnan\tnan\tnan\tnan\tnan\tnan\tnan\n",
        "a.tsv:3: upper_deg \"1,5\""},
@@ -184,6 +222,14 @@ TEST(AngleFile, MalformedFilesNameTheLine) {
        "a.tsv:3: upper_deg 270"},
       {"negative yaw", h + "0\t0\tok\tnan\tnan\t-3\tnan\tnan\tnan\tnan\tnan\n", "a.tsv:3: yaw_deg"},
       {"version 2", "# armmimic angles v2\n" + std::string(kHeader) + "\n", "a.tsv:1: unsupported"},
+      {"signed yaw not a number", signed_h + "0\t0\tok\tnan\tnan\t3\tnan\tnan\tnan\tnan\tnan\tx\n",
+       "a.tsv:3: yaw_signed_deg \"x\""},
+      {"signed yaw on a lost row",
+       signed_h + "0\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\t3\n",
+       "a.tsv:3: status is lost but yaw_signed_deg"},
+      {"signed yaw out of range",
+       signed_h + "0\t0\tok\tnan\tnan\t3\tnan\tnan\tnan\tnan\tnan\t-200\n",
+       "a.tsv:3: yaw_signed_deg -200 is outside"},
       {"empty", "", "a.tsv: no column header"},
   };
   for (const auto& c : cases) {

@@ -1,10 +1,11 @@
-// Accuracy of the marker-joint engine on rendered views with known poses (thesis chapter 4):
-// the targets are yaw MAE <= 1.0 and bend MAE <= 1.5 degrees over readable views (the thesis
-// reached 1.2 and 3.3, with maxima of 4.5 and 5.2), and every view past the visibility limit lost.
+// Accuracy of the marker-joint engine on ray-cast views with known poses (thesis chapter 4): a
+// shaded cylinder seen by a pinhole camera. Targets: signed yaw and bend mean errors <= 1
+// degree, at least 97 % of readable views answered (coverage bounds here are looser: few views),
+// no view without a readable lower marker answered, and no confidently wrong view (ok with an
+// error over 15 degrees). scripts/marker-eval.sh measures the same on hundreds of views.
 #include <cmath>
 #include <memory>
 #include <string>
-#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -20,22 +21,23 @@ struct Tally {
   int ok = 0;     // ... measured
   int unreadable = 0;
   int unreadable_ok = 0;  // must stay 0
-  int gross = 0;          // ok views with yaw or bend off by more than 10 degrees
-  double yaw_sum = 0, bend_sum = 0, yaw_max = 0, bend_max = 0;
+  int wrong = 0;          // ok views with yaw or bend off by more than 15 degrees
+  int bends = 0;
+  double yaw_sum = 0, bend_sum = 0, yaw_max = 0;
   std::string log;  // the views behind the maxima and every unreadable view read
   double yaw_mae() const { return ok ? yaw_sum / ok : kNaN; }
-  double bend_mae() const { return ok ? bend_sum / ok : kNaN; }
+  double bend_mae() const { return bends ? bend_sum / bends : kNaN; }
   double coverage() const { return views ? static_cast<double>(ok) / views : kNaN; }
 };
 
-// Renders `poses` views of the scene with yaw in [min_yaw, max_yaw] (either sign) and bend in
-// [-max_bend, max_bend], runs the engine on them and tallies the errors.
+// Renders `poses` views with yaw in [min_yaw, max_yaw] (either sign) and bend in
+// [-max_bend, max_bend], runs the engine on them and tallies the errors of the signed yaw.
 void RunScene(const synth::MarkerSceneOptions& scene_options, int poses, double min_yaw,
-              double max_yaw, double max_bend, bool thesis_mode, Tally* tally) {
+              double max_yaw, double max_bend, const MarkerOptions& marker, Tally* tally) {
   const synth::MarkerSceneRenderer scene(scene_options);
   EngineOptions options;
   options.kind = EngineKind::kMarker;
-  options.marker.thesis_mode = thesis_mode;
+  options.marker = marker;
   const std::unique_ptr<Engine> engine = Engine::Create(options);
   EngineContext context;
   context.reference = scene.Reference();
@@ -55,100 +57,130 @@ void RunScene(const synth::MarkerSceneOptions& scene_options, int poses, double 
     frame.name = "view.png";
     const ArmMeasurement m = engine->Process(frame);
     const bool ok = m.phase == MeasurementPhase::kOk;
+    const std::string what = "seed " + std::to_string(scene_options.seed) + " yaw " +
+                             std::to_string(pose.yaw_deg) + " bend " +
+                             std::to_string(pose.bend_deg) + ": " + m.note + "\n";
     if (!truth.readable) {
       ++tally->unreadable;
-      if (ok) {
-        ++tally->unreadable_ok;
-        tally->log += "unreadable view read: seed " + std::to_string(scene_options.seed) + " yaw " +
-                      std::to_string(pose.yaw_deg) + " bend " + std::to_string(pose.bend_deg) +
-                      " -> " + m.note + "\n";
-      }
+      if (ok) ++tally->unreadable_ok, tally->log += "unreadable view read: " + what;
       continue;
     }
     ++tally->views;
     if (!ok) continue;
     ++tally->ok;
-    const double yaw_err = std::abs(m.yaw_deg - truth.yaw_deg);
-    const double bend_err = std::abs(AngleDiff(m.bend_deg, truth.bend_deg));
+    const double yaw_err = std::abs(AngleDiff(m.yaw_signed_deg, pose.yaw_deg));
     tally->yaw_sum += yaw_err;
-    tally->bend_sum += bend_err;
-    if (yaw_err > tally->yaw_max) {
-      tally->log += "yaw max: seed " + std::to_string(scene_options.seed) + " yaw " +
-                    std::to_string(pose.yaw_deg) + " bend " + std::to_string(pose.bend_deg) +
-                    " measured " + std::to_string(m.yaw_deg) + "\n";
-    }
+    if (yaw_err > tally->yaw_max) tally->log += "yaw max " + std::to_string(yaw_err) + ": " + what;
     tally->yaw_max = std::max(tally->yaw_max, yaw_err);
-    tally->bend_max = std::max(tally->bend_max, bend_err);
-    if (yaw_err > 10 || bend_err > 10) ++tally->gross;
+    double bend_err = 0;
+    if (std::isfinite(m.bend_deg)) {
+      bend_err = std::abs(AngleDiff(m.bend_deg, truth.bend_deg));
+      tally->bend_sum += bend_err;
+      ++tally->bends;
+    }
+    if (yaw_err > 15 || bend_err > 15) ++tally->wrong, tally->log += "wrong: " + what;
   }
 }
 
-synth::MarkerSceneOptions Scene(uint64_t seed, const std::string& lighting, int clutter) {
+synth::MarkerSceneOptions Scene(uint64_t seed, const std::string& background,
+                                const std::string& lighting, int clutter) {
   synth::MarkerSceneOptions o;
   o.seed = seed;
+  o.background = background;
   o.lighting = lighting;
   o.clutter = clutter;
   o.views = 1;
   return o;
 }
 
-TEST(MarkerAccuracy, NormalLightingMeetsTheTargets) {
+TEST(MarkerAccuracy, SignedYawAndBendUnderNormalLight) {
   Tally t;
-  for (uint64_t seed : {1, 2, 3}) {
-    RunScene(Scene(seed, "normal", 0), 14, 0, 29, 60, false, &t);
+  for (uint64_t seed : {11, 12, 13}) {
+    RunScene(Scene(seed, "simple", "normal", 0), 12, 0, 110, 60, MarkerOptions(), &t);
   }
   EXPECT_GE(t.coverage(), 0.9) << t.ok << " of " << t.views;
-  EXPECT_LE(t.yaw_mae(), 1.0);
-  EXPECT_LE(t.bend_mae(), 1.5);
-  // The targets are the MAEs; single views may stray further (the thesis' maxima were 4.5 and
-  // 5.2), but never grossly.
-  EXPECT_LE(t.yaw_max, 6.0) << t.log;
-  EXPECT_LE(t.bend_max, 5.2);
-  EXPECT_EQ(t.unreadable_ok, 0);
-}
-
-TEST(MarkerAccuracy, OtherIlluminationKeepsTheTargets) {
-  Tally t;
-  uint64_t seed = 4;
-  for (const char* lighting : {"bright", "side", "shadow", "dim"}) {
-    RunScene(Scene(seed++, lighting, 0), 10, 0, 29, 60, false, &t);
-  }
-  EXPECT_GE(t.coverage(), 0.5) << t.ok << " of " << t.views;
-  EXPECT_LE(t.yaw_mae(), 1.0);
-  EXPECT_LE(t.bend_mae(), 1.5);
-  EXPECT_EQ(t.gross, 0);
-  EXPECT_EQ(t.unreadable_ok, 0);
-}
-
-TEST(MarkerAccuracy, GeometryCheckRejectsClutterThatFoolsTheThreeLargest) {
-  Tally ours, thesis;
-  for (uint64_t seed : {1, 2}) {
-    RunScene(Scene(seed, "normal", 6), 14, 0, 29, 60, false, &ours);
-    RunScene(Scene(seed, "normal", 6), 14, 0, 29, 60, true, &thesis);
-  }
-  EXPECT_GE(ours.coverage(), 0.7) << ours.ok << " of " << ours.views;
-  EXPECT_LE(ours.yaw_mae(), 1.0);
-  EXPECT_LE(ours.bend_mae(), 1.5);
-  EXPECT_EQ(ours.gross, 0);
-  // The thesis' rule takes dark clutter for markers on the same images.
-  EXPECT_GE(thesis.gross, 3);
-}
-
-TEST(MarkerAccuracy, ThesisPathReadsCleanViews) {
-  Tally t;
-  RunScene(Scene(2, "normal", 0), 14, 0, 29, 60, true, &t);
-  EXPECT_GE(t.coverage(), 0.9);
-  EXPECT_LE(t.yaw_mae(), 4.0);   // acos of bounding-box centres: coarse near zero yaw
-  EXPECT_LE(t.bend_mae(), 3.3);  // the thesis' own figure
-}
-
-TEST(MarkerAccuracy, ViewsPastTheVisibilityLimitAreLost) {
-  Tally t;
-  RunScene(Scene(3, "normal", 0), 12, 36, 60, 60, false, &t);
-  RunScene(Scene(5, "mixed", 3), 12, 36, 60, 60, false, &t);
-  EXPECT_EQ(t.views, 0);  // past 35 degrees a lower marker is turned beyond 75
-  EXPECT_EQ(t.unreadable, 24);
+  EXPECT_LE(t.yaw_mae(), 1.0) << t.log;
+  EXPECT_LE(t.bend_mae(), 1.0) << t.log;
+  EXPECT_GE(t.bends, t.ok / 3);
+  EXPECT_EQ(t.wrong, 0) << t.log;
   EXPECT_EQ(t.unreadable_ok, 0) << t.log;
+}
+
+TEST(MarkerAccuracy, NearZeroYawIsSharpForEitherSign) {
+  Tally t;
+  for (uint64_t seed : {14, 15}) {
+    RunScene(Scene(seed, "mixed", "normal", 0), 8, 0, 5, 60, MarkerOptions(), &t);
+  }
+  EXPECT_EQ(t.ok, t.views);
+  EXPECT_LE(t.yaw_max, 2.0) << t.log;  // acos(n/N) would be blunt here (its slope is infinite)
+  EXPECT_LE(t.yaw_mae(), 0.5) << t.log;
+}
+
+TEST(MarkerAccuracy, OtherIlluminationAndDarkClutterKeepTheTargets) {
+  Tally t;
+  uint64_t seed = 16;
+  for (const char* lighting : {"bright", "side", "shadow", "dim"}) {
+    RunScene(Scene(seed++, "mixed", lighting, 8), 8, 0, 110, 60, MarkerOptions(), &t);
+  }
+  EXPECT_GE(t.coverage(), 0.85) << t.ok << " of " << t.views;
+  EXPECT_LE(t.yaw_mae(), 1.5) << t.log;
+  EXPECT_LE(t.bend_mae(), 1.0) << t.log;
+  EXPECT_EQ(t.wrong, 0) << t.log;
+  EXPECT_EQ(t.unreadable_ok, 0) << t.log;
+}
+
+TEST(MarkerAccuracy, ViewsWithNoReadableLowerMarkerAreLost) {
+  Tally t;
+  RunScene(Scene(17, "mixed", "normal", 0), 10, 120, 180, 60, MarkerOptions(), &t);
+  RunScene(Scene(18, "mixed", "mixed", 8), 10, 120, 180, 60, MarkerOptions(), &t);
+  EXPECT_EQ(t.views, 0);  // past about 115 degrees both lower markers are round the back
+  EXPECT_EQ(t.unreadable, 20);
+  EXPECT_EQ(t.unreadable_ok, 0) << t.log;
+}
+
+TEST(MarkerAccuracy, FlatModelWithADistantCamera) {
+  // The flat model (parallel projection) read with --fov 0.
+  synth::MarkerSceneOptions o = Scene(19, "simple", "normal", 0);
+  o.camera.projection = "orthographic";
+  MarkerOptions distant;
+  distant.fov_deg = 0;
+  Tally t;
+  RunScene(o, 12, 0, 110, 60, distant, &t);
+  EXPECT_GE(t.coverage(), 0.9);
+  EXPECT_LE(t.yaw_mae(), 1.0) << t.log;
+  EXPECT_LE(t.bend_mae(), 1.0) << t.log;
+  EXPECT_EQ(t.wrong, 0) << t.log;
+}
+
+TEST(MarkerAccuracy, ThesisPathReadsTheFlatModelWithoutASign) {
+  synth::MarkerSceneOptions o = Scene(20, "plain", "normal", 0);
+  o.camera.projection = "orthographic";
+  const synth::MarkerSceneRenderer scene(o);
+  EngineOptions options;
+  options.kind = EngineKind::kMarker;
+  options.marker.thesis_mode = true;
+  const std::unique_ptr<Engine> engine = Engine::Create(options);
+  EngineContext context;
+  context.reference = scene.Reference();
+  ASSERT_TRUE(engine->Begin(context).ok());
+  double yaw_sum = 0, bend_sum = 0;
+  int ok = 0;
+  for (double yaw : {-25.0, -12.0, 8.0, 20.0}) {
+    for (double bend : {-40.0, 30.0}) {
+      Frame frame;
+      frame.image = scene.RenderPose({yaw, bend}, 7);
+      const ArmMeasurement m = engine->Process(frame);
+      if (m.phase != MeasurementPhase::kOk) continue;
+      ++ok;
+      EXPECT_GE(m.yaw_deg, 0);
+      EXPECT_TRUE(std::isnan(m.yaw_signed_deg));  // acos(n/N) cannot tell the sign
+      yaw_sum += std::abs(m.yaw_deg - std::abs(yaw));
+      bend_sum += std::abs(m.bend_deg - bend);
+    }
+  }
+  ASSERT_GE(ok, 7);
+  EXPECT_LE(yaw_sum / ok, 4.0);   // acos of bounding-box centres: coarse near zero yaw
+  EXPECT_LE(bend_sum / ok, 3.3);  // the thesis' own figure
 }
 
 }  // namespace

@@ -21,12 +21,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (row.frame <= last) std::abort();
     last = row.frame;
     if (!std::isfinite(row.time_s)) std::abort();
-    for (double v : {row.upper_deg, row.fore_deg, row.yaw_deg, row.bend_deg}) {
+    for (double v : {row.upper_deg, row.fore_deg, row.yaw_deg, row.bend_deg, row.yaw_signed_deg}) {
       if (std::isinf(v)) std::abort();
       if (!row.ok() && !std::isnan(v)) std::abort();
     }
     // What was read must be writable again.
-    (void)armmimic::FormatAngleRow(row, file.has_file_column);
+    (void)armmimic::FormatAngleRow(row, file.has_file_column, file.has_confidence_column,
+                                   file.has_signed_yaw_column);
   }
   return 0;
 }

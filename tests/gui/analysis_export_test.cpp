@@ -12,6 +12,7 @@
 
 #include "analysis_job.h"
 #include "angle_plot.h"
+#include "app_actions.h"
 #include "armmimic/core/angle_file.h"
 #include "armmimic/synth/truth_file.h"
 #include "engine_settings_panel.h"
@@ -162,7 +163,7 @@ TEST_F(AnalysisExportTest, AdvancedParametersReachTheEngineAsCliParamDoes) {
   EXPECT_NE(ReadFile(tmp_.file("defaults.tsv")), ReadFile(tmp_.file("gui.tsv")));
 }
 
-TEST_F(AnalysisExportTest, MarkerExportEqualsCliAndShowsCandidates) {
+TEST_F(AnalysisExportTest, MarkerExportEqualsCliAndShowsTheCylinderAndSignedYaw) {
   const GuiScenes& s = scenes();
   MainWindow w;
   AnalysisOptions o;
@@ -170,13 +171,54 @@ TEST_F(AnalysisExportTest, MarkerExportEqualsCliAndShowsCandidates) {
   o.reference_path = s.marker_dir + "/reference.png";
   Run(w, {QString::fromStdString(s.marker_dir + "/views")}, o);
   EXPECT_EQ(w.results().rows(), 6);
-  // The first view's overlay carries the markers and candidate boxes (Fig. 4-3).
+  // The first view's overlay carries the markers and the dark patches weighed (Fig. 4-3).
   ASSERT_TRUE(WaitUntil([&] { return w.view()->measurement().has_value(); }));
   EXPECT_FALSE(w.view()->measurement()->candidate_boxes.empty());
   // The joint's bend, not arm segments, in the lower right.
   const gui::OverlayTexts texts = w.view()->overlayTexts();
   EXPECT_TRUE(texts.orientation.startsWith("bend ")) << texts.orientation.toStdString();
-  // The plot shows the bend of every measured view; 6 views give whole-frame labels.
+  // The fitted cylinder's axis, and the yaw with its sign (positive: the joint's right side
+  // turned to the camera).
+  const ArmMeasurement shown = *w.view()->measurement();
+  ASSERT_EQ(shown.phase, MeasurementPhase::kOk) << shown.note;
+  ASSERT_EQ(shown.cylinder_axis_px.size(), 2u);
+  const QString yaw = QString::number(std::abs(shown.yaw_signed_deg), 'f', 1);
+  EXPECT_EQ(texts.yaw,
+            QString("yaw ") + (shown.yaw_signed_deg >= 0 ? "+" : "-") + yaw + QChar(0x00B0));
+  // The saved frame draws the axis (magenta) from the lower part up to the pivot, and only with
+  // the marker overlay on.
+  auto axis_pixels = [&](const QString& path) {
+    const QImage image = QImage(path).convertToFormat(QImage::Format_RGB32);
+    const cv::Point2d a = shown.cylinder_axis_px[0], b = shown.cylinder_axis_px[1];
+    int n = 0;
+    for (double t = 0.05; t <= 0.95; t += 0.01) {
+      const int x = static_cast<int>(std::lround(a.x + t * (b.x - a.x)));
+      const int y = static_cast<int>(std::lround(a.y + t * (b.y - a.y)));
+      bool magenta = false;
+      for (int dx = -1; dx <= 1; ++dx) {
+        const QColor c = image.pixelColor(x + dx, y);
+        magenta |= c.red() > 200 && c.green() < 100 && c.blue() > 170;
+      }
+      n += magenta;
+    }
+    return n;
+  };
+  const QString frame_path = QString::fromStdString(tmp_.file("marker_frame.png"));
+  ASSERT_TRUE(w.saveFrame(frame_path)) << w.log()->text().toStdString();
+  EXPECT_GT(axis_pixels(frame_path), 20);
+  w.actions()->ovMarkers->setChecked(false);
+  ASSERT_TRUE(w.saveFrame(frame_path));
+  EXPECT_EQ(axis_pixels(frame_path), 0);
+  w.actions()->ovMarkers->setChecked(true);
+  // The plot shows the signed yaw and the bend of every measured view; 6 views give whole-frame
+  // labels.
+  const QList<QPointF> yaws = w.plot()->yawPoints();
+  ASSERT_EQ(yaws.size(), w.job()->summary().ok);
+  for (const QPointF& p : yaws) {
+    const ArmMeasurement* m = w.results().find(static_cast<int>(p.x()));
+    ASSERT_NE(m, nullptr);
+    EXPECT_DOUBLE_EQ(p.y(), m->yaw_signed_deg);
+  }
   EXPECT_EQ(w.plot()->bendCount(), w.job()->summary().ok);
   EXPECT_EQ(w.plot()->pointCount(), 0);
   EXPECT_EQ(w.plot()->frameTickStep(), 1);

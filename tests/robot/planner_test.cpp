@@ -362,6 +362,11 @@ TEST(Planner, HoldsYawWhileTheArmIsBentAndMapsMarkerFiles) {
   EXPECT_NEAR(tr.keyframes.back().joint_deg[1], -90 - 39, 1e-9);
   EXPECT_NEAR(tr.keyframes.back().joint_deg[2], 0, 1e-9);
   EXPECT_NEAR(tr.keyframes.back().joint_deg[0], 10, 1e-9);
+  // A marker file's signed yaw turns J1 the way the joint turned (yaw_deg is its magnitude).
+  for (auto& r : marker.rows) r.yaw_signed_deg = -10;
+  marker.has_signed_yaw_column = true;
+  ASSERT_TRUE(PlanTrajectory(marker, o, &tr, nullptr).ok());
+  EXPECT_NEAR(tr.keyframes.back().joint_deg[0], -10, 1e-9);
 }
 
 // Marker views are still images: no frame rate, every time_s 0. With the default options they

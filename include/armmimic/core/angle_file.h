@@ -29,7 +29,12 @@ struct AngleRow {
   double fore_cy = kNaN;
   std::string file;          // marker engine only: the image's file name
   double confidence = kNaN;  // optional trailing column, 0..1 (pose engine)
+  // Marker engine only: the signed yaw, positive when the joint turns its right side towards the
+  // camera (the trailing yaw_signed_deg column); yaw_deg is its magnitude.
+  double yaw_signed_deg = kNaN;
   bool ok() const { return status == RowStatus::kOk; }
+  // The yaw to turn a robot joint by: the signed one where the row has it, else yaw_deg.
+  double turn_yaw_deg() const { return std::isnan(yaw_signed_deg) ? yaw_deg : yaw_signed_deg; }
 };
 
 // Ordered key=value pairs of the "# engine=... source=..." header line.
@@ -39,6 +44,7 @@ struct AngleFile {
   AngleMeta meta;
   bool has_file_column = false;
   bool has_confidence_column = false;
+  bool has_signed_yaw_column = false;  // a yaw_signed_deg column after the listed ones
   bool complete = true;  // false when the header says complete=no (an interrupted run)
   std::vector<AngleRow> rows;
 
@@ -49,8 +55,10 @@ struct AngleFile {
 inline constexpr const char* kAngleFileMagic = "# armmimic angles v1";
 inline constexpr const char* kAngleFileUnits =
     "# units: degrees; directions CCW on screen from +x, (-180,180]; image y down";
-// The contract's columns, in order. The marker engine adds "file" after them.
+// The contract's columns, in order. The marker engine adds "file" and then "yaw_signed_deg"
+// after them.
 extern const char* const kAngleColumns[11];
+inline constexpr const char* kSignedYawColumn = "yaw_signed_deg";
 inline constexpr std::size_t kMaxAngleLineLength = 65536;
 
 // Parses an angle file; `source_name` is used in messages ("angles.tsv:12: ...").
@@ -60,7 +68,8 @@ Status ReadAngleFile(const std::string& path, AngleFile* out);
 // Formats a number the way the file stores it: '.' decimals whatever the locale, "nan" for NaN.
 std::string FormatNumber(double value, int decimals);
 // Formats one data row (no trailing newline).
-std::string FormatAngleRow(const AngleRow& row, bool file_column, bool confidence_column = false);
+std::string FormatAngleRow(const AngleRow& row, bool file_column, bool confidence_column = false,
+                           bool signed_yaw_column = false);
 // The "# k=v k=v" meta line; spaces and '%' in values are percent-encoded.
 std::string FormatMetaLine(const AngleMeta& meta);
 
@@ -73,9 +82,10 @@ class AngleFileWriter {
   AngleFileWriter(const AngleFileWriter&) = delete;
   AngleFileWriter& operator=(const AngleFileWriter&) = delete;
 
-  // confidence_column: the optional trailing confidence column after the contract's columns.
+  // confidence_column: the optional trailing confidence column after the contract's columns;
+  // signed_yaw_column: the marker engine's yaw_signed_deg, last.
   Status Open(const std::string& path, const AngleMeta& meta, bool file_column,
-              bool confidence_column = false);
+              bool confidence_column = false, bool signed_yaw_column = false);
   Status Write(const AngleRow& row);
   // complete=false rewrites the header with complete=no (rows so far are kept).
   Status Commit(bool complete = true);

@@ -19,28 +19,22 @@ struct MarkerOptions {
   // Beyond the thesis: when [low, high] does not show the reference's three markers (other
   // illumination), the window of the same width that does, nearest to [low, high], is used.
   bool auto_window = true;
-  // true: the thesis path only (the three largest survivors, bounding-box centres, no geometry
-  // check, no correction for the markers' depth on the cylinder).
+  // true: the thesis path only (the three largest survivors, bounding-box centres, yaw =
+  // acos(n/N), no cylinder model and no sign).
   bool thesis_mode = false;
-  // Beyond the thesis: a view is lost when the more turned lower marker faces the camera at more
-  // than this angle (alpha + yaw, alpha measured in the reference): it is nearly edge-on
-  // (thesis: hidden past about 35 degrees of yaw). 70 loses the views past about 30 degrees.
-  double max_marker_turn_deg = 70;
-  // ... or when it shows less than this share of its full-face area.
-  double min_foreshortening = 0.2;
-  // Geometry check: how far (relative to e) the upper marker may be from where the lower pair
-  // puts it, and the accepted range of n / N.
-  double geometry_tolerance = 0.15;
-  // A view is lost when the yaw from the lower markers' areas and from their distance differ
-  // by more than this (a blob standing in for a hidden marker).
-  double max_yaw_disagreement_deg = 10;
-  // ... or when the pair's area is off the model's 2 cos(alpha) cos(yaw) faces by more than
-  // this share.
-  double max_area_misfit = 0.2;
-  // A view is lost when a second triple's misfit is within this margin of the best one's.
-  double ambiguity_margin = 0.05;
-  double min_width_ratio = 0.6;
-  double max_width_ratio = 1.1;
+  // The cylinder model (docs/marker.md): the camera's horizontal field of view in degrees, which
+  // sets the perspective; 0 = a distant camera (parallel projection).
+  double fov_deg = 60;
+  // A view is read only when a lower marker faces the camera within this angle (degrees):
+  // one turned further is too foreshortened to read alone.
+  double max_marker_turn_deg = 74;
+  // The two lower markers' yaws must agree within this many expected spreads (plus 1 degree),
+  // or the view is lost.
+  double agreement_sigmas = 4;
+  // The bend is measured while the upper marker faces the camera within this angle (degrees).
+  double max_upper_turn_deg = 60;
+  // How far (relative to e) the upper marker's centroid may lie from the model's.
+  double upper_tolerance = 0.06;
   Status Check() const;  // messages name the flag (--low, --high, ...)
 };
 

@@ -32,6 +32,8 @@ struct ArmMeasurement {
   double fore_deg = kNaN;
   double yaw_deg = kNaN;
   double bend_deg = kNaN;
+  double yaw_signed_deg =
+      kNaN;  // marker engine: positive turns the joint's right side to the camera
   cv::Point2d upper_com_px{kNaN, kNaN};
   cv::Point2d fore_com_px{kNaN, kNaN};
   double confidence = kNaN;  // pose: 0..1, the angle file's confidence column
@@ -47,9 +49,12 @@ struct ArmMeasurement {
   std::vector<cv::Point2f> upper_features;  // LK
   std::vector<cv::Point2f> fore_features;   // LK
   std::vector<cv::Rect> candidate_boxes;    // marker: components that passed the threshold
-  std::vector<cv::Point2d> marker_centres;  // marker: upper first, then the two lower ones
-  std::vector<cv::Point2d> pose_keypoints;  // pose: the 17 keypoints (pose.h order)
-  std::vector<double> pose_scores;          // pose: their scores, 0..1
+  // marker: upper first, then the left and right lower ones; (nan, nan) for one not measured.
+  std::vector<cv::Point2d> marker_centres;
+  std::vector<cv::Point2d> cylinder_axis_px;   // marker: the lower part's axis, bottom to pivot
+  std::vector<cv::Point2d> cylinder_edges_px;  // marker: silhouette, left top/bottom, right ...
+  std::vector<cv::Point2d> pose_keypoints;     // pose: the 17 keypoints (pose.h order)
+  std::vector<double> pose_scores;             // pose: their scores, 0..1
 
   bool row() const { return phase != MeasurementPhase::kSetup; }
   AngleRow ToRow() const;

@@ -73,6 +73,10 @@ class PoseNetwork {
 
   // The keypoints of the person in `crop` of `bgr` (CV_8UC3).
   PoseKeypoints Run(const cv::Mat& bgr, const PoseCrop& crop);
+  // The same from the mirror image of the crop: the network's keypoints are mirrored back and
+  // their left and right swapped, so they name the same joints as Run's. A second look whose
+  // disagreement with the first says how sure the network is.
+  PoseKeypoints RunMirrored(const cv::Mat& bgr, const PoseCrop& crop);
   // The same from the network's own 192x192 RGB input (parity checks against other runtimes).
   PoseKeypoints RunInput(const cv::Mat& rgb192);
   // The 192x192 RGB input the network sees for `crop`.
@@ -92,6 +96,10 @@ PoseCrop WholeImageCrop(const cv::Size& image);
 // keypoint scored above `min_score` (x1.2); the whole image when the torso is not seen.
 PoseCrop NextCrop(const PoseKeypoints& k, const cv::Size& image, double min_score);
 
+// The arm look's crop: a square around the upper body (shoulders, elbows, wrists and hips
+// scored above `min_score`) of `factor` times its extent. False when fewer than four are seen.
+bool ArmLookCrop(const PoseKeypoints& k, double factor, double min_score, PoseCrop* crop);
+
 // One arm's joints from keypoints: shoulder, elbow, wrist of `side` (kLeft or kRight).
 struct PoseArm {
   cv::Point2d shoulder, elbow, wrist;
@@ -99,10 +107,11 @@ struct PoseArm {
 };
 PoseArm ArmOf(const PoseKeypoints& k, PoseSide side);
 
-// --auto-calibrate: the arm's three joints in frame `frame` of `inputs`. With side kAuto, the
-// better-seen arm. Fails (naming the frame) when the arm is not seen clearly.
+// --auto-calibrate: the arm's three joints in frame `frame` of `inputs`, looked at as the pose
+// engine does with `options` (its side is not used). With side kAuto, the better-seen arm.
+// Fails (naming the frame) when the arm is not seen clearly (options.min_score).
 Status DetectArmJoints(const std::vector<std::string>& inputs, int frame, PoseSide side,
-                       const std::string& model_dir, double min_score, PoseArm* arm,
+                       const std::string& model_dir, const PoseOptions& options, PoseArm* arm,
                        PoseSide* chosen);
 
 }  // namespace armmimic

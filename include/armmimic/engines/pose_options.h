@@ -21,6 +21,16 @@ struct PoseOptions {
   // below it, or when an arm keypoint drops below min_score, the next frame searches the whole
   // image again.
   double crop_score = 0.2;
+  // The arm look: a second look at every frame through a square around the upper body
+  // (shoulders, elbows, wrists, hips) this many times its extent, where the arm is seen about
+  // twice as large as in the whole-person crop. Its keypoints give the directions. 0: one look.
+  double arm_crop = 1.5;
+  // A segment whose direction differs by more than this between the looks (degrees) is lost:
+  // the network itself is unsure where it points.
+  double max_disagreement_deg = 15;
+  // Also look at the mirror image of the closer look's crop: the two are averaged, and their
+  // disagreement counts like the others'. One more inference per frame.
+  bool flip = false;
   Status Check() const;
 };
 

@@ -1,9 +1,10 @@
-// Marker-joint scenes with ground truth (thesis chapter 4): the model joint rendered in 3D as
-// two equal cylinders. The lower one stands upright and turns about its own axis (yaw); the
-// upper one bends at the pivot. Two black disc markers sit on the lower part's surface at
-// +-alpha either side of the front, a distance e below the pivot; one black disc sits on the
-// front of the upper part, e above the pivot along its axis. Orthographic camera looking along
-// the horizontal. Truth is the model's own pose, not a measurement (docs/marker.md).
+// Marker-joint scenes with ground truth (thesis chapter 4): the model joint ray cast in 3D as
+// two equal, Lambertian-shaded cylinders. The lower one stands upright and turns about its own
+// axis (yaw); the upper one bends at the pivot. Two black disc markers lie on the lower part's
+// curved surface at +-alpha either side of the front, a distance e below the pivot; one lies on
+// the front of the upper part, e above the pivot along its axis. A level pinhole camera (or, for
+// the flat model, a parallel projection) looks at it. Truth is the model's own pose, not a
+// measurement (docs/synth.md).
 #pragma once
 
 #include <atomic>
@@ -19,7 +20,7 @@
 
 namespace armmimic::synth {
 
-// The joint's geometry in pixels (orthographic: 1 model unit = 1 pixel).
+// The joint's geometry in pixels at the pivot's depth (1 model unit = 1 pixel there).
 struct MarkerJointModel {
   double radius_px = 32;           // R, both cylinders
   double lower_length_px = 112;    // pivot down to the lower part's bottom
@@ -33,8 +34,9 @@ struct MarkerJointModel {
 };
 
 // A pose: yaw turns the whole joint about the lower part's vertical axis; positive turns the
-// front towards screen right. Bend tilts the upper part at the pivot, counter-clockwise on screen
-// positive (at zero yaw). The contract's yaw_deg is |yaw_deg| (acos cannot tell the sign).
+// front towards screen right, i.e. brings the joint's right side (on screen left while it faces
+// the camera) towards the camera. Bend tilts the upper part at the pivot, counter-clockwise on
+// screen positive (at zero yaw). The contract's yaw_deg is |yaw_deg|.
 struct MarkerPose {
   double yaw_deg = 0;
   double bend_deg = 0;
@@ -44,16 +46,27 @@ struct MarkerPose {
 // cos of the angle between a marker's surface normal and the line of sight.
 inline constexpr double kMarkerHiddenCos = 0.2588;  // cos(75 deg)
 
+// The camera. Perspective: a level pinhole camera with its principal point at the image centre
+// and the given horizontal field of view, placed so that the joint's radius at the pivot's depth
+// is model.radius_px (at 60 degrees, 8.7 radii from the axis: a 3 cm joint seen from 26 cm).
+// "orthographic" is the flat model: a parallel projection (a camera infinitely far away).
+struct MarkerCamera {
+  std::string projection = "perspective";  // or "orthographic"
+  double fov_deg = 60;
+};
+
 struct MarkerSceneOptions {
   uint64_t seed = 1;
   cv::Size size{320, 240};
   int views = 48;                    // images besides the reference
-  double max_yaw_deg = 45;           // yaw uniform in [-max, max]: past ~35 a lower marker hides
+  double max_yaw_deg = 45;           // yaw uniform in [-max, max], up to 180
   double max_bend_deg = 60;          // bend uniform in [-max, max]
   double noise_sigma = 2;            // Gaussian sensor noise, grey levels
-  std::string background = "mixed";  // plain, gradient, texture, room, or mixed (by seed)
+  std::string background = "mixed";  // plain, gradient, texture, room; simple (plain or
+                                     // gradient, by seed) or mixed (any, by seed)
   std::string lighting = "mixed";    // normal, bright, dim, side, shadow, or mixed (by seed)
-  int clutter = 0;       // dark marker-like blobs on the background (some beside markers)
+  int clutter = 0;  // dark marker-like blobs on the background (some beside markers)
+  MarkerCamera camera;
   Status Check() const;  // messages name the option
 };
 
@@ -63,8 +76,13 @@ struct MarkerTruth {
   MarkerPose pose;     // signed yaw as rendered
   double yaw_deg = 0;  // |pose.yaw_deg|: the contract's yaw
   double bend_deg = 0;
-  bool readable = false;      // every marker faces the camera within 75 deg and is in view
-  double min_marker_cos = 0;  // the most foreshortened marker's cos(normal, line of sight)
+  // A marker is readable when it faces the camera within 75 degrees and lies inside the image.
+  // The view is readable when a lower marker is (it gives the yaw); bend needs the upper one.
+  bool readable = false;
+  bool left_readable = false, right_readable = false, upper_readable = false;
+  // cos(normal, direction to the camera) at each marker's centre, and the smallest of them.
+  double left_cos = 0, right_cos = 0, upper_cos = 0;
+  double min_marker_cos = 0;
   cv::Point2d upper_px, left_px, right_px;  // projected marker centres (on the surface)
   cv::Point2d pivot_px;
   // A truth-file row: upper/fore nan; extra columns kMarkerTruthExtra.
@@ -72,7 +90,7 @@ struct MarkerTruth {
 };
 
 // Extra truth columns of marker scenes, after the 12 listed ones.
-extern const char* const kMarkerTruthExtra[9];
+extern const char* const kMarkerTruthExtra[12];
 
 class MarkerSceneRenderer {
  public:
@@ -94,7 +112,7 @@ class MarkerSceneRenderer {
   // Any pose in the same scene; `noise_seed` picks the noise.
   cv::Mat RenderPose(const MarkerPose& pose, uint64_t noise_seed,
                      MarkerTruth* truth = nullptr) const;
-  // Zero yaw and zero bend (gives the engine N and e).
+  // Zero yaw and zero bend (the engine's reference).
   cv::Mat Reference(MarkerTruth* truth = nullptr) const;
 
  private:
