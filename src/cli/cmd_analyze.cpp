@@ -60,6 +60,7 @@ constexpr const char* kDescription =
     "if clicked (--side names the person's own arm; default: the better seen).\n"
     "marker: one row per input image, in input order, with the image's name and the signed\n"
     "yaw (yaw_signed_deg) after the listed columns; --thesis reads yaw as acos(n/N), unsigned.\n"
+    "bgsub (not --thesis) follows the angles with a confidence column (0-1), as pose does.\n"
     "pose: a pose network (MoveNet) finds the person's arm in every frame from F on, with no\n"
     "background or calibration; a row is lost where the arm is not seen or a segment points at\n"
     "the camera, and a confidence column (0-1) follows the angles. --side names the person's\n"

@@ -424,9 +424,11 @@ Status AnalyzeToFile(const AnalysisOptions& options, const std::string& output_p
                      const AnalysisCallbacks& callbacks, AnalysisSummary* summary) {
   AngleFileWriter writer;
   const bool file_column = options.engine.kind == EngineKind::kMarker;
-  // The engines that rate their own rows (pose, lk) write the optional confidence column.
+  // The engines that rate their own rows (pose, lk, and bgsub's two-segment fit, not its thesis
+  // path) write the optional confidence column.
   const bool confidence_column =
-      options.engine.kind == EngineKind::kPose || options.engine.kind == EngineKind::kLk;
+      options.engine.kind == EngineKind::kPose || options.engine.kind == EngineKind::kLk ||
+      (options.engine.kind == EngineKind::kBgsub && !options.engine.bgsub.thesis_mode);
   Status st = Run(
       options, callbacks,
       [&](const AngleMeta& meta) {

@@ -200,6 +200,22 @@ std::vector<FitResult> FitAnywhere(const EvidenceMap& evidence, const ArmShape& 
   return out;
 }
 
+double ForeRivalScore(const EvidenceMap& evidence, const ArmShape& shape, const ArmPose& pose,
+                      double apart_deg) {
+  constexpr double kStepDeg = 3;
+  const ArmJoints j = JointsOf(pose, shape);
+  const double bend0 = AngleDiff(pose.fore_deg, pose.upper_deg);
+  double best = -2;
+  for (double bend = -kMaxBendDeg; bend <= kMaxBendDeg; bend += kStepDeg) {
+    if (std::abs(bend - bend0) < apart_deg) continue;
+    const SegmentScore sf =
+        ScoreSegment(evidence, j.elbow, pose.upper_deg + bend, shape.fore_px, shape.fore_hw,
+                     kForeFrom, 1, false, j.shoulder, j.elbow, shape.upper_hw + 1);
+    best = std::max(best, sf.score);
+  }
+  return best;
+}
+
 double PoseDistanceDeg(const ArmPose& a, const ArmPose& b) {
   return std::max(std::abs(AngleDiff(a.upper_deg, b.upper_deg)),
                   std::abs(AngleDiff(a.fore_deg, b.fore_deg)));

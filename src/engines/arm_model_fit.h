@@ -70,6 +70,15 @@ FitResult FitNear(const EvidenceMap& evidence, const ArmShape& shape, const ArmP
 std::vector<FitResult> FitAnywhere(const EvidenceMap& evidence, const ArmShape& shape,
                                    const cv::Point2d& shoulder, int count);
 
+// The best forearm score with the upper arm of `pose` kept and the bend at least `apart_deg` away
+// from the pose's (3-degree steps over every bend the elbow allows): how well another forearm
+// direction explains the image. A forearm lying on cloth of its own colour is seen about as well
+// in many directions; its evidence then does not say where it is. The rivals are scored over the
+// forearm alone, elbow to wrist (a region of the arm's colour that could hold the forearm but
+// not the hand is still a place the forearm may be). -2 when no bend is apart enough.
+double ForeRivalScore(const EvidenceMap& evidence, const ArmShape& shape, const ArmPose& pose,
+                      double apart_deg);
+
 // The largest turn of either segment between two poses, degrees.
 double PoseDistanceDeg(const ArmPose& a, const ArmPose& b);
 

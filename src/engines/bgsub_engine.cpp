@@ -8,7 +8,10 @@
 #include "arm_gate.h"
 #include "armmimic/core/angles.h"
 #include "bgsub_arm.h"
+#include "bgsub_calib.h"
+#include "bgsub_fit.h"
 #include "bgsub_masks.h"
+#include "bgsub_pixels.h"
 #include "bgsub_scene.h"
 #include "engine_factories.h"
 
@@ -31,9 +34,6 @@ std::vector<cv::Point> Offset(std::vector<cv::Point> pts, const cv::Point& o) {
   for (cv::Point& p : pts) p += o;
   return pts;
 }
-
-// The upper arm within this many degrees of its rest pose is fitted in the person mask.
-constexpr double kPersonFitDeg = 35;
 
 class BgsubEngine final : public Engine {
  public:
@@ -73,14 +73,16 @@ class BgsubEngine final : public Engine {
     bgsub::ToGray(context.arm_length(region_), &arm_length_gray_);
     arm_length_bgr_ = context.arm_length(region_).clone();
     scene_.background_bgr = context.background(region_).clone();
+    fixed_shoulder_.reset();
     if (context.shoulder_px) {
-      scene_.fixed_shoulder =
+      fixed_shoulder_ =
           cv::Point2d(context.shoulder_px->x - region_.x, context.shoulder_px->y - region_.y);
+      scene_.fixed_shoulder = fixed_shoulder_;
     }
     standstill_sum_ = cv::Mat::zeros(region_.size(), CV_32FC1);
-    standstill_bgr_sum_ = cv::Mat::zeros(region_.size(), CV_32FC3);
     standstill_count_ = 0;
-    was_bent_ = false;
+    pixels_.Begin(region_.size());
+    cal_ = bgsub::ArmCalibration();
     ArmGateOptions gate;
     gate.max_speed_deg_s = options_.max_speed_deg_s;
     gate.min_support = options_.min_support;
@@ -102,12 +104,13 @@ class BgsubEngine final : public Engine {
       m.note = "frame is " + SizeText(frame.image.size()) + ", expected " + SizeText(frame_size_);
       return m;
     }
-    bgsub::ToGray(frame.image(region_), &gray_);
     // The standstill (5.2.2): the mean of the first standstill_frames frames; no rows.
     if (standstill_count_ < options_.standstill_frames) {
-      cv::accumulate(gray_, standstill_sum_);
-      if (!options_.thesis_mode && options_.color_difference) {
-        cv::accumulate(frame.image(region_), standstill_bgr_sum_);
+      if (options_.thesis_mode) {
+        bgsub::ToGray(frame.image(region_), &gray_);
+        cv::accumulate(gray_, standstill_sum_);
+      } else {
+        pixels_.AddStandstill(frame.image(region_));
       }
       ++standstill_count_;
       m.phase = MeasurementPhase::kSetup;
@@ -116,16 +119,20 @@ class BgsubEngine final : public Engine {
       if (standstill_count_ == options_.standstill_frames) {
         FinishStandstill();
         // The protocol's standstill: the arm hangs at its rest pose when the rows begin.
-        if (scene_.body_box || scene_.fixed_shoulder) {
+        if (!options_.thesis_mode && cal_.ok) {
           gate_.Anchor(options_.rest_deg, options_.rest_deg, frame.time_s);
         }
       }
       FillSceneOverlay(&m);
       return m;
     }
-    Measure(frame, &m);
-    if (!options_.thesis_mode)
-      gate_.Review(&m, m.phase == MeasurementPhase::kOk ? Support(m) : kNaN);
+    if (options_.thesis_mode) {
+      bgsub::ToGray(frame.image(region_), &gray_);
+      MeasureThesis(frame, &m);
+    } else {
+      MeasureFit(frame, &m);
+      gate_.Review(&m, m.phase == MeasurementPhase::kOk ? m.confidence : kNaN);
+    }
     return m;
   }
 
@@ -139,20 +146,78 @@ class BgsubEngine final : public Engine {
 
  private:
   void FinishStandstill() {
-    standstill_sum_.convertTo(scene_.standstill, CV_8UC1, 1.0 / standstill_count_);
-    if (!options_.thesis_mode && options_.color_difference) {
-      standstill_bgr_sum_.convertTo(scene_.standstill_bgr, CV_8UC3, 1.0 / standstill_count_);
+    if (options_.thesis_mode) {
+      standstill_sum_.convertTo(scene_.standstill, CV_8UC1, 1.0 / standstill_count_);
+      bgsub::BuildScene(arm_length_gray_, arm_length_bgr_, options_, &buffers_, &scene_);
+      return;
     }
-    bgsub::BuildScene(arm_length_gray_, arm_length_bgr_, options_, &buffers_, &scene_);
+    pixels_.Finish(scene_.background_bgr, options_.threshold);
+    cal_ = bgsub::Calibrate(pixels_, arm_length_bgr_, fixed_shoulder_);
+    if (!cal_.ok) return;
+    const double upper = options_.upper_arm_fraction * cal_.reach_px;
+    evidence_.Begin(cal_, region_.size(), options_.rest_deg);
+    fitter_.Begin(static_cast<int>(evidence_.weights().step1()), upper, cal_.reach_px - upper,
+                  cal_.half_width_px);
   }
 
   void FillSceneOverlay(ArmMeasurement* m) const {
     const cv::Point o = region_.tl();
-    if (scene_.body_box) m->body_box = *scene_.body_box + o;
-    if (auto s = scene_.Shoulder(scene_.side, options_)) m->shoulder_px = Offset(*s, o);
+    if (options_.thesis_mode) {
+      if (scene_.body_box) m->body_box = *scene_.body_box + o;
+      if (auto s = scene_.Shoulder(scene_.side, options_)) m->shoulder_px = Offset(*s, o);
+      return;
+    }
+    if (cal_.body_box) m->body_box = *cal_.body_box + o;
+    if (cal_.ok) m->shoulder_px = Offset(cal_.shoulder_px, o);
   }
 
-  void Measure(const Frame& frame, ArmMeasurement* m) {
+  // The default path: the two-segment fit to the per-pixel evidence (bgsub_fit.h).
+  void MeasureFit(const Frame& frame, ArmMeasurement* m) {
+    m->phase = MeasurementPhase::kLost;
+    FillSceneOverlay(m);
+    if (!cal_.ok) {
+      m->note = cal_.note.empty() ? "no calibration" : cal_.note;
+      return;
+    }
+    pixels_.Compare(frame.image(region_), evidence_.rect(), cv::Mat(), &person_, &moved_);
+    // Specks of a textured shirt moving a little (sway, noise, compression) are no arm; a moved
+    // arm is a solid region.
+    cv::morphologyEx(moved_, moved_, cv::MORPH_OPEN, kSpeckKernel);
+    evidence_.Update(person_, moved_);
+    const bgsub::ArmFit fit = fitter_.Fit(evidence_.weights(), evidence_.origin());
+    if (!fit.found) {
+      m->note = "no arm";
+      return;
+    }
+    // Confidence: the weaker segment's support, less what speaks against the arm, 0 when the
+    // arm's surroundings look like arm too (a flooded mask: any pose there would fit).
+    const double conf =
+        fit.clutter > kMaxClutter
+            ? 0.0
+            : std::clamp(std::min(fit.upper_support, fit.fore_support) * (1 - fit.against) / 0.5,
+                         0.0, 1.0);
+    std::ostringstream note;
+    note.precision(2);
+    note << "fit u " << fit.upper_support << " f " << fit.fore_support << " a " << fit.against
+         << " m " << fit.margin << " c " << fit.clutter;
+    const cv::Point2d o = cv::Point2d(region_.tl()) + cv::Point2d(evidence_.window_tl());
+    m->phase = MeasurementPhase::kOk;
+    m->note = note.str();
+    m->confidence = conf;
+    m->upper_deg = fit.upper_deg;
+    m->fore_deg = fit.fore_deg;
+    m->bend_deg = AngleDiff(fit.fore_deg, fit.upper_deg);
+    m->bent = std::fabs(m->bend_deg) > kStraightDeg;
+    m->yaw_deg = m->bent ? kNaN : 0.0;
+    m->elbow_px = fit.elbow_px + o;
+    m->wrist_px = fit.wrist_px + o;
+    m->upper_com_px = (*m->shoulder_px + *m->elbow_px) * 0.5;
+    m->fore_com_px = (*m->elbow_px + *m->wrist_px) * 0.5;
+  }
+
+  // The thesis path (chapter 5): the largest region of the two-step difference, its hull and
+  // deepest defect, the 30 % rule and the split.
+  void MeasureThesis(const Frame& frame, ArmMeasurement* m) {
     m->phase = MeasurementPhase::kLost;
     FillSceneOverlay(m);
     if (!scene_.note.empty() && !scene_.body_box && !scene_.fixed_shoulder) {
@@ -161,17 +226,10 @@ class BgsubEngine final : public Engine {
     }
     cv::Rect box;
     std::string note;
-    const bool improved = !options_.thesis_mode;
     // Side unknown (no arm in the arm-length image): the largest moving region decides it.
     const bool largest_only = scene_.side == 0 && !scene_.fixed_shoulder;
     if (!bgsub::FindArmMask(gray_, frame.image(region_), scene_, options_, largest_only, &buffers_,
                             &box, &note)) {
-      const std::optional<cv::Point2d> rest_shoulder = scene_.Shoulder(scene_.side, options_);
-      if (improved && options_.rest_pose && rest_shoulder &&
-          scene_.ArmAtRest(*rest_shoulder, options_, buffers_)) {
-        FillRest(*rest_shoulder, m);
-        return;
-      }
       m->note = note;
       return;
     }
@@ -185,27 +243,11 @@ class BgsubEngine final : public Engine {
       m->note = "no shoulder: no body in the standstill and no --shoulder";
       return;
     }
-    const double upper_len = options_.upper_arm_fraction * scene_.ref_reach_px;
-    const double fore_len = scene_.ref_reach_px - upper_len;
-    bgsub::ArmGeometry g =
-        bgsub::AnalyzeArm(buffers_.arm, box, *shoulder, options_, was_bent_, upper_len, fore_len);
+    const bgsub::ArmGeometry g = bgsub::AnalyzeArm(buffers_.arm, box, *shoulder, options_, false);
     if (!g.found) {
       m->note = g.note;
       return;
     }
-    if (improved && options_.rest_pose && !ForearmOnly(*shoulder, &g) &&
-        std::fabs(AngleDiff(g.upper_deg, options_.rest_deg)) < kPersonFitDeg &&
-        options_.upper_from_person) {
-      // The upper arm near its rest pose overlaps its standstill place, where nothing moved: its
-      // visible part is off its axis. The person mask shows all of it.
-      const double fit = scene_.UpperArmFromPerson(*shoulder, side, options_, &buffers_);
-      if (std::isfinite(fit) && std::fabs(AngleDiff(fit, options_.rest_deg)) < kPersonFitDeg) {
-        bgsub::RefitWithUpper(buffers_.arm, box, *shoulder, options_, was_bent_, fit, upper_len,
-                              fore_len, &g);
-        g.note += ", upper arm from the person mask";
-      }
-    }
-    was_bent_ = g.bent;
     const cv::Point o = region_.tl();
     m->phase = MeasurementPhase::kOk;
     m->note = g.note;
@@ -223,112 +265,39 @@ class BgsubEngine final : public Engine {
     m->arm_hull = Offset(g.hull, o);
   }
 
-  // The upper arm at rest (no moved pixels along it) and the moving region starting near the
-  // rest elbow: only the forearm moved, e.g. flexing from the hanging pose. The standstill hides
-  // the upper arm, so it keeps the rest direction.
-  bool ForearmOnly(const cv::Point2d& shoulder, bgsub::ArmGeometry* g) const {
-    const double upper_len = options_.upper_arm_fraction * scene_.ref_reach_px;
-    if (!(upper_len > 0)) return false;
-    double nearest2 = 1e36;
-    for (const cv::Point& p : g->contour) {
-      const double dx = p.x - shoulder.x, dy = p.y - shoulder.y;
-      nearest2 = std::min(nearest2, dx * dx + dy * dy);
-    }
-    const double nearest = std::sqrt(nearest2);
-    if (nearest < 0.6 * upper_len || !scene_.ArmAtRest(shoulder, options_, buffers_)) return false;
-    const double up = options_.rest_deg;
-    const cv::Point2d elbow = shoulder + DirectionVector(up) * upper_len;
-    const cv::Point2d com(g->whole.cx, g->whole.cy);
-    g->upper_deg = up;
-    g->fore_deg = ResolveDirection(g->axis_deg, elbow, com);
-    g->bent = std::fabs(AngleDiff(g->fore_deg, g->upper_deg)) > 10;
-    g->elbow_px = elbow;
-    g->upper_com_px = shoulder + DirectionVector(up) * (upper_len / 2);
-    g->fore_com_px = com;
-    double far = -1;
-    for (const cv::Point& p : g->contour) {
-      const double d = std::hypot(p.x - elbow.x, p.y - elbow.y);
-      if (d > far) far = d, g->wrist_px = p;
-    }
-    g->reach_px = upper_len + far;
-    g->note = "upper arm at rest, forearm moved";
-    return true;
-  }
-
-  // Nothing moved and the arm's standstill place is unchanged: the arm is at its rest pose.
-  void FillRest(const cv::Point2d& shoulder, ArmMeasurement* m) const {
-    const cv::Point o = region_.tl();
-    const double upper_len = options_.upper_arm_fraction * scene_.ref_reach_px;
-    const cv::Point2d dir = DirectionVector(options_.rest_deg);
-    m->phase = MeasurementPhase::kOk;
-    m->note = "arm at rest (standstill pose)";
-    m->upper_deg = Wrap180(options_.rest_deg);
-    m->fore_deg = m->upper_deg;
-    m->bend_deg = 0;
-    m->yaw_deg = 0;
-    m->shoulder_px = Offset(shoulder, o);
-    m->elbow_px = Offset(shoulder + dir * upper_len, o);
-    m->wrist_px = Offset(shoulder + dir * scene_.ref_reach_px, o);
-    m->upper_com_px = Offset(shoulder + dir * (upper_len / 2), o);
-    m->fore_com_px = Offset(shoulder + dir * (upper_len + scene_.ref_reach_px) * 0.5, o);
-  }
-
-  // Share of the fitted arm (shoulder to elbow to wrist, the joints' ends left out) that lies on
-  // the person mask (frame vs background, one pixel of tolerance): a pick that runs over the
-  // empty room is not the arm. The arm's own pixels are the person's too.
-  double Support(const ArmMeasurement& m) const {
-    if (!m.shoulder_px || !m.elbow_px || !m.wrist_px || buffers_.person.empty()) return kNaN;
-    const cv::Point2d o(region_.tl());
-    const cv::Point2d joints[3] = {*m.shoulder_px - o, *m.elbow_px - o, *m.wrist_px - o};
-    const cv::Mat& person = buffers_.person;
-    int on = 0, total = 0;
-    for (int seg = 0; seg < 2; ++seg) {
-      const cv::Point2d a = joints[seg], b = joints[seg + 1];
-      const double len = std::hypot(b.x - a.x, b.y - a.y);
-      const int n = std::max(2, static_cast<int>(len / 2));
-      for (int k = 0; k < n; ++k) {
-        const double t = seg == 0 ? 0.2 + 0.8 * k / n : 0.9 * k / n;
-        const cv::Point p(cvRound(a.x + t * (b.x - a.x)), cvRound(a.y + t * (b.y - a.y)));
-        if (p.x < 0 || p.y < 0 || p.x >= person.cols || p.y >= person.rows) continue;
-        ++total;
-        bool hit = false;
-        for (int dy = -1; dy <= 1 && !hit; ++dy) {
-          for (int dx = -1; dx <= 1 && !hit; ++dx) {
-            const cv::Point q(p.x + dx, p.y + dy);
-            hit = q.x >= 0 && q.y >= 0 && q.x < person.cols && q.y < person.rows &&
-                  person.at<uchar>(q) != 0;
-          }
-        }
-        on += hit;
-      }
-    }
-    return total > 0 ? static_cast<double>(on) / total : kNaN;
-  }
-
-  // yaw = acos(a/b) (5.2.6): a from this frame, b from the arm-length image. Improved: the arm's
-  // reach from the shoulder along its axis, which a partly hidden arm does not shorten.
+  // yaw = acos(a/b) (5.2.6): a from this frame, b from the arm-length image.
   double Yaw(const bgsub::ArmGeometry& g) const {
-    const bool extent = !options_.thesis_mode && options_.extent_yaw;
-    const double a = extent ? g.reach_px : g.axes.major;
-    const double b = extent ? scene_.ref_reach_px : scene_.ref_major_px;
+    const double a = g.axes.major, b = scene_.ref_major_px;
     if (!(b > 0) || !std::isfinite(a)) return kNaN;
     return DegFromRad(std::acos(std::min(1.0, std::max(0.0, a / b))));
   }
+
+  // The moved mask's opening, and the largest share of the arm's flanks that may look like arm.
+  inline static const cv::Mat kSpeckKernel = cv::Mat::ones(3, 3, CV_8UC1);
+  static constexpr double kMaxClutter = 0.5;
+  // A bend under this many degrees is a straight arm (yaw is measured, not nan).
+  static constexpr double kStraightDeg = 10;
 
   BgsubOptions options_;
   bool begun_ = false;
   cv::Size frame_size_;
   cv::Rect region_;
+  std::optional<cv::Point2d> fixed_shoulder_;
+  // The thesis path.
   bgsub::SceneModel scene_;
   cv::Mat arm_length_gray_;
   cv::Mat arm_length_bgr_;
   cv::Mat standstill_sum_;
-  cv::Mat standstill_bgr_sum_;
   int standstill_count_ = 0;
-  bool was_bent_ = false;
-  ArmGate gate_;  // honest status: a pick off the person or an impossible jump is `lost`
   cv::Mat gray_;
   bgsub::Buffers buffers_;
+  // The default path.
+  bgsub::PixelModel pixels_;
+  bgsub::ArmCalibration cal_;
+  bgsub::ArmEvidence evidence_;
+  bgsub::ArmFitter fitter_;
+  cv::Mat person_, moved_;
+  ArmGate gate_;  // honest status: weak evidence or an impossible jump is `lost`
 };
 
 }  // namespace

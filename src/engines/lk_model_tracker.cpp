@@ -26,6 +26,11 @@ constexpr double kDistinctDeg = 15;    // poses farther apart than this are diff
 constexpr double kRedetectMargin = 0.15;
 // A far-apart pose scoring at least this share of the best one makes the frame ambiguous.
 constexpr double kAmbiguousShare = 0.9;
+// The forearm alone: another forearm direction this far from the fitted one (the upper arm kept)
+// scoring at least this share of the fitted forearm leaves the forearm's direction unsaid (a
+// forearm across the torso in the shirt's cloth, a sleeve washed out by the light).
+constexpr double kForeApartDeg = 20;
+constexpr double kForeAmbiguousShare = 0.62;
 constexpr double kTypicalRate = 0.05, kTypicalStartRate = 0.3;
 constexpr int kTypicalStartFrames = 10;
 constexpr double kTypicalDecay = 0.995;  // per lost frame: the bar lowers slowly
@@ -139,6 +144,14 @@ class ModelTracker : public Tracker {
       note = "ambiguous: a pose " + FormatNumber(kDistinctDeg, 0) +
              "+ deg away explains the frame as well";
     }
+    // The forearm's own margin decides only what is written: the pose is still the best one, and
+    // is tracked on as before.
+    double written = support;
+    if (written >= o_.min_support && ForeAmbiguous(best)) {
+      written = 0;
+      note = "ambiguous forearm: a direction " + FormatNumber(kForeApartDeg, 0) +
+             "+ deg away explains it as well";
+    }
     note += " (score " + FormatNumber(best.score.total, 2) + " of a usual " +
             FormatNumber(typical_, 2) + ")";
     const bool confident = support >= o_.min_support;
@@ -158,12 +171,19 @@ class ModelTracker : public Tracker {
       upper_velocity_ = fore_velocity_ = 0;
       flow_.ForgetArm();
     }
-    return MakePose(true, support, note);
+    return MakePose(true, written, note);
   }
 
  private:
   static constexpr double kMinTypical = 0.1;
   static constexpr double kDefaultFrameS = 1.0 / 30;  // still images: one frame at 30 fps
+
+  // Another forearm direction, the upper arm kept, explains the image about as well as the
+  // fitted forearm: its evidence does not say where it points.
+  bool ForeAmbiguous(const arm::FitResult& best) const {
+    const double rival = arm::ForeRivalScore(evidence_, shape_, best.pose, kForeApartDeg);
+    return rival > kForeAmbiguousShare * best.score.fore.score;
+  }
 
   static double Reach(const arm::ArmShape& s) { return s.upper_px + s.fore_px + s.hand_px; }
 

@@ -1,10 +1,10 @@
 // The LK engine on randomised scenes (synth arm --random), one or two fixed scenes per failure
 // class of docs/accuracy.md: short sleeves, camouflage, the hand above the head, the forearm
-// across the torso, fast swings, a swaying body. Each run gets the joints clicked on the first
-// motion frame (the benchmark's `joints` mode) and is scored over the motion frames: the error of
-// its ok frames, its coverage and its confidently wrong frames (ok, worse segment > 15 deg off).
-// The seeds lie outside the tuning and held-out ranges; the frames are small and JPEG-compressed
-// as the scene's video would hold them.
+// across the torso (also in the shirt's cloth), fast swings, a swaying body. Each run gets the
+// joints clicked on the first motion frame (the benchmark's `joints` mode) and is scored over the
+// motion frames: the error of its ok frames, its coverage and its confidently wrong frames (ok,
+// worse segment > 15 deg off). The seeds lie outside the tuning and held-out ranges; the frames are
+// small and JPEG-compressed as the scene's video would hold them.
 #include <cmath>
 #include <memory>
 
@@ -113,6 +113,13 @@ TEST(LkRandomScene, ForearmAcrossTheTorso) { ExpectWithin(7005, SceneTier::kMedi
 TEST(LkRandomScene, FastSwingsOfASwayingBody) { ExpectWithin(7004, SceneTier::kHard, 6, 0.85, 4); }
 TEST(LkRandomScene, SleeveInTheShirtsClothAcrossIt) {
   ExpectWithin(7002, SceneTier::kHard, 5, 0.85, 2);
+}
+// The forearm across the torso in the shirt's cloth, under drifting light: there its evidence
+// does not say which way it points, and those frames must be lost rather than guessed (each scene
+// had one confidently wrong frame before the forearm's own margin was checked).
+TEST(LkRandomScene, ForearmAcrossTheTorsoInTheShirtsCloth) {
+  ExpectWithin(7034, SceneTier::kHard, 5, 0.85, 0);
+  ExpectWithin(7017, SceneTier::kHard, 6, 0.85, 0);
 }
 
 // The arm vanishes for a while (the empty room): whatever the engine locks onto then is wrong, so
