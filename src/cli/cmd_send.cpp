@@ -2,6 +2,7 @@
 // controller line by line (docs/link.md), re-checking every line against the limits right
 // before it is written, with a journal beside the program so --resume loses and repeats no move.
 #include <QCoreApplication>
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <iostream>
@@ -14,6 +15,8 @@
 #include "armmimic/robot/link_protocol.h"
 #include "armmimic/robot/profile.h"
 #include "armmimic/robot/send_session.h"
+#include "armmimic/robot/send_setup.h"
+#include "armmimic/robot/send_summary.h"
 #include "armmimic/serial/link_runner.h"
 #include "armmimic/serial/serial_link.h"
 #include "command.h"
@@ -47,7 +50,8 @@ std::string Num(double v, int decimals) { return FormatNumber(v, decimals); }
 
 std::string Interrupted() { return InterruptGuard::Message(); }
 
-// --dry-run: every line that would be sent, with its planned time; no port.
+// --dry-run: every line that would be sent, with its planned time, then (on stderr) what the
+// robot panel's confirmation shows: duration, start pose, ranges against the limits; no port.
 int PrintDryRun(const robot::SendSession& session, const GlobalOptions& global) {
   const std::string& source = session.program().source_name;
   int moves = 0;
@@ -59,7 +63,8 @@ int PrintDryRun(const robot::SendSession& session, const GlobalOptions& global) 
   if (!global.quiet) {
     std::cerr << "send --dry-run: " << session.lines().size() << " lines (" << moves
               << " motion), planned duration " << Num(session.duration_s(), 2)
-              << " s; no port opened, nothing sent\n";
+              << " s; no port opened, nothing sent\n"
+              << robot::FormatSendSummary(robot::SummarizeSend(session));
   }
   return kExitOk;
 }
@@ -162,23 +167,18 @@ Status PrepareSend(const SendOptions& o, robot::ControllerProfile* profile,
                    robot::SendSession* session) {
   const std::string& input = o.inputs[0];
 
-  *profile = robot::ControllerProfile::Default();
-  if (!o.profile_path.empty()) {
-    const Status s = robot::ReadProfile(o.profile_path, profile);
-    if (!s.ok()) return s;
-  }
-  if (o.timeout_s > 0) profile->prompt_timeout_s = o.timeout_s;
-  if (o.motion_timeout_s > 0) profile->motion_timeout_s = o.motion_timeout_s;
+  robot::SendSettings settings;
+  settings.profile_path = o.profile_path;
+  settings.prompt_timeout_s = std::max(0.0, o.timeout_s);
+  settings.motion_timeout_s = std::max(0.0, o.motion_timeout_s);
+  if (const Status s = robot::LoadSendProfile(settings, profile); !s.ok()) return s;
 
   robot::ValProgram program;
   {
     const Status s = robot::LoadProgramToSend(input, *profile, o.limits, &program);
     if (!s.ok()) return s;
   }
-  robot::SendStart start;
-  start.mode = o.resume    ? robot::SendStart::Mode::kResume
-               : o.restart ? robot::SendStart::Mode::kRestart
-                           : robot::SendStart::Mode::kFresh;
+  robot::SendStart start = robot::StartFor(o.resume, o.restart);
   start.resume_at_line = o.resume_at;
   start.dry_run = o.dry_run;
   return session->Prepare(std::move(program), *profile, o.limits, input, start);

@@ -253,6 +253,7 @@ void MainWindow::wireMimic() {
         return options;
       },
       [this] { return robot_->plannerOptions(); }, robot_->link());
+  mimic_->setProfileSource([this] { return robot_->profile(); });
   // The live frames fill the big view too while the robot follows.
   connect(mimic_->controller(), &MimicController::frameReady, this,
           [this](const QImage& image, int index, const ArmMeasurement& m) {

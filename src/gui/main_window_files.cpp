@@ -128,6 +128,9 @@ bool MainWindow::openAngleFile(const QString& path) {
     case EngineKind::kMarker:
       o.engine.marker = recorded.engine.marker;
       break;
+    case EngineKind::kPose:
+      o.engine.pose = recorded.engine.pose;
+      break;
   }
   o.start = recorded.start;
   settings_->setOptions(o);

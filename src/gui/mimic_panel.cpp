@@ -181,7 +181,8 @@ bool MimicPanel::startMimicking() {
     return false;
   }
   const bool ok =
-      controller_->start(analysis_(), planner_(), profile_, link_->serialLink(), link_->device());
+      controller_->start(analysis_(), planner_(), profile_source_ ? profile_source_() : profile_,
+                         link_->serialLink(), link_->device());
   if (ok) {
     emit message(tr("Mimic live started on %1").arg(link_->device()));
     if (deadman_->isChecked()) hold_->setFocus();

@@ -41,6 +41,11 @@ class MimicPanel : public QWidget {
   void setSources(std::function<AnalysisOptions()> analysis,
                   std::function<robot::PlannerOptions()> planner, RobotLink* link);
 
+  // The controller profile the Robot panel's Controller tab picked (default: the built-in one).
+  void setProfileSource(std::function<robot::ControllerProfile()> profile) {
+    profile_source_ = std::move(profile);
+  }
+
   MimicController* controller() const { return controller_; }
   VideoView* view() const { return view_; }
   RobotPreview* preview() const { return preview_; }
@@ -64,6 +69,7 @@ class MimicPanel : public QWidget {
   std::function<robot::PlannerOptions()> planner_;
   RobotLink* link_ = nullptr;
   robot::ControllerProfile profile_;
+  std::function<robot::ControllerProfile()> profile_source_;
   QString shown_;
   QTimer refresh_;
   VideoView* view_;

@@ -1,8 +1,10 @@
 // RobotLink: the robot panel's handle on the serial link. A thin adapter over
 // serial::SerialLink and robot::SendSession, the same transport and send logic the CLI's send
 // uses: the program is checked as a whole, every line is gated through robot::CheckLine right
-// before it is written, and the link lines carry the same timeouts. It reports in QString
-// messages. Pause holds the next line back; abort stops after the line in flight.
+// before it is written, the link lines carry the same timeouts, the journal (INPUT.journal)
+// records every line, and a resume whose last line is uncertain asks the arm (WHERE) first. It
+// reports in QString messages. Pause holds the next line back; abort stops after the line in
+// flight.
 #pragma once
 
 #include <memory>
@@ -13,10 +15,7 @@
 #include "armmimic/robot/profile.h"
 #include "armmimic/robot/send_session.h"
 #include "armmimic/robot/val_program.h"
-
-namespace armmimic::serial {
-class SerialLink;
-}
+#include "armmimic/serial/serial_link.h"
 
 namespace armmimic::gui {
 
@@ -26,16 +25,26 @@ class RobotLink : public QObject {
   explicit RobotLink(QObject* parent = nullptr);
   ~RobotLink() override;
 
-  bool connectPort(const QString& device, int baud);
+  bool connectPort(const serial::PortSettings& port);
   void disconnectPort();
   bool isConnected() const;
   QString device() const { return device_; }
+  // The settings the open port was given (empty port name when not connected).
+  const serial::PortSettings& portSettings() const { return port_; }
 
-  // Sends `program` with `profile` and `limits` (tightened by the program's header limits),
-  // as `armmimic-cli send` does. `start` chooses the journal and resume behaviour (default:
-  // from the first line, no journal); the journal is INPUT.journal, `input` defaulting to the
-  // program's source name. A resume whose last line is uncertain needs the WHERE step first
-  // (robot::SendSession::UncertainQuery / ResolveUncertain), as the CLI does.
+  // Prepares a send of `program` with `profile` and `limits` (tightened by the program's header
+  // limits), as `armmimic-cli send` does: `start` chooses fresh, resume or restart, and the
+  // journal is INPUT.journal (`input` defaulting to the program's source name). False, with the
+  // message, when the session refuses (the program, the journal). prepared() then tells what
+  // would be sent; startPrepared() sends it.
+  bool prepare(const robot::ValProgram& program, const robot::ControllerProfile& profile,
+               const robot::JointLimits& limits, const robot::SendStart& start,
+               const std::string& input, QString* error);
+  const robot::SendSession* prepared() const { return session_.get(); }
+  // Starts the prepared send (asking the arm WHERE first when the last line of an interrupted
+  // send is uncertain). A session with nothing to do finishes at once.
+  bool startPrepared();
+  // prepare() and startPrepared() in one, reporting a refusal through error().
   bool send(const robot::ValProgram& program, const robot::ControllerProfile& profile,
             const robot::JointLimits& limits, const robot::SendStart& start = NoJournal(),
             const std::string& input = "");
@@ -44,7 +53,7 @@ class RobotLink : public QObject {
     s.journal = false;
     return s;
   }
-  bool isSending() const { return sending_; }
+  bool isSending() const { return phase_ != Phase::kIdle; }
   bool isPaused() const;
   void setPaused(bool paused);
   void abort();
@@ -59,15 +68,23 @@ class RobotLink : public QObject {
   void connectedChanged(bool connected, const QString& device);
   void progress(int acknowledged, int total);
   void received(const QString& line);  // each line the controller sent, as is
+  void note(const QString& message);   // what the WHERE before a resume found
   void finished(bool ok, const QString& message);
   void error(const QString& message);
 
  private:
+  enum class Phase { kIdle, kAskingWhere, kSending };
+  void streamLines();
+  void onFinished(bool ok);
+  void endSend(bool ok, const QString& message);
+
   serial::SerialLink* link_;
   QString device_;
-  bool sending_ = false;
+  serial::PortSettings port_;
+  Phase phase_ = Phase::kIdle;
   bool aborted_ = false;
-  std::string source_;
+  bool journaled_ = false;
+  robot::ControllerProfile profile_;
   std::unique_ptr<robot::SendSession> session_;
 };
 

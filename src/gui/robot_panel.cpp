@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <memory>
-#include <sstream>
 #include <vector>
 
 #include <QCheckBox>
@@ -12,17 +11,16 @@
 #include <QFileInfo>
 #include <QHeaderView>
 #include <QLabel>
-#include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSettings>
 #include <QTableWidget>
 
 #include "arm_view_3d.h"
 #include "armmimic/core/atomic_file.h"
 #include "armmimic/robot/val_program.h"
 #include "armmimic/serial/serial_link.h"
+#include "controller_settings.h"
 #include "recent_files.h"
 #include "robot_link.h"
 #include "robot_preview.h"
@@ -38,6 +36,15 @@ RobotPanel::RobotPanel(QWidget* parent)
       link_(new RobotLink(this)),
       sim_(new SimController(this)) {
   ui_->setupUi(this);  // the static layout: ui/robot_panel.ui
+  controller_ = new ControllerSettings(*ui_, this);
+  connect(controller_, &ControllerSettings::errorOccurred, this, &RobotPanel::errorOccurred);
+  connect(controller_, &ControllerSettings::profileChanged, this,
+          [this](const robot::ControllerProfile& profile) {
+            profile_ = profile;
+            emit message(tr("Controller profile: %1 (%2 mode)")
+                             .arg(QString::fromStdString(profile.name))
+                             .arg(robot::SendModeName(profile.mode)));
+          });
   preview_ = ui_->robotPreview;
   view3d_ = new ArmView3D;
   ui_->view3dLayout->addWidget(view3d_);
@@ -81,6 +88,7 @@ RobotPanel::RobotPanel(QWidget* parent)
     updateButtons();
   });
   connect(link_, &RobotLink::error, this, &RobotPanel::errorOccurred);
+  connect(link_, &RobotLink::note, this, &RobotPanel::message);
   connect(link_, &RobotLink::received, this,
           [this](const QString& line) { replies_->appendPlainText(line); });
   connect(link_, &RobotLink::progress, this, [this](int done, int total) {
@@ -203,14 +211,12 @@ void RobotPanel::resetPlannerDefaults() {
 void RobotPanel::wireLinkBox() {
   Ui::RobotPanelForm& u = *ui_;
   port_ = u.portCombo;
-  baud_ = u.baudCombo;
-  for (int b : {1200, 2400, 4800, 9600, 19200, 38400}) baud_->addItem(QString::number(b), b);
-  baud_->setCurrentText("9600");
   sim_speed_ = u.simSpeed;
   sim_button_ = u.simButton;
   connect_button_ = u.connectButton;
   send_button_ = u.sendButton;
   pause_button_ = u.pauseButton;
+  resume_button_ = u.resumeButton;
   abort_button_ = u.abortButton;
   send_progress_ = u.sendProgress;
   replies_ = u.replyLog;
@@ -235,6 +241,7 @@ void RobotPanel::wireLinkBox() {
     }
   });
   connect(send_button_, &QPushButton::clicked, this, [this] { sendPlan(false); });
+  connect(resume_button_, &QPushButton::clicked, this, [this] { resumeSend(false); });
   connect(pause_button_, &QPushButton::toggled, link_, &RobotLink::setPaused);
   connect(abort_button_, &QPushButton::clicked, link_, &RobotLink::abort);
   refreshPorts();
@@ -261,6 +268,7 @@ void RobotPanel::updateButtons() {
   sim_button_->setText(sim_->isRunning() ? tr("Stop simulated controller")
                                          : tr("Start simulated controller"));
   send_button_->setEnabled(connected && plan_.planned() && !sending);
+  resume_button_->setEnabled(connected && plan_.planned() && !sending);
   pause_button_->setEnabled(sending);
   abort_button_->setEnabled(sending);
   if (!sending) {
@@ -268,7 +276,7 @@ void RobotPanel::updateButtons() {
     pause_button_->setChecked(false);
   }
   port_->setEnabled(!connected);
-  baud_->setEnabled(!connected);
+  controller_->setPortEditable(!connected);
 }
 
 robot::PlannerOptions RobotPanel::plannerOptions() const {
@@ -510,128 +518,9 @@ bool RobotPanel::connectTo(const QString& device) {
     emit errorOccurred(tr("No port chosen: pick one or start the simulated controller"));
     return false;
   }
-  return link_->connectPort(device, baud_->currentData().toInt());
-}
-
-bool RobotPanel::sendPlan(bool confirmed) {
-  if (!plan_.planned()) {
-    emit errorOccurred(
-        last_plan_failure_.isEmpty()
-            ? tr("Nothing to send: no plan (run the analysis first)")
-            : tr("Nothing to send: the plan was refused: %1").arg(last_plan_failure_));
-    return false;
-  }
-  std::string text;
-  Status st = plan_.ValText(profile_, &text);
-  robot::ValProgram program;
-  if (st) {
-    std::istringstream in(text);
-    st = robot::ParseValProgram(in, "plan.val", profile_.max_line_length, &program);
-  }
-  if (st) {
-    robot::SafetyState safety = robot::SafetyState::For(plan_.SendLimits(), profile_);
-    st = robot::CheckProgram(program, safety);
-  }
-  if (!st) {
-    emit errorOccurred(QString::fromStdString(st.message()));
-    return false;
-  }
-  if (!confirmed) {
-    const QString ranges =
-        QString::fromStdString(DescribeJointRanges(plan_.report(), plan_.SendLimits()));
-    QMessageBox box(QMessageBox::Warning, tr("Move the robot?"),
-                    tr("Send %1 lines to %2? The arm will move through these joint ranges:")
-                        .arg(program.lines.size())
-                        .arg(link_->device()),
-                    QMessageBox::Cancel, this);
-    box.setInformativeText("<pre>" + ranges.toHtmlEscaped() + "</pre>");
-    QPushButton* move = box.addButton(tr("Move the robot"), QMessageBox::AcceptRole);
-    box.setDefaultButton(QMessageBox::Cancel);
-    box.exec();
-    // Only the button that says so moves the arm: Esc, Cancel or closing the question do not.
-    if (box.clickedButton() != static_cast<QAbstractButton*>(move)) return false;
-  }
-  replies_->clear();
-  const bool ok = link_->send(program, profile_, plan_.SendLimits());
-  if (ok) emit linkStateChanged(tr("robot: sending to %1").arg(link_->device()));
-  updateButtons();
-  if (ok) emit sendingChanged(true);
-  return ok;
+  return link_->connectPort(controller_->portSettings(device));
 }
 
 QString RobotPanel::replyLog() const { return replies_->toPlainText(); }
-
-void RobotPanel::save(QSettings& s) const {
-  const robot::PlannerOptions o = plannerOptions();
-  s.beginGroup("robot");
-  s.setValue("mappingKind", robot::SourceKindName(mapping_kind_));
-  s.setValue("mirror", o.mapping.mirror);
-  const robot::JointMap maps[3] = {o.mapping.j1, o.mapping.j2, o.mapping.j3};
-  for (int i = 0; i < 3; ++i) {
-    s.setValue(QString("j%1/sign").arg(i + 1), maps[i].sign);
-    s.setValue(QString("j%1/offset").arg(i + 1), maps[i].offset_deg);
-  }
-  s.setValue("cutoff", o.cutoff_hz);
-  s.setValue("deadband", o.deadband_deg);
-  s.setValue("minInterval", o.min_interval_s);
-  s.setValue("maxGap", o.max_gap_s);
-  s.setValue("clamp", o.clamp);
-  QVariantList mins, maxs, speeds;
-  for (int j = 0; j < robot::kJoints; ++j) {
-    mins << o.limits.min_deg[j];
-    maxs << o.limits.max_deg[j];
-    speeds << o.limits.max_speed_deg_s[j];
-  }
-  s.setValue("limitsMin", mins);
-  s.setValue("limitsMax", maxs);
-  s.setValue("speedLimits", speeds);
-  s.setValue("port", port_->currentText());
-  s.setValue("baud", baud_->currentData());
-  s.endGroup();
-}
-
-void RobotPanel::load(QSettings& s) {
-  robot::PlannerOptions o = plannerOptions();
-  s.beginGroup("robot");
-  // The J1-J3 rows were saved showing this kind's mapping (its defaults, or changes to them).
-  const robot::SourceKind saved_kind =
-      s.value("mappingKind").toString() ==
-              QLatin1String(robot::SourceKindName(robot::SourceKind::kMarker))
-          ? robot::SourceKind::kMarker
-          : robot::SourceKind::kArm;
-  o.mapping.mirror = s.value("mirror", false).toBool();
-  robot::JointMap* maps[3] = {&o.mapping.j1, &o.mapping.j2, &o.mapping.j3};
-  for (int i = 0; i < 3; ++i) {
-    maps[i]->sign = s.value(QString("j%1/sign").arg(i + 1), maps[i]->sign).toDouble() < 0 ? -1 : 1;
-    maps[i]->offset_deg = s.value(QString("j%1/offset").arg(i + 1), maps[i]->offset_deg).toDouble();
-  }
-  o.cutoff_hz = s.value("cutoff", o.cutoff_hz).toDouble();
-  o.deadband_deg = s.value("deadband", o.deadband_deg).toDouble();
-  o.min_interval_s = s.value("minInterval", o.min_interval_s).toDouble();
-  o.max_gap_s = s.value("maxGap", o.max_gap_s).toDouble();
-  o.clamp = s.value("clamp", false).toBool();
-  const QVariantList mins = s.value("limitsMin").toList();
-  const QVariantList maxs = s.value("limitsMax").toList();
-  const QVariantList speeds = s.value("speedLimits").toList();
-  if (mins.size() == robot::kJoints && maxs.size() == robot::kJoints &&
-      speeds.size() == robot::kJoints) {
-    for (int j = 0; j < robot::kJoints; ++j) {
-      o.limits.min_deg[j] = mins[j].toDouble();
-      o.limits.max_deg[j] = maxs[j].toDouble();
-      o.limits.max_speed_deg_s[j] = speeds[j].toDouble();
-    }
-  }
-  const QString port = s.value("port").toString();
-  const int baud = baud_->findData(s.value("baud", 9600));
-  s.endGroup();
-  setMappingKind(saved_kind);
-  setPlannerOptions(o);
-  if (plan_.loaded()) {
-    followFileKind(robot::DetectSourceKind(plan_.angles()));
-    replan();
-  }
-  if (!port.isEmpty() && !port.contains("(simulated)")) port_->setEditText(port);
-  if (baud >= 0) baud_->setCurrentIndex(baud);
-}
 
 }  // namespace armmimic::gui

@@ -1,8 +1,10 @@
 // RobotPanel: the robot side of the workflow. Mapping, limits, filter and decimation settings
 // (the planner's options), the arm preview animated over the plan with limit violations shown,
-// the port, baud and connection, the built-in simulated controller, and sending with progress,
-// pause, abort and the controller's replies. Planning is RobotPlan, sending RobotLink, the
-// simulator SimController: this widget only edits and shows.
+// the port settings, controller profile and connection, the built-in simulated controller, and
+// sending with a confirmation, progress, pause, abort, resume from the journal and the
+// controller's replies. Planning is RobotPlan, the port and profile fields ControllerSettings,
+// sending RobotLink (robot::SendSession), the simulator SimController: this widget only edits
+// and shows. The send itself is in robot_panel_send.cpp.
 #pragma once
 
 #include <memory>
@@ -15,6 +17,7 @@
 #include "armmimic/core/same_file.h"
 #include "armmimic/robot/planner.h"
 #include "armmimic/robot/profile.h"
+#include "armmimic/robot/send_session.h"
 #include "robot_plan.h"
 
 class QCheckBox;
@@ -33,6 +36,7 @@ class RobotPanelForm;
 namespace armmimic::gui {
 
 class ArmView3D;
+class ControllerSettings;
 class RobotLink;
 class RobotPreview;
 class SimController;
@@ -48,6 +52,9 @@ class RobotPanel : public QWidget {
   const RobotPlan& plan() const { return plan_; }
   RobotLink* link() const { return link_; }
   SimController* simulator() const { return sim_; }
+  ControllerSettings* controllerSettings() const { return controller_; }
+  // The controller profile picked on the Controller tab (as last read from its file).
+  const robot::ControllerProfile& profile() const { return profile_; }
   RobotPreview* preview() const { return preview_; }  // the compact 2-D views
   ArmView3D* view3d() const { return view3d_; }
 
@@ -63,8 +70,14 @@ class RobotPanel : public QWidget {
   }
   bool startSimulator(double time_scale);
   bool connectTo(const QString& device);
-  // Sends the plan. `confirmed` false asks the operator first (showing the joint ranges).
+  // Sends the plan. `confirmed` false asks the operator first (duration, start pose, joint
+  // ranges against the limits), and, when the journal shows an earlier send of the same program
+  // stopped part way, whether to resume it or start over. `confirmed` true sends from the first
+  // line and refuses while such a send is unfinished.
   bool sendPlan(bool confirmed);
+  // Continues an interrupted send after the last line its journal shows acknowledged, with the
+  // refusals of `armmimic-cli send --resume` (no journal, a journal of another program).
+  bool resumeSend(bool confirmed);
   QString replyLog() const;
 
  public slots:
@@ -95,6 +108,12 @@ class RobotPanel : public QWidget {
   void showPose();
   void followFileKind(robot::SourceKind kind);
   void setMappingKind(robot::SourceKind kind);
+  bool startSend(robot::SendStart::Mode mode, bool confirmed);
+  // The program the plan gives with `profile`, and the input its journal is named after.
+  Status programToSend(const robot::ControllerProfile& profile, robot::ValProgram* program,
+                       std::string* input) const;
+  // The panel's words for the refusals of a resume (SendSession::Prepare checks them again).
+  bool checkResumable(const robot::ValProgram& program, const std::string& input);
 
   std::unique_ptr<Ui::RobotPanelForm> ui_;  // ui/robot_panel.ui
   RobotPlan plan_;
@@ -102,6 +121,7 @@ class RobotPanel : public QWidget {
   robot::ControllerProfile profile_;
   RobotLink* link_;
   SimController* sim_;
+  ControllerSettings* controller_;
   RobotPreview* preview_;
   ArmView3D* view3d_;
   QTimer animate_;
@@ -127,12 +147,12 @@ class RobotPanel : public QWidget {
   QPushButton* animate_button_;
   // Link.
   QComboBox* port_;
-  QComboBox* baud_;
   QDoubleSpinBox* sim_speed_;
   QPushButton* sim_button_;
   QPushButton* connect_button_;
   QPushButton* send_button_;
   QPushButton* pause_button_;
+  QPushButton* resume_button_;
   QPushButton* abort_button_;
   QProgressBar* send_progress_;
   QPlainTextEdit* replies_;

@@ -176,23 +176,4 @@ Status RobotPlan::ValText(const robot::ControllerProfile& profile, std::string* 
       robot::DescribePlan(path_, angles_, options_, report_, trajectory_), text);
 }
 
-namespace {
-
-// A value that prints as "-0.0" (from -0.04 up to 0) prints as "0.0".
-double NoNegativeZero(double deg) { return std::abs(deg) < 0.05 ? 0.0 : deg; }
-
-}  // namespace
-
-std::string DescribeJointRanges(const robot::PlanReport& report, const robot::JointLimits& limits) {
-  std::string out;
-  char line[160];
-  for (int j = 0; j < robot::kJoints; ++j) {
-    std::snprintf(line, sizeof(line), "J%d  %8.1f .. %8.1f   (limits %.0f .. %.0f)\n", j + 1,
-                  NoNegativeZero(report.min_deg[j]), NoNegativeZero(report.max_deg[j]),
-                  limits.min_deg[j], limits.max_deg[j]);
-    out += line;
-  }
-  return out;
-}
-
 }  // namespace armmimic::gui

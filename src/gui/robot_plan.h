@@ -71,7 +71,4 @@ class RobotPlan {
   robot::PlanReport report_;
 };
 
-// Joint ranges as the send confirmation shows them: planned min..max against the limits.
-std::string DescribeJointRanges(const robot::PlanReport& report, const robot::JointLimits& limits);
-
 }  // namespace armmimic::gui

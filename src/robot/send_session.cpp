@@ -43,9 +43,34 @@ bool IsMonitorSpeed(const std::string& line) {
 
 bool IsExecute(const std::string& line) { return NormalizeLine(line).rfind("EX", 0) == 0; }
 
-// Where the arm is after each line, as far as the program tells (moves and drives).
-std::vector<std::pair<bool, JointArray>> ExpectedPositions(const ValProgram& program) {
-  std::vector<std::pair<bool, JointArray>> after;
+}  // namespace
+
+Status LoadProgramToSend(const std::string& path, const ControllerProfile& profile,
+                         const JointLimits& limits, ValProgram* program) {
+  {
+    std::ifstream probe(path);
+    if (!probe) return Status::Error(path + ": cannot open");
+  }
+  if (!IsAngleFile(path)) return ReadValProgram(path, program, profile.max_line_length);
+  AngleFile angles;
+  Status s = ReadAngleFile(path, &angles);
+  if (!s.ok()) return s;
+  PlannerOptions options;
+  options.limits = limits;
+  Trajectory trajectory;
+  PlanReport report;
+  s = PlanTrajectory(angles, options, &trajectory, &report);
+  if (!s.ok()) return Status::Error(path + ": cannot plan: " + s.message());
+  std::string text;
+  const std::string base = path.substr(path.find_last_of('/') + 1);
+  s = FormatValProgram(trajectory, profile, limits, {"source=" + base}, &text);
+  if (!s.ok()) return Status::Error(path + ": " + s.message());
+  std::istringstream in(text);
+  return ParseValProgram(in, path + " (planned)", profile.max_line_length, program);
+}
+
+std::vector<ArmPosition> ArmPositionsAfterEachLine(const ValProgram& program) {
+  std::vector<ArmPosition> after;
   bool known = false;
   JointArray at{};
   for (const ValLine& l : program.lines) {
@@ -71,32 +96,6 @@ std::vector<std::pair<bool, JointArray>> ExpectedPositions(const ValProgram& pro
     after.push_back({known, at});
   }
   return after;
-}
-
-}  // namespace
-
-Status LoadProgramToSend(const std::string& path, const ControllerProfile& profile,
-                         const JointLimits& limits, ValProgram* program) {
-  {
-    std::ifstream probe(path);
-    if (!probe) return Status::Error(path + ": cannot open");
-  }
-  if (!IsAngleFile(path)) return ReadValProgram(path, program, profile.max_line_length);
-  AngleFile angles;
-  Status s = ReadAngleFile(path, &angles);
-  if (!s.ok()) return s;
-  PlannerOptions options;
-  options.limits = limits;
-  Trajectory trajectory;
-  PlanReport report;
-  s = PlanTrajectory(angles, options, &trajectory, &report);
-  if (!s.ok()) return Status::Error(path + ": cannot plan: " + s.message());
-  std::string text;
-  const std::string base = path.substr(path.find_last_of('/') + 1);
-  s = FormatValProgram(trajectory, profile, limits, {"source=" + base}, &text);
-  if (!s.ok()) return Status::Error(path + ": " + s.message());
-  std::istringstream in(text);
-  return ParseValProgram(in, path + " (planned)", profile.max_line_length, program);
 }
 
 SendSession::SendSession() = default;
@@ -247,7 +246,7 @@ Status SendSession::UncertainQuery(bool* ask, LinkLine* query) const {
   const ValLine& l = program_.lines[start_];
   if (!IsMotionLine(l.text)) return Status::Ok();  // a SPEED does the same thing twice
   const std::string where = program_.source_name + ":" + std::to_string(l.line_no);
-  if (!ExpectedPositions(program_)[start_].first) {
+  if (!ArmPositionsAfterEachLine(program_)[start_].known) {
     return Status::Error(where +
                          ": the link was lost while this line was out and its target is "
                          "unknown; check the arm, then use --resume-at " +
@@ -273,9 +272,9 @@ Status SendSession::ResolveUncertain(const std::vector<std::string>& where_repli
                          ": the controller's WHERE reply holds no six joint angles; check the "
                          "arm, then use --resume-at");
   }
-  const auto expected = ExpectedPositions(program_);
-  const JointArray& target = expected[i].second;
-  const bool before_known = i > 0 && expected[i - 1].first;
+  const std::vector<ArmPosition> expected = ArmPositionsAfterEachLine(program_);
+  const JointArray& target = expected[i].joint_deg;
+  const bool before_known = i > 0 && expected[i - 1].known;
   if (Near(now, target, kWhereToleranceDeg)) {
     *note = where + ": WHERE shows the arm at this line's target: it ran";
     if (use_journal_) {
@@ -294,7 +293,7 @@ Status SendSession::ResolveUncertain(const std::vector<std::string>& where_repli
     check_uncertain_ = false;
     return Status::Ok();
   }
-  if (before_known && Near(now, expected[i - 1].second, kWhereToleranceDeg)) {
+  if (before_known && Near(now, expected[i - 1].joint_deg, kWhereToleranceDeg)) {
     *note = where + ": WHERE shows the arm still at the previous target: sending this line again";
     check_uncertain_ = false;
     return Status::Ok();

@@ -136,6 +136,12 @@ TEST(CliSend, DryRunPrintsEveryLineWithItsTimeAndOpensNoPort) {
   EXPECT_NE(r.out.find("p.val:2\tSPEED 50"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("t=2.000\t"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("DO MOVE #PPOINT(24.00,-70.00,-12.00,0.00,0.00,0.00)"), std::string::npos);
+  // What the robot panel's confirmation shows: duration, start pose, ranges against the limits.
+  EXPECT_NE(r.err.find("4 lines (3 motion), about 2.0 s"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("Start pose (the first target): J1 0.0 J2 -90.0 J3 0.0"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("J2     -90.0 ..    -70.0   (limits -200 .. 20)"), std::string::npos)
+      << r.err;
   EXPECT_FALSE(std::ifstream(dir.file("p.val.journal")).good());  // nothing was sent
 }
 

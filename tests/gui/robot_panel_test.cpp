@@ -208,16 +208,5 @@ TEST_F(RobotPanelTest, PreviewCaptionHasItsOwnRow) {
   }
 }
 
-TEST_F(RobotPanelTest, ConfirmationRangesNeverSayMinusZero) {
-  robot::PlanReport report;
-  for (int j = 0; j < robot::kJoints; ++j) report.min_deg[j] = report.max_deg[j] = 0;
-  report.min_deg[1] = -151.7;
-  report.max_deg[1] = -0.0;   // the arm hanging, reached from below
-  report.max_deg[2] = -0.02;  // rounds to zero
-  const std::string text = gui::DescribeJointRanges(report, robot::JointLimits());
-  EXPECT_EQ(text.find("-0.0"), std::string::npos) << text;
-  EXPECT_NE(text.find("-151.7 ..      0.0"), std::string::npos) << text;
-}
-
 }  // namespace
 }  // namespace armmimic::test

@@ -264,6 +264,38 @@ TEST_F(SessionTest, EveryParameterFormResetsToItsDefaults) {
   EXPECT_EQ(robot->findChild<QTableWidget*>("limitsTable")->item(2, 1)->text(), "45");
 }
 
+TEST_F(SessionTest, APoseAngleFileRestoresThePoseSettings) {
+  const std::string dir = tmp_.file("pose");
+  QDir().mkpath(QString::fromStdString(dir));
+  QFile::copy(QString::fromStdString(scenes().video()), QString::fromStdString(dir + "/scene.avi"));
+  const std::string tsv = dir + "/scene.tsv";
+  std::string text =
+      "# armmimic angles v1\n"
+      "# engine=pose source=scene.avi fps=30 width=320 height=240 start=0 pose.side=left "
+      "pose.min_score=0.35 pose.arm_crop=1.25 pose.max_disagreement_deg=12\n"
+      "# units: degrees; directions CCW on screen from +x, (-180,180]; image y down\n"
+      "frame\ttime_s\tstatus\tupper_deg\tfore_deg\tyaw_deg\tbend_deg\tupper_cx\tupper_cy\t"
+      "fore_cx\tfore_cy\tconfidence\n";
+  for (int f = 0; f < 5; ++f) {
+    text += std::to_string(f) + "\t" + std::to_string(f / 30.0) +
+            "\tok\t-90.000\t-80.000\tnan\tnan\t100.00\t100.00\t100.00\t140.00\t0.900\n";
+  }
+  QFile out(QString::fromStdString(tsv));
+  ASSERT_TRUE(out.open(QIODevice::WriteOnly));
+  out.write(text.c_str());
+  out.close();
+  MainWindow w;
+  Show(w);
+  ASSERT_TRUE(w.openAngleFile(QString::fromStdString(tsv))) << w.log()->text().toStdString();
+  const EngineOptions e = w.settingsPanel()->options().engine;
+  EXPECT_EQ(e.kind, EngineKind::kPose);
+  EXPECT_EQ(e.pose.side, PoseSide::kLeft);
+  EXPECT_DOUBLE_EQ(e.pose.min_score, 0.35);
+  EXPECT_DOUBLE_EQ(e.pose.arm_crop, 1.25);
+  EXPECT_DOUBLE_EQ(e.pose.max_disagreement_deg, 12);
+  EXPECT_TRUE(WaitUntil([&] { return w.results().rows() == 5; }));
+}
+
 TEST_F(SessionTest, DropsOpenAngleFilesProgramsAndSessions) {
   const std::string tsv = CliAngles(tmp_.file("run"));
   const std::string val = tmp_.file("run/program.val");

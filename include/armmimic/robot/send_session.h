@@ -32,6 +32,14 @@ namespace armmimic::robot {
 Status LoadProgramToSend(const std::string& path, const ControllerProfile& profile,
                          const JointLimits& limits, ValProgram* program);
 
+// Where the arm is after each line of `program`, as far as the program tells: a MOVE's target, a
+// DRIVE's change added to the last known pose. `known` is false until the first target.
+struct ArmPosition {
+  bool known = false;
+  JointArray joint_deg{};
+};
+std::vector<ArmPosition> ArmPositionsAfterEachLine(const ValProgram& program);
+
 struct SendStart {
   enum class Mode {
     kFresh,    // from the first line; refused while the journal shows an unfinished send
@@ -40,7 +48,7 @@ struct SendStart {
   };
   Mode mode = Mode::kFresh;
   int resume_at_line = 0;  // > 0: continue from this file line (--resume-at), needs the journal
-  bool journal = true;     // false: no journal is read or written (dry runs, the GUI for now)
+  bool journal = true;     // false: no journal is read or written
   bool dry_run = false;    // a dry run never refuses because of an unfinished journal
 };
 

@@ -59,6 +59,8 @@ class SerialLink : public QObject {
   Status Open(const PortSettings& settings);
   void Close();
   bool is_open() const;
+  // The open port's file descriptor (-1 when closed), to read back what the device was given.
+  qintptr native_handle() const { return port_->handle(); }
 
   // Wakes the controller and streams `lines`. progress() follows each acknowledgement;
   // finished() comes once, when the protocol is done, failed or was cancelled.

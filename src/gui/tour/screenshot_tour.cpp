@@ -34,6 +34,8 @@
 #include "main_window.h"
 #include "mimic_controller.h"
 #include "mimic_panel.h"
+#include "result_store.h"
+#include "robot_link.h"
 #include "robot_panel.h"
 #include "sim_controller.h"
 #include "video_player.h"
@@ -48,6 +50,14 @@ void Shot(const QString& name) {
   const QPixmap screen = QGuiApplication::primaryScreen()->grabWindow(0);
   const QString path = QDir(g_out).filePath(name + ".png");
   if (!screen.save(path)) std::fprintf(stderr, "cannot write %s\n", qPrintable(path));
+  std::printf("%s\n", qPrintable(path));
+}
+
+// The window as it is drawn right now, without turning the event loop: for a state that the
+// next queued events would end (the analysis running, its progress bar in the status bar).
+void ShotOfWindowNow(QWidget* window, const QString& name) {
+  const QString path = QDir(g_out).filePath(name + ".png");
+  if (!window->grab().save(path)) std::fprintf(stderr, "cannot write %s\n", qPrintable(path));
   std::printf("%s\n", qPrintable(path));
 }
 
@@ -125,11 +135,19 @@ int main(int argc, char** argv) {
     scroll->verticalScrollBar()->setValue(0);
   }
 
+  // Half way through the run: the rows so far in the plot (what the window's 40 ms redraw
+  // shows next), the phase and the progress bar in the status bar.
   bool mid_shot = false;
+  armmimic::gui::ResultStore rows_so_far;
+  QObject::connect(w.job(), &armmimic::gui::AnalysisJob::measured,
+                   [&](const armmimic::ArmMeasurement& m) { rows_so_far.add(m); });
   QObject::connect(w.job(), &armmimic::gui::AnalysisJob::progress, [&](int done, int total) {
-    if (!mid_shot && total > 0 && done > total / 3) {
+    // Waiting here would let the queued progress and the end of the run through first.
+    if (!mid_shot && total > 0 && done > total / 2) {
       mid_shot = true;
-      Shot("04-analysing");
+      w.plot()->setResults(rows_so_far);
+      QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+      ShotOfWindowNow(&w, "04-analysing");
     }
   });
   w.startAnalysis();
@@ -140,7 +158,7 @@ int main(int argc, char** argv) {
 
   // The plot zoomed to the motion with a drag of the right button, and read under the mouse.
   armmimic::gui::AnglePlot* plot = w.plot();
-  plot->zoomTo(95, 235, -150, 60);
+  plot->zoomTo(95, 235, -120, 100);
   plot->setCursorFrame(170);
   QTest::mouseMove(
       plot->viewport(),
@@ -165,6 +183,7 @@ int main(int argc, char** argv) {
   auto* robot_dock = w.findChild<QDockWidget*>("robotDock");
   robot_dock->setFloating(true);
   robot_dock->setGeometry(820, 60, 760, 900);
+  w.findChild<QDockWidget*>("analysisDock")->raise();  // behind it, the window as it was
   w.player()->seek(205);
   Wait([&] { return w.view()->frameIndex() == 205; });
   Shot("07d-robot-3d");
@@ -177,16 +196,17 @@ int main(int argc, char** argv) {
   robot_dock->setFloating(false);
   robot_dock->raise();
 
-  robot->findChild<QTabWidget*>("robotTabs")->setCurrentIndex(1);
-  robot->startSimulator(0.05);
-  robot->connectTo(robot->simulator()->devicePath());
-  Shot("07-robot");
+  // The plan's pose at this frame (before a controller is connected, whose pose it would show).
   robot->findChild<QTabWidget*>("robotTabs")->setCurrentIndex(0);
   Shot("07b-plan");
   robot->findChild<QPushButton*>("compactButton")->setChecked(true);
   Shot("07c-compact");
   robot->findChild<QPushButton*>("compactButton")->setChecked(false);
+
   robot->findChild<QTabWidget*>("robotTabs")->setCurrentIndex(1);
+  robot->startSimulator(0.05);
+  robot->connectTo(robot->simulator()->devicePath());
+  Shot("07-robot");
 
   QTimer::singleShot(800, [&] {
     Shot("08-confirm");
@@ -203,7 +223,28 @@ int main(int argc, char** argv) {
   robot->sendPlan(false);
   Wait([&] { return sent; }, 300000);
   w.player()->seek(200);
+  if (auto* scroll = robot->findChild<QScrollArea*>("controllerScroll")) {
+    scroll->verticalScrollBar()->setValue(scroll->verticalScrollBar()->maximum());  // the replies
+  }
   Shot("09-sent");
+
+  // A send stopped part way (aborted after a few moves, at real-time speed): sending again asks
+  // whether to resume from the journal or start over.
+  robot->link()->disconnectPort();
+  robot->startSimulator(1.0);
+  robot->connectTo(robot->simulator()->devicePath());
+  sent = false;
+  if (robot->sendPlan(true)) {
+    Wait([&] { return robot->link()->acknowledged() >= 5 || sent; }, 60000);
+    robot->link()->abort();
+    Wait([&] { return sent; }, 60000);
+    ShotOfDialog<QMessageBox>(
+        "08b-resume", [&] { robot->sendPlan(false); },
+        [](QMessageBox* box) { box->button(QMessageBox::Cancel)->click(); });
+  }
+  robot->link()->disconnectPort();
+  robot->startSimulator(0.05);
+  robot->connectTo(robot->simulator()->devicePath());
 
   // Mimic live (docs/live.md): the sample video paced at its frame rate, the robot following.
   w.findChild<QDockWidget*>("mimicDock")->raise();
