@@ -34,7 +34,8 @@ calibration mode that engine accepts, and scores the rows over each scene's moti
 Prints a table per engine, mode and tier; writes OUT/scenes.tsv (one row per scene and run,
 with the scene's knobs), OUT/table.md, OUT/features.md and OUT/summary.md.
 
-  --set heldout|tuning     the seed range: held-out (default; measure only) or tuning
+  --set heldout|tuning|unit  the seed range: held-out (default; measure only), tuning, or the
+                           unit tests' scenes (7000-7999, also open for tuning)
   --scenes-per-tier N      scenes of each tier (default 70 held-out, 20 tuning)
   --first-seed S           first seed (default: the set's first); seeds S..S+N-1 must lie in
                            the set's range, and every tier uses the same seed numbers
@@ -81,8 +82,13 @@ int Usage(const std::string& message) {
 int CheckRange(Args* a) {
   if (a->tiers.empty()) return Usage("--tiers: no tier given");
   const bool heldout = a->set == "heldout";
-  const uint64_t lo = heldout ? synth::kHeldOutSeedFirst : synth::kTuningSeedFirst;
-  const uint64_t hi = heldout ? synth::kHeldOutSeedLast : synth::kTuningSeedLast;
+  const bool unit = a->set == "unit";
+  const uint64_t lo = heldout ? synth::kHeldOutSeedFirst
+                      : unit  ? synth::kUnitSeedFirst
+                              : synth::kTuningSeedFirst;
+  const uint64_t hi = heldout ? synth::kHeldOutSeedLast
+                      : unit  ? synth::kUnitSeedLast
+                              : synth::kTuningSeedLast;
   if (a->per_tier < 0) a->per_tier = heldout ? 70 : 20;
   if (a->first_seed < 0) a->first_seed = static_cast<long long>(lo);
   if (static_cast<uint64_t>(a->first_seed) < lo ||
@@ -113,8 +119,8 @@ int Parse(int argc, char** argv, Args* a) {
     const std::string v = argv[++i];
     char* end = nullptr;
     if (flag == "--set") {
-      if (v != "heldout" && v != "tuning")
-        return Usage("--set: '" + v + "' is not heldout or tuning");
+      if (v != "heldout" && v != "tuning" && v != "unit")
+        return Usage("--set: '" + v + "' is not heldout, tuning or unit");
       a->set = v;
     } else if (flag == "--scenes-per-tier" || flag == "--threads") {
       const long n = std::strtol(v.c_str(), &end, 10);

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <string>
 
+#include <opencv2/imgproc.hpp>
+
 #include "arm_model_fit.h"
 #include "armmimic/core/angle_file.h"
 #include "lk_arm_flow.h"
@@ -43,6 +45,10 @@ constexpr double kMaxShoulderShiftShare = 0.1;  // of the upper arm, per frame
 // rising with the arm): the shoulder stays at the edge.
 constexpr double kMaxSwayShare = 0.15;
 constexpr double kReachMargin = 1.15;  // evidence region around the shoulder
+// A pose with this share of its pixels where the learnt scene has never been seen without the arm
+// is supported there by colour alone (the cloth the arm hid looks like the arm); below the lower
+// share it lies where the scene is known.
+constexpr double kUnseenShare = 0.25, kSeenShare = 0.1;
 
 class ModelTracker : public Tracker {
  public:
@@ -75,6 +81,7 @@ class ModelTracker : public Tracker {
     frame_ = 0;
     anchor_ = pose_;
     weak_ = false;
+    seen_elsewhere_ = false;
     reach_deg_ = 0;
     last_time_s_ = time_s_;
     upper_velocity_ = fore_velocity_ = 0;
@@ -152,6 +159,14 @@ class ModelTracker : public Tracker {
       note = "ambiguous forearm: a direction " + FormatNumber(kForeApartDeg, 0) +
              "+ deg away explains it as well";
     }
+    // Updated on every frame: the arm is seen elsewhere mostly on frames that are lost anyway.
+    const bool unconfirmed = Unconfirmed(best, anywhere, support);
+    if (written >= o_.min_support && unconfirmed) {
+      written = 0;
+      note =
+          "unconfirmed: where the scene was never seen without the arm, and the arm was seen "
+          "elsewhere";
+    }
     note += " (score " + FormatNumber(best.score.total, 2) + " of a usual " +
             FormatNumber(typical_, 2) + ")";
     const bool confident = support >= o_.min_support;
@@ -185,6 +200,38 @@ class ModelTracker : public Tracker {
     return rival > kForeAmbiguousShare * best.score.fore.score;
   }
 
+  // Evidence where the learnt scene is unknown (the pixels the arm hid at the start) is colour
+  // alone: the torso in the sleeve's cloth behind the starting posture scores like the arm. Once a
+  // pose on known pixels has explained a frame better than the tracked one (the arm seen
+  // elsewhere), a pose lying partly on unknown pixels is unconfirmed until the arm is found again
+  // where the scene is known. Like the forearm's margin, this decides only what is written.
+  bool Unconfirmed(const arm::FitResult& best, const std::vector<arm::FitResult>& anywhere,
+                   double support) {
+    const double unseen = UnseenShare(best.pose);
+    for (const arm::FitResult& f : anywhere) {
+      if (f.score.total > best.score.total &&
+          arm::PoseDistanceDeg(f.pose, best.pose) > kDistinctDeg &&
+          UnseenShare(f.pose) <= kUnseenShare) {
+        seen_elsewhere_ = true;
+        break;
+      }
+    }
+    if (seen_elsewhere_ && unseen > kUnseenShare) return true;
+    if (support >= o_.min_support && unseen < kSeenShare) seen_elsewhere_ = false;
+    return false;
+  }
+
+  // The share of the arm's pixels in `pose` where the learnt scene is unknown: still as the start
+  // frame showed them, the arm hiding the scene.
+  double UnseenShare(const arm::ArmPose& pose) const {
+    cv::Mat mask = cv::Mat::zeros(background_.known().size(), CV_8U);
+    arm::DrawArm(mask, arm::JointsOf(pose, shape_), shape_, 0);
+    const int all = cv::countNonZero(mask);
+    if (all == 0) return 0;
+    mask.setTo(0, background_.known());
+    return static_cast<double>(cv::countNonZero(mask)) / all;
+  }
+
   static double Reach(const arm::ArmShape& s) { return s.upper_px + s.fore_px + s.hand_px; }
 
   // The pixels the arm in `pose` covers, with a margin: not learnt as background, and left out of
@@ -214,9 +261,11 @@ class ModelTracker : public Tracker {
   arm::ColourModel colour_;
   arm::LearntBackground background_;
   arm::EvidenceMap evidence_;
-  double typical_ = -1;   // the arm's usual score (confident frames)
-  arm::ArmPose anchor_;   // the last well-supported pose
-  bool weak_ = false;     // the last frame's pose was weakly supported
+  double typical_ = -1;  // the arm's usual score (confident frames)
+  arm::ArmPose anchor_;  // the last well-supported pose
+  bool weak_ = false;    // the last frame's pose was weakly supported
+  // A pose on known pixels beat the tracked one since the arm was last found on known pixels.
+  bool seen_elsewhere_ = false;
   double reach_deg_ = 0;  // how far the arm may have turned from anchor_
   double last_time_s_ = 0;
   int frame_ = 0;

