@@ -201,7 +201,9 @@ TEST(RandomArmScene, TierKnobsStayInTheirDocumentedRanges) {
         EXPECT_FALSE(p.shadow) << at;
         EXPECT_LE(p.offcentre, 0.08 + 1e-9) << at;
       }
-      if (tier == SceneTier::kHard) EXPECT_NE(p.camouflage, "none") << at;
+      if (tier == SceneTier::kHard) {
+        EXPECT_NE(p.camouflage, "none") << at;
+      }
     }
     const std::string name = SceneTierName(tier);
     EXPECT_GT(left, n / 5) << name;
@@ -216,7 +218,9 @@ TEST(RandomArmScene, TierKnobsStayInTheirDocumentedRanges) {
       EXPECT_GT(behind, n / 5) << name;
       EXPECT_GT(max_offcentre, 0.15) << name;
     }
-    if (tier == SceneTier::kHard) EXPECT_GT(fast, n / 2) << name;
+    if (tier == SceneTier::kHard) {
+      EXPECT_GT(fast, n / 2) << name;
+    }
   }
 }
 
