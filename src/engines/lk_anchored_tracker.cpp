@@ -221,22 +221,11 @@ class AnchoredTracker : public Tracker {
   double MaxHalfWidth() const { return std::max(3.0, 0.15 * arm_len_); }
 
   void TrackFeatures(const cv::Mat& gray) {
-    std::vector<cv::Point2f> pts, next;
-    std::vector<unsigned char> found;
-    pts.reserve(feats_.size());
-    for (const Feature& f : feats_) pts.push_back(f.p);
-    flow_.Track(gray, pts, &next, &found);
-    std::size_t w = 0;
-    for (std::size_t i = 0; i < feats_.size(); ++i) {
-      if (!found[i]) continue;
-      Feature f = feats_[i];
-      f.prev = f.p;
-      f.p = next[i];
+    lk::TrackFeatures(&flow_, gray, &feats_);
+    for (Feature& f : feats_) {
       const cv::Point2f d = f.p - f.prev;
       f.still = std::hypot(d.x, d.y) < o_.motion_threshold_px ? f.still + 1 : 0;
-      feats_[w++] = f;
     }
-    feats_.resize(w);
   }
 
   // Reference positions of every feature for the current shoulder and upper-arm length, and its

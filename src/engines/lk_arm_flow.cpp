@@ -52,19 +52,7 @@ void ArmFlow::Reset(const cv::Mat& gray) {
 
 FlowCue ArmFlow::Track(const cv::Mat& gray, const arm::ArmPose& pose, const arm::ArmShape& shape) {
   FlowCue cue;
-  std::vector<cv::Point2f> pts, next;
-  std::vector<unsigned char> found;
-  pts.reserve(feats_.size());
-  for (const Feature& f : feats_) pts.push_back(f.p);
-  flow_.Track(gray, pts, &next, &found);
-  std::size_t w = 0;
-  for (std::size_t i = 0; i < feats_.size(); ++i) {
-    if (!found[i]) continue;
-    feats_[i].prev = feats_[i].p;
-    feats_[i].p = next[i];
-    feats_[w++] = feats_[i];
-  }
-  feats_.resize(w);
+  TrackFeatures(&flow_, gray, &feats_);
   ++since_seed_;
   // The body first: the shoulder moves with it.
   std::vector<double> dx, dy;

@@ -40,4 +40,26 @@ class PyramidFlow {
   std::vector<cv::Mat> next_pyramid_;
 };
 
+// Tracks every feature of `feats` from the previous frame into `gray` with `flow`, in place and in
+// order: a feature LK lost is dropped; the others keep their last position in `prev` and move `p`
+// to where they were tracked. `F` has cv::Point2f members `p` and `prev`.
+template <class F>
+void TrackFeatures(PyramidFlow* flow, const cv::Mat& gray, std::vector<F>* feats) {
+  std::vector<cv::Point2f> pts, next;
+  std::vector<unsigned char> found;
+  pts.reserve(feats->size());
+  for (const F& f : *feats) pts.push_back(f.p);
+  flow->Track(gray, pts, &next, &found);
+  std::size_t w = 0;
+  for (std::size_t i = 0; i < feats->size(); ++i) {
+    if (!found[i]) continue;
+    F& f = (*feats)[i];
+    f.prev = f.p;
+    f.p = next[i];
+    if (w != i) (*feats)[w] = f;
+    ++w;
+  }
+  feats->resize(w);
+}
+
 }  // namespace armmimic::lk
