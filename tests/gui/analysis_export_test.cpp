@@ -59,12 +59,7 @@ class AnalysisExportTest : public GuiTest {
 TEST_F(AnalysisExportTest, BgsubOverlayFollowsTruthAndExportEqualsCli) {
   const GuiScenes& s = scenes();
   MainWindow w;
-  AnalysisOptions o;
-  o.engine.kind = EngineKind::kBgsub;
-  o.background_path = s.background();
-  o.arm_length_path = s.arm_length();
-  o.start = s.background_frames;
-  o.engine.bgsub.standstill_frames = s.standstill_frames;
+  AnalysisOptions o = s.BgsubProtocol();
   o.engine.lk.standstill_frames = s.standstill_frames;
   Run(w, {QString::fromStdString(s.video())}, o);
 
@@ -264,12 +259,7 @@ TEST_F(AnalysisExportTest, BackgroundEstimationMatchesCli) {
 TEST_F(AnalysisExportTest, CancelKeepsTheWindowResponsiveAndMarksTheFileIncomplete) {
   const GuiScenes& s = scenes();
   MainWindow w;
-  AnalysisOptions o;
-  o.engine.kind = EngineKind::kBgsub;
-  o.background_path = s.background();
-  o.arm_length_path = s.arm_length();
-  o.start = s.background_frames;
-  o.engine.bgsub.standstill_frames = s.standstill_frames;
+  AnalysisOptions o = s.BgsubProtocol();
   w.openInputs({QString::fromStdString(s.video())});
   ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen(); }));
   w.settingsPanel()->setOptions(o);

@@ -148,12 +148,7 @@ TEST_F(CameraCaptureTest, StreamPreviewAndLiveAnalysisUpdateTheOverlay) {
   EXPECT_EQ(w.player()->inputs(), QStringList{camera.url()});
   EXPECT_EQ(w.log()->errorCount(), 0) << w.log()->text().toStdString();
 
-  AnalysisOptions o;
-  o.engine.kind = EngineKind::kBgsub;
-  o.background_path = s.background();
-  o.arm_length_path = s.arm_length();
-  o.start = s.background_frames;
-  o.engine.bgsub.standstill_frames = s.standstill_frames;
+  AnalysisOptions o = s.BgsubProtocol();
   w.settingsPanel()->setOptions(o);
   // Watch the overlay while the analysis reads the stream: it must change as frames arrive.
   QSet<QString> orientations;

@@ -98,12 +98,7 @@ void GuiTest::ShowAndAnalyze(gui::MainWindow& w) {
   const GuiScenes& s = scenes();
   w.openInputs({QString::fromStdString(s.video())});
   ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen() && !w.view()->image().isNull(); }));
-  AnalysisOptions o;
-  o.background_path = s.background();
-  o.arm_length_path = s.arm_length();
-  o.start = s.background_frames;
-  o.engine.bgsub.standstill_frames = s.standstill_frames;
-  w.settingsPanel()->setOptions(o);
+  w.settingsPanel()->setOptions(s.BgsubProtocol());
   ASSERT_TRUE(w.startAnalysis()) << w.log()->text().toStdString();
   ASSERT_TRUE(WaitUntil([&] { return !w.job()->isRunning(); }, 60000));
   ASSERT_FALSE(w.job()->resultPath().isEmpty()) << w.log()->text().toStdString();

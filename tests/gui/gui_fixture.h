@@ -11,6 +11,7 @@
 
 class QWidget;
 
+#include "armmimic/engines/analysis.h"
 #include "test_util.h"
 
 namespace armmimic::gui {
@@ -28,6 +29,17 @@ struct GuiScenes {
   std::string video() const { return arm_dir + "/scene.avi"; }
   std::string background() const { return arm_dir + "/background.png"; }
   std::string arm_length() const { return arm_dir + "/armlength.png"; }
+  // The arm scene's thesis protocol for bgsub: its background and arm-length images, the start
+  // after the empty frames and the standstill's length.
+  AnalysisOptions BgsubProtocol() const {
+    AnalysisOptions o;
+    o.engine.kind = EngineKind::kBgsub;
+    o.background_path = background();
+    o.arm_length_path = arm_length();
+    o.start = background_frames;
+    o.engine.bgsub.standstill_frames = standstill_frames;
+    return o;
+  }
 };
 
 class GuiTest : public ::testing::Test {

@@ -58,12 +58,7 @@ class MimicPanelTest : public GuiTest {
   void Prepare(MainWindow& w, double time_scale, const GuiScenes& s) {
     w.openInputs({QString::fromStdString(s.video())});
     ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen(); }));
-    AnalysisOptions o;
-    o.background_path = s.background();
-    o.arm_length_path = s.arm_length();
-    o.start = s.background_frames;
-    o.engine.bgsub.standstill_frames = s.standstill_frames;
-    w.settingsPanel()->setOptions(o);
+    w.settingsPanel()->setOptions(s.BgsubProtocol());
     gui::RobotPanel* robot = w.robotPanel();
     ASSERT_TRUE(robot->startSimulator(time_scale)) << w.log()->text().toStdString();
     ASSERT_TRUE(robot->connectTo(robot->simulator()->devicePath()))
@@ -198,12 +193,7 @@ TEST_F(MimicPanelTest, ClosingTheWindowMidRunStopsTheRobot) {
     const GuiScenes& s = LongScene();
     w.openInputs({QString::fromStdString(s.video())});
     ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen(); }));
-    AnalysisOptions o;
-    o.background_path = s.background();
-    o.arm_length_path = s.arm_length();
-    o.start = s.background_frames;
-    o.engine.bgsub.standstill_frames = s.standstill_frames;
-    w.settingsPanel()->setOptions(o);
+    w.settingsPanel()->setOptions(s.BgsubProtocol());
     ASSERT_TRUE(w.robotPanel()->connectTo(QString::fromStdString(tmp_.file("puma"))));
     MimicPanel* panel = w.mimicPanel();
     ASSERT_TRUE(WaitUntil([&] { return !panel->shownSettings().isEmpty(); }));
