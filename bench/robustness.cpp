@@ -32,7 +32,8 @@ const char* const kUsage = R"(Usage: robustness [options]
 Renders randomised arm scenes (synth arm --random) in memory, runs every arm engine in every
 calibration mode that engine accepts, and scores the rows over each scene's motion frames.
 Prints a table per engine, mode and tier; writes OUT/scenes.tsv (one row per scene and run,
-with the scene's knobs), OUT/table.md, OUT/features.md and OUT/summary.md.
+with the scene's knobs), OUT/frames.tsv (one row per motion frame and run: status,
+confidence, errors and the engine's note), OUT/table.md, OUT/features.md and OUT/summary.md.
 
   --set heldout|tuning|unit  the seed range: held-out (default; measure only), tuning, or the
                            unit tests' scenes (7000-7999, also open for tuning)
@@ -341,6 +342,7 @@ int Run(const Args& a) {
   const std::string features = FeatureTable(results, specs);
   std::cout << head << "\n" << table;
   Status st = WriteText(a.out + "/scenes.tsv", SceneTsv(results, specs));
+  if (st) st = WriteText(a.out + "/frames.tsv", FrameTsv(results, specs));
   if (st) st = WriteText(a.out + "/table.md", head + "\n" + table);
   if (st) st = WriteText(a.out + "/features.md", features);
   if (st) {
@@ -354,7 +356,7 @@ int Run(const Args& a) {
     return 1;
   }
   if (!a.quiet) {
-    std::cerr << "robustness: wrote " << a.out << "/{scenes.tsv,table.md,features.md,summary.md}\n";
+    std::cerr << "robustness: wrote " << a.out << "/{scenes.tsv,frames.tsv,table.md,features.md,summary.md}\n";
   }
   return 0;
 }

@@ -99,6 +99,26 @@ std::string SceneTsv(const std::vector<SceneResult>& scenes, const std::vector<R
   return out;
 }
 
+std::string FrameTsv(const std::vector<SceneResult>& scenes, const std::vector<RunSpec>& specs) {
+  std::string out = "seed\ttier\tengine\tmode\tframe\tstatus\tconfidence\terr_upper\terr_fore\tnote\n";
+  for (const SceneResult& s : scenes) {
+    for (std::size_t i = 0; i < specs.size() && i < s.runs.size(); ++i) {
+      const std::string head = std::to_string(s.seed) + "\t" + synth::SceneTierName(s.tier) +
+                               "\t" + EngineName(specs[i].engine) + "\t" + specs[i].mode->name;
+      for (const FrameRecord& f : s.runs[i].frames) {
+        std::string note = f.note;
+        for (char& c : note) {
+          if (c == '\t' || c == '\n') c = ' ';
+        }
+        out += head + "\t" + std::to_string(f.frame) + "\t" + (f.ok ? "ok" : "lost") + "\t" +
+               Fmt(f.confidence, 3) + "\t" + Fmt(f.err_upper, 2) + "\t" + Fmt(f.err_fore, 2) +
+               "\t" + (note.empty() ? "-" : note) + "\n";
+      }
+    }
+  }
+  return out;
+}
+
 std::string SummaryTable(const std::vector<SceneResult>& scenes, const std::vector<RunSpec>& specs,
                          const std::vector<synth::SceneTier>& tiers) {
   std::string out =

@@ -12,6 +12,10 @@ namespace armmimic::bench {
 // One row per scene and run: seed, tier, engine, mode, coverage, errors, then every knob.
 std::string SceneTsv(const std::vector<SceneResult>& scenes, const std::vector<RunSpec>& specs);
 
+// One row per motion frame of every scene and run: seed, tier, engine, mode, frame, status,
+// confidence, the two direction errors and the engine's note (what a frame's figures came from).
+std::string FrameTsv(const std::vector<SceneResult>& scenes, const std::vector<RunSpec>& specs);
+
 // Markdown: per run spec and tier (and all tiers together) the per-scene error distribution,
 // coverage, the worst scene's coverage, the confidently wrong rate and the zero-coverage scenes.
 std::string SummaryTable(const std::vector<SceneResult>& scenes, const std::vector<RunSpec>& specs,

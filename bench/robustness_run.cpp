@@ -151,6 +151,7 @@ SceneResult RunScene(const synth::RandomArmSceneOptions& options, const std::vec
     if (st) st = BuildOptions(spec, inputs, &o);
     std::vector<AngleRow> rows;
     std::map<std::string, int> reasons;
+    std::map<int, std::string> notes;
     if (st) {
       o.inputs = {name};
       o.open_source = [frames, fps, name](Status* status) {
@@ -160,6 +161,7 @@ SceneResult RunScene(const synth::RandomArmSceneOptions& options, const std::vec
       cb.on_measurement = [&](const Frame&, const ArmMeasurement& m) {
         if (!m.row()) return;
         rows.push_back(m.ToRow());
+        if (m.frame >= scene.first_motion_frame()) notes[m.frame] = m.note;
         if (m.phase == MeasurementPhase::kLost) ++reasons[Reason(m.note)];
       };
       AnalysisSummary summary;
@@ -168,7 +170,21 @@ SceneResult RunScene(const synth::RandomArmSceneOptions& options, const std::vec
     if (!st) run.error = st.message();
     AngleFile angles;
     angles.rows = std::move(rows);
-    run.score = synth::ScoreMotion(synth::ScoreAngles(truth, angles), scene.first_motion_frame());
+    const synth::ScoreReport report = synth::ScoreAngles(truth, angles);
+    run.score = synth::ScoreMotion(report, scene.first_motion_frame());
+    std::map<int, double> confidence;
+    for (const AngleRow& r : angles.rows) confidence[r.frame] = r.confidence;
+    for (const synth::ScoreRow& r : report.rows) {
+      if (r.frame < scene.first_motion_frame()) continue;
+      FrameRecord f;
+      f.frame = r.frame;
+      f.ok = r.ok;
+      f.err_upper = r.err_upper;
+      f.err_fore = r.err_fore;
+      if (auto c = confidence.find(r.frame); c != confidence.end()) f.confidence = c->second;
+      if (auto n = notes.find(r.frame); n != notes.end()) f.note = n->second;
+      run.frames.push_back(std::move(f));
+    }
     int most = 0;
     for (const auto& [reason, count] : reasons) {
       if (count > most) most = count, run.lost_reason = reason;

@@ -42,8 +42,18 @@ struct RunSpec {
 // Builds the analysis options of `spec` for `inputs`; an error when the engine rejects them.
 Status BuildOptions(const RunSpec& spec, const SceneInputs& inputs, AnalysisOptions* out);
 
+// One motion frame of a run, for studying the frames behind the figures (OUT/frames.tsv).
+struct FrameRecord {
+  int frame = 0;
+  bool ok = false;
+  double confidence = kNaN;  // the row's confidence column (nan: not written)
+  double err_upper = kNaN, err_fore = kNaN;
+  std::string note;  // the engine's note for the frame
+};
+
 struct RunResult {
   synth::MotionScore score;
+  std::vector<FrameRecord> frames;  // the motion frames, in order
   std::string error;        // the pipeline's error when it could not run (coverage 0)
   std::string lost_reason;  // the most frequent reason of the lost rows, digits as '#'
   double seconds = 0;       // wall time of the analysis
