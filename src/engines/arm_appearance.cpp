@@ -25,6 +25,12 @@ constexpr float kUnknownShare = 0.6f;
 // explained by the background, at least; and how much more counts as a full difference.
 constexpr double kMinChange = 6, kMinChangeSpan = 12;
 constexpr double kChangeQuantile = 0.9;  // of the background pixels' distances: their noise
+// The background's guard (LearntBackground::Update): the least share of the rate at which a
+// pixel that looks like the arm still follows, and how many updates a changed or unknown pixel
+// in the arm's colour must hold one colour before it is the scene.
+constexpr double kMinFollowShare = 0.05;
+constexpr int kSettleFrames = 20;
+constexpr float kArmColour = 0.5f;  // P(arm | colour) from which a colour is the arm's
 
 // [1 2 1] smoothing along one axis of a kLevels^3 histogram (stride 1, kLevels or kLevels^2).
 void SmoothAxis(std::vector<float>& h, int stride) {
@@ -84,6 +90,59 @@ double HalfWidth(const cv::Mat& bgr, const ColourModel& colour, const cv::Point2
   if (v.size() * 3 < kWidthSamples) return -1;
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
   return std::clamp(v[v.size() / 2], kMinHalfWidth, max_hw);
+}
+
+// The light on the frame against the background, per channel, over blocks of `block` pixels:
+// the median ratio of frame to background over the known pixels away from `ignore`, smoothed
+// over neighbouring blocks and interpolated to every pixel (CV_32FC3 of the region's size). A
+// shadow, a flicker or a drift of the light changes whole areas by one factor; the arm changes a
+// part of a block. Blocks with too few pixels take the whole region's median.
+cv::Mat LightGain(const cv::Mat& bgr, const cv::Mat& background, const cv::Mat& known,
+                  const cv::Mat& ignore, const cv::Rect& region) {
+  constexpr int kBlock = 24, kMinSamples = 24;
+  constexpr float kMinGain = 0.4f, kMaxGain = 2.5f;
+  const int bx = std::max(1, (region.width + kBlock - 1) / kBlock);
+  const int by = std::max(1, (region.height + kBlock - 1) / kBlock);
+  std::vector<std::vector<float>> ratios(static_cast<std::size_t>(bx * by * 3));
+  std::vector<float> all[3];
+  for (int y = 0; y < region.height; y += 2) {
+    const cv::Vec3b* in = bgr.ptr<cv::Vec3b>(y + region.y) + region.x;
+    const cv::Vec3f* b = background.ptr<cv::Vec3f>(y + region.y) + region.x;
+    const uchar* k = known.ptr<uchar>(y + region.y) + region.x;
+    const uchar* ign = ignore.empty() ? nullptr : ignore.ptr<uchar>(y + region.y) + region.x;
+    for (int x = y & 2 ? 1 : 0; x < region.width; x += 2) {
+      if (!k[x] || (ign && ign[x])) continue;
+      const int cell = (y / kBlock) * bx + x / kBlock;
+      for (int c = 0; c < 3; ++c) {
+        const float r = (in[x][c] + 4.f) / (b[x][c] + 4.f);
+        ratios[static_cast<std::size_t>(cell * 3 + c)].push_back(r);
+        all[c].push_back(r);
+      }
+    }
+  }
+  auto median = [](std::vector<float>& v) {
+    const auto m = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+    std::nth_element(v.begin(), m, v.end());
+    return *m;
+  };
+  float whole[3];
+  for (int c = 0; c < 3; ++c) whole[c] = all[c].empty() ? 1.f : median(all[c]);
+  cv::Mat grid(by, bx, CV_32FC3);
+  for (int j = 0; j < by; ++j) {
+    for (int i = 0; i < bx; ++i) {
+      cv::Vec3f& g = grid.at<cv::Vec3f>(j, i);
+      for (int c = 0; c < 3; ++c) {
+        std::vector<float>& v = ratios[static_cast<std::size_t>((j * bx + i) * 3 + c)];
+        g[c] = std::clamp(static_cast<int>(v.size()) >= kMinSamples ? median(v) : whole[c],
+                          kMinGain, kMaxGain);
+      }
+    }
+  }
+  cv::blur(grid, grid, cv::Size(3, 3), cv::Point(-1, -1), cv::BORDER_REPLICATE);
+  cv::Mat gain;
+  // Block centres to pixels: the grid's cell i covers [i*kBlock, (i+1)*kBlock).
+  cv::resize(grid, gain, cv::Size(bx * kBlock, by * kBlock), 0, 0, cv::INTER_LINEAR);
+  return gain(cv::Rect(0, 0, region.width, region.height)).clone();
 }
 
 }  // namespace
@@ -198,25 +257,62 @@ void ColourModel::Rebuild() {
 void LearntBackground::Reset(const cv::Mat& bgr, const cv::Mat& hidden) {
   bgr.convertTo(image_, CV_32FC3);
   cv::compare(hidden, 0, known_, cv::CMP_EQ);
+  pending_ = cv::Mat::zeros(bgr.size(), CV_32FC3);
+  settled_ = cv::Mat::zeros(bgr.size(), CV_8U);
 }
 
 void LearntBackground::Update(const cv::Mat& bgr, const cv::Mat& hidden, double rate,
-                              const cv::Rect& region) {
+                              const cv::Rect& region, const EvidenceMap& evidence,
+                              const ColourModel& colour) {
   const cv::Rect r = region & cv::Rect(0, 0, bgr.cols, bgr.rows);
-  const float a = static_cast<float>(rate);
+  const cv::Rect er = evidence.region();
+  const cv::Mat& map = evidence.map();
+  const float tolerance2 = static_cast<float>(evidence.change_threshold() *
+                                              evidence.change_threshold());
   for (int y = r.y; y < r.y + r.height; ++y) {
     const cv::Vec3b* in = bgr.ptr<cv::Vec3b>(y);
     const uchar* h = hidden.ptr<uchar>(y);
     cv::Vec3f* b = image_.ptr<cv::Vec3f>(y);
     uchar* k = known_.ptr<uchar>(y);
+    const bool row_in = y >= er.y && y < er.y + er.height && !map.empty();
+    const float* e = row_in ? map.ptr<float>(y - er.y) : nullptr;
     for (int x = r.x; x < r.x + r.width; ++x) {
-      if (h[x]) continue;
+      if (h[x]) {
+        settled_.at<uchar>(y, x) = 0;
+        continue;
+      }
       const cv::Vec3f c(in[x][0], in[x][1], in[x][2]);
-      if (k[x]) {
-        b[x] += a * (c - b[x]);
-      } else {
+      const cv::Vec3f diff = c - b[x];
+      const bool arm_colour = colour.valid() && colour.Probability(in[x]) >= kArmColour;
+      if (k[x] && diff.dot(diff) <= tolerance2) {
+        double a = rate;
+        if (e && x >= er.x && x < er.x + er.width) {
+          a = rate * std::max(kMinFollowShare, 1.0 - e[x - er.x]);
+        }
+        b[x] += static_cast<float>(a) * diff;
+        settled_.at<uchar>(y, x) = 0;
+      } else if (k[x] && !arm_colour) {
+        b[x] += static_cast<float>(rate) * diff;
+        settled_.at<uchar>(y, x) = 0;
+      } else if (!k[x] && !arm_colour) {
         b[x] = c;
         k[x] = 255;
+      } else {
+        // Changed, or never seen, in the arm's colour: the scene once it has held one colour.
+        cv::Vec3f& pend = pending_.at<cv::Vec3f>(y, x);
+        uchar& n = settled_.at<uchar>(y, x);
+        const cv::Vec3f d = c - pend;
+        if (n > 0 && d.dot(d) <= tolerance2) {
+          pend += (1.0f / (n + 1)) * d;
+          if (n < 255) ++n;
+        } else {
+          pend = c;
+          n = 1;
+        }
+        if (n >= kSettleFrames) {
+          b[x] = pend;
+          k[x] = 255;
+        }
       }
     }
   }
@@ -230,6 +326,18 @@ void EvidenceMap::Compute(const cv::Mat& bgr, const LearntBackground& background
   cols_m1_ = region_.width - 1;
   rows_m1_ = region_.height - 1;
   if (region_.empty()) return;
+  // The frame in the background's light, inside the region.
+  const cv::Mat gain = LightGain(bgr, background.image(), background.known(), ignore, region_);
+  cv::Mat frame = bgr.clone();
+  {
+    for (int y = 0; y < region_.height; ++y) {
+      cv::Vec3b* px = frame.ptr<cv::Vec3b>(y + region_.y) + region_.x;
+      const cv::Vec3f* g = gain.ptr<cv::Vec3f>(y);
+      for (int x = 0; x < region_.width; ++x) {
+        for (int c = 0; c < 3; ++c) px[x][c] = cv::saturate_cast<uchar>(px[x][c] / g[x][c]);
+      }
+    }
+  }
   const cv::Mat b = background.image()(region_);
   const cv::Mat kernel = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3));
   cv::erode(b, low_, kernel);
@@ -239,7 +347,7 @@ void EvidenceMap::Compute(const cv::Mat& bgr, const LearntBackground& background
   cv::Mat dist(region_.size(), CV_32F);
   distances_.clear();
   for (int y = 0; y < region_.height; ++y) {
-    const cv::Vec3b* in = bgr.ptr<cv::Vec3b>(y + region_.y) + region_.x;
+    const cv::Vec3b* in = frame.ptr<cv::Vec3b>(y + region_.y) + region_.x;
     const cv::Vec3f* lo = low_.ptr<cv::Vec3f>(y);
     const cv::Vec3f* hi = high_.ptr<cv::Vec3f>(y);
     const uchar* known = background.known().ptr<uchar>(y + region_.y) + region_.x;
@@ -273,7 +381,7 @@ void EvidenceMap::Compute(const cv::Mat& bgr, const LearntBackground& background
   const float lowf = static_cast<float>(low), inv = static_cast<float>(1 / span);
   const std::vector<float>& table = colour.table();
   for (int y = 0; y < region_.height; ++y) {
-    const cv::Vec3b* in = bgr.ptr<cv::Vec3b>(y + region_.y) + region_.x;
+    const cv::Vec3b* in = frame.ptr<cv::Vec3b>(y + region_.y) + region_.x;
     const float* d = dist.ptr<float>(y);
     float* out = map_.ptr<float>(y);
     for (int x = 0; x < region_.width; ++x) {

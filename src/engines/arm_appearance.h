@@ -56,6 +56,8 @@ class ColourModel {
   std::vector<float> arm_, around_, prob_;
 };
 
+class EvidenceMap;
+
 // The scene without the moving arm, learnt from the frames: every pixel away from the arm
 // follows the frames (slow light changes, a swaying body, a shadow that stays); a pixel the arm
 // hid since the start is unknown until the arm uncovers it.
@@ -63,15 +65,27 @@ class LearntBackground {
  public:
   // `bgr` is the first frame; `hidden` (CV_8U) marks its pixels that show the arm.
   void Reset(const cv::Mat& bgr, const cv::Mat& hidden);
-  // Follows `bgr` by `rate` (0..1) wherever `hidden` is clear; unknown pixels there are taken as
-  // they are. Only inside `region`.
-  void Update(const cv::Mat& bgr, const cv::Mat& hidden, double rate, const cv::Rect& region);
+  // Follows `bgr` by `rate` (0..1) wherever `hidden` is clear, inside `region`, guarded by this
+  // frame's `evidence` (computed against this background): a pixel that looks like the arm is
+  // the arm where the pose did not cover it (a pose a little off, an arm faster than the pose),
+  // not the scene, and learning it would hide the arm there from then on.
+  // * A pixel the background explains (within the evidence's change threshold) follows by
+  //   `rate` times how little it looks like the arm (at least kMinFollowShare of the rate).
+  // * A changed pixel in a colour unlikely to be the arm's (a shadow, the light) follows by
+  //   `rate`.
+  // * A changed pixel in the arm's colour, and an unknown pixel in the arm's colour, becomes the
+  //   scene only once it has held one colour for kSettleFrames updates (the arm moves on; cloth
+  //   of its colour stays). An unknown pixel in another colour is taken as it is.
+  void Update(const cv::Mat& bgr, const cv::Mat& hidden, double rate, const cv::Rect& region,
+              const EvidenceMap& evidence, const ColourModel& colour);
   const cv::Mat& image() const { return image_; }  // CV_32FC3
   const cv::Mat& known() const { return known_; }  // CV_8U, 255 where learnt
   bool empty() const { return image_.empty(); }
 
  private:
   cv::Mat image_, known_;
+  cv::Mat pending_;  // CV_32FC3: a changed or unknown pixel's colour while it settles
+  cv::Mat settled_;  // CV_8U: updates it has kept that colour, clear of the arm
 };
 
 // Learns the arm's colour and shape from a frame where its joints are known: the colour from the
@@ -89,7 +103,9 @@ LearntArm LearnArm(const cv::Mat& bgr, const ArmJoints& joints, double reach_px)
 // Per-pixel probability that the arm is seen there, over a region of the frame (CV_32F in
 // [0, 1]): the colour's probability, times how clearly the pixel differs from the learnt
 // background (a difference within a pixel's neighbourhood of the background counts as none, so a
-// body that sways by a pixel or two is still explained by it).
+// body that sways by a pixel or two is still explained by it). The frame is first divided by the
+// light it has against the background (LightGain): a shadow passing, a flicker or a drift of the
+// light is neither change nor a change of the arm's colour.
 class EvidenceMap {
  public:
   // `ignore` (CV_8U, frame size, may be empty) marks pixels left out of the noise estimate (the

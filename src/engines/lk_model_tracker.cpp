@@ -39,6 +39,9 @@ constexpr double kTypicalDecay = 0.995;  // per lost frame: the bar lowers slowl
 constexpr double kBackgroundRate = 0.2;
 constexpr double kVelocityGain = 0.5;
 constexpr int kMinTurnFeatures = 3;
+// With lk.follow_shoulder only: the body's features move the shoulder at most this share of the
+// upper arm a frame. By default the shoulder stays where it was clicked: on the tuning scenes,
+// following a body that sways by a few pixels cost more accuracy than the sway itself.
 constexpr double kMaxShoulderShiftShare = 0.1;  // of the upper arm, per frame
 // A body that sways moves the shoulder a little; farther from where it was clicked than this
 // share of the upper arm, the features that say so follow something else (the sleeve's cap
@@ -92,7 +95,7 @@ class ModelTracker : public Tracker {
     ++frame_;
     const FlowCue cue = flow_.Track(gray, pose_, shape_);
     arm::ArmPose held = pose_;
-    if (cue.body_count > 0 &&
+    if (o_.follow_shoulder && cue.body_count > 0 &&
         cv::norm(cue.shoulder_shift) < kMaxShoulderShiftShare * shape_.upper_px) {
       held.shoulder += cue.shoulder_shift;
       const cv::Point2d off = held.shoulder - start_shoulder_;
@@ -177,7 +180,7 @@ class ModelTracker : public Tracker {
     if (confident) {
       const double rate = frame_ <= kTypicalStartFrames ? kTypicalStartRate : kTypicalRate;
       typical_ = std::max(kMinTypical, (1 - rate) * typical_ + rate * best.score.total);
-      background_.Update(bgr, Hidden(pose_), kBackgroundRate, region);
+      background_.Update(bgr, Hidden(pose_), kBackgroundRate, region, evidence_, colour_);
       upper_velocity_ = (1 - kVelocityGain) * upper_velocity_ + kVelocityGain * du;
       fore_velocity_ = (1 - kVelocityGain) * fore_velocity_ + kVelocityGain * df;
       flow_.Refresh(gray, pose_, shape_);
