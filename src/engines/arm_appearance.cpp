@@ -328,14 +328,13 @@ void EvidenceMap::Compute(const cv::Mat& bgr, const LearntBackground& background
   if (region_.empty()) return;
   // The frame in the background's light, inside the region.
   const cv::Mat gain = LightGain(bgr, background.image(), background.known(), ignore, region_);
-  cv::Mat frame = bgr.clone();
-  {
-    for (int y = 0; y < region_.height; ++y) {
-      cv::Vec3b* px = frame.ptr<cv::Vec3b>(y + region_.y) + region_.x;
-      const cv::Vec3f* g = gain.ptr<cv::Vec3f>(y);
-      for (int x = 0; x < region_.width; ++x) {
-        for (int c = 0; c < 3; ++c) px[x][c] = cv::saturate_cast<uchar>(px[x][c] / g[x][c]);
-      }
+  relit_.create(region_.size(), CV_8UC3);
+  for (int y = 0; y < region_.height; ++y) {
+    const cv::Vec3b* in = bgr.ptr<cv::Vec3b>(y + region_.y) + region_.x;
+    cv::Vec3b* px = relit_.ptr<cv::Vec3b>(y);
+    const cv::Vec3f* g = gain.ptr<cv::Vec3f>(y);
+    for (int x = 0; x < region_.width; ++x) {
+      for (int c = 0; c < 3; ++c) px[x][c] = cv::saturate_cast<uchar>(in[x][c] / g[x][c]);
     }
   }
   const cv::Mat b = background.image()(region_);
@@ -347,7 +346,7 @@ void EvidenceMap::Compute(const cv::Mat& bgr, const LearntBackground& background
   cv::Mat dist(region_.size(), CV_32F);
   distances_.clear();
   for (int y = 0; y < region_.height; ++y) {
-    const cv::Vec3b* in = frame.ptr<cv::Vec3b>(y + region_.y) + region_.x;
+    const cv::Vec3b* in = relit_.ptr<cv::Vec3b>(y);
     const cv::Vec3f* lo = low_.ptr<cv::Vec3f>(y);
     const cv::Vec3f* hi = high_.ptr<cv::Vec3f>(y);
     const uchar* known = background.known().ptr<uchar>(y + region_.y) + region_.x;
@@ -381,7 +380,7 @@ void EvidenceMap::Compute(const cv::Mat& bgr, const LearntBackground& background
   const float lowf = static_cast<float>(low), inv = static_cast<float>(1 / span);
   const std::vector<float>& table = colour.table();
   for (int y = 0; y < region_.height; ++y) {
-    const cv::Vec3b* in = frame.ptr<cv::Vec3b>(y + region_.y) + region_.x;
+    const cv::Vec3b* in = relit_.ptr<cv::Vec3b>(y);
     const float* d = dist.ptr<float>(y);
     float* out = map_.ptr<float>(y);
     for (int x = 0; x < region_.width; ++x) {

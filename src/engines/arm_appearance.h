@@ -133,6 +133,7 @@ class EvidenceMap {
   double cols_m1_ = 0, rows_m1_ = 0;
   double full_change_ = 0;
   cv::Mat low_, high_;  // the background's per-channel minimum and maximum over 3x3
+  cv::Mat relit_;       // the region of the frame in the background's light
   std::vector<float> distances_;
 };
 

@@ -39,14 +39,7 @@ constexpr double kTypicalDecay = 0.995;  // per lost frame: the bar lowers slowl
 constexpr double kBackgroundRate = 0.2;
 constexpr double kVelocityGain = 0.5;
 constexpr int kMinTurnFeatures = 3;
-// With lk.follow_shoulder only: the body's features move the shoulder at most this share of the
-// upper arm a frame. By default the shoulder stays where it was clicked: on the tuning scenes,
-// following a body that sways by a few pixels cost more accuracy than the sway itself.
 constexpr double kMaxShoulderShiftShare = 0.1;  // of the upper arm, per frame
-// A body that sways moves the shoulder a little; farther from where it was clicked than this
-// share of the upper arm, the features that say so follow something else (the sleeve's cap
-// rising with the arm): the shoulder stays at the edge.
-constexpr double kMaxSwayShare = 0.15;
 constexpr double kReachMargin = 1.15;  // evidence region around the shoulder
 // A pose with this share of its pixels where the learnt scene has never been seen without the arm
 // is supported there by colour alone (the cloth the arm hid looks like the arm); below the lower
@@ -95,11 +88,11 @@ class ModelTracker : public Tracker {
     ++frame_;
     const FlowCue cue = flow_.Track(gray, pose_, shape_);
     arm::ArmPose held = pose_;
-    if (o_.follow_shoulder && cue.body_count > 0 &&
+    if (o_.shoulder_sway > 0 && cue.body_count > 0 &&
         cv::norm(cue.shoulder_shift) < kMaxShoulderShiftShare * shape_.upper_px) {
       held.shoulder += cue.shoulder_shift;
       const cv::Point2d off = held.shoulder - start_shoulder_;
-      const double far = cv::norm(off), limit = kMaxSwayShare * shape_.upper_px;
+      const double far = cv::norm(off), limit = o_.shoulder_sway * shape_.upper_px;
       if (far > limit) held.shoulder = start_shoulder_ + (limit / far) * off;
     }
     arm::ArmPose moved = held;

@@ -74,6 +74,7 @@ Status LkOptions::Check() const {
       Range("max_speed_deg_s", max_speed_deg_s, 10, 100000),
       Range("min_support", min_support, 0, 1),
       Range("confirm_frames", confirm_frames, 1, 1000),
+      Range("shoulder_sway", shoulder_sway, 0, 1),
   };
   for (const Status& st : checks) {
     if (!st) return st;

@@ -250,9 +250,9 @@ const std::vector<OptionField<LkOptions>>& LkOptionFields() {
               "a pose backed by less sleeve and feature evidence (0..1) is lost"),
       Int<L>("confirm_frames", &L::confirm_frames, 3, 1, 1000, "Frames to re-acquire",
              "agreeing frames before the arm is trusted again after a rejected jump"),
-      Bool<L>("follow_shoulder", &L::follow_shoulder, false, "Follow the shoulder",
-              "with clicked joints: move the shoulder with the body's features (a person who "
-              "steps or leans); off keeps it where it was clicked"),
+      Real<L>("shoulder_sway", &L::shoulder_sway, 0.05, 0, 1, 2, "Shoulder sway",
+              "with clicked joints: how far the body's features may move the shoulder from the "
+              "click, a share of the upper arm (0: kept at the click)"),
   };
   return fields;
 }

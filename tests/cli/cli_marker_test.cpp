@@ -31,7 +31,9 @@ TEST(CliMarker, SynthAnalyzeScore) {
   int ok = 0;
   for (const AngleRow& row : f.rows) {
     ok += row.ok();
-    if (row.ok()) EXPECT_DOUBLE_EQ(row.yaw_deg, std::abs(row.yaw_signed_deg));
+    if (row.ok()) {
+      EXPECT_DOUBLE_EQ(row.yaw_deg, std::abs(row.yaw_signed_deg));
+    }
   }
   EXPECT_GE(ok, 10);
   r = test::RunCli({"score", scene + "/truth.tsv", angles});

@@ -1,6 +1,7 @@
 // The LK engine on randomised scenes (synth arm --random), one or two fixed scenes per failure
 // class of docs/accuracy.md: short sleeves, camouflage, the hand above the head, the forearm
-// across the torso (also in the shirt's cloth), fast swings, a swaying body. Each run gets the
+// across the torso (also in the shirt's cloth), fast swings, a swaying body, a passing shadow and
+// drifting light. Each run gets the
 // joints clicked on the first motion frame (the benchmark's `joints` mode) and is scored over the
 // motion frames: the error of its ok frames, its coverage and its confidently wrong frames (ok,
 // worse segment > 15 deg off). The seeds lie outside the tuning and held-out ranges; the frames are
@@ -104,8 +105,11 @@ TEST(LkRandomScene, ShortSleeves) { ExpectWithin(7002, SceneTier::kMedium, 6, 0.
 TEST(LkRandomScene, ShortSleevesPastAnObjectInTheirColour) {
   ExpectWithin(7015, SceneTier::kMedium, 4, 0.95, 2);
 }
+// The sleeve in the shirt's cloth: where the arm hung at the start, the torso behind it is the
+// arm's colour and becomes the scene only once it has held still (docs/lk.md), so the first frames
+// after the start are lost rather than guessed (coverage 0.89; 0.93 when it was taken at once).
 TEST(LkRandomScene, CamouflageAgainstAnObject) {
-  ExpectWithin(7017, SceneTier::kMedium, 6, 0.9, 2);
+  ExpectWithin(7017, SceneTier::kMedium, 6, 0.85, 2);
 }
 TEST(LkRandomScene, HandAboveTheHead) { ExpectWithin(7001, SceneTier::kMedium, 5, 0.95, 3); }
 TEST(LkRandomScene, BareHandAboveTheHead) { ExpectWithin(7022, SceneTier::kMedium, 7, 0.95, 2); }
@@ -120,6 +124,17 @@ TEST(LkRandomScene, SleeveInTheShirtsClothAcrossIt) {
 TEST(LkRandomScene, ForearmAcrossTheTorsoInTheShirtsCloth) {
   ExpectWithin(7034, SceneTier::kHard, 5, 0.85, 0);
   ExpectWithin(7017, SceneTier::kHard, 6, 0.85, 0);
+}
+
+// A sleeve close to the wall's colour, the light drifting by a third and a shadow passing: the
+// learnt background must not take in the arm where the pose lagged it (a ghost arm that then
+// holds the fit on a wrong pose), and the light must not read as change or as another colour.
+TEST(LkRandomScene, SleeveLikeTheWallUnderAPassingShadow) {
+  ExpectWithin(7010, SceneTier::kHard, 5, 0.85, 2);
+  ExpectWithin(7050, SceneTier::kHard, 5, 0.85, 2);
+}
+TEST(LkRandomScene, SleeveInTheShirtsClothUnderAStrongShadow) {
+  ExpectWithin(7059, SceneTier::kHard, 5, 0.85, 2);
 }
 
 // The arm hanging in the shirt's cloth beside the torso, raised quickly at 12 fps: where it hung

@@ -68,10 +68,10 @@ struct LkOptions {
   double max_speed_deg_s = 600;  // a segment turning faster than this is a wrong lock: lost
   double min_support = 0.3;      // a pose backed by less sleeve/feature evidence is lost
   int confirm_frames = 3;        // agreeing frames before a new lock is trusted again
-  // Model path (clicked joints): move the shoulder with the body's features (a person who steps
-  // or leans). Off: the shoulder stays where it was clicked, which is more accurate while the
-  // body only sways (lk.md, the shoulder).
-  bool follow_shoulder = false;
+  // Model path (clicked joints): the torso's features move the shoulder at most this share of
+  // the upper arm's length from where it was clicked (a body that sways); features that say more
+  // follow something else (the sleeve's cap rising with the arm). 0 keeps it at the click.
+  double shoulder_sway = 0.05;
 
   Status Check() const;
 };
