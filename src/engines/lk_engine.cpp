@@ -201,7 +201,10 @@ class LkEngine : public Engine {
     m.estimate = "lk: shoulder (" + FormatNumber(start.shoulders.front().x + roi_.x, 0) + "," +
                  FormatNumber(start.shoulders.front().y + roi_.y, 0) + ") and arm length " +
                  FormatNumber(start.arm_length_px, 0) +
-                 " px estimated from the standstill's body box";
+                 " px estimated from the standstill's body box; without the elbow and wrist the "
+                 "anchored path runs, which is often confidently wrong on scenes unlike the "
+                 "thesis' (docs/accuracy.md): give --shoulder, --elbow and --wrist, or "
+                 "--auto-calibrate";
     start.head_limit_y = body.left_shoulder.y - 0.05 * body.box.height;
     tracker_->Start(start);
     state_ = State::kTracking;
