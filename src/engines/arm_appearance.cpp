@@ -142,7 +142,7 @@ cv::Mat LightGain(const cv::Mat& bgr, const cv::Mat& background, const cv::Mat& 
   cv::Mat gain;
   // Block centres to pixels: the grid's cell i covers [i*kBlock, (i+1)*kBlock).
   cv::resize(grid, gain, cv::Size(bx * kBlock, by * kBlock), 0, 0, cv::INTER_LINEAR);
-  return gain(cv::Rect(0, 0, region.width, region.height)).clone();
+  return gain(cv::Rect(0, 0, region.width, region.height));
 }
 
 }  // namespace
@@ -274,45 +274,45 @@ void LearntBackground::Update(const cv::Mat& bgr, const cv::Mat& hidden, double 
     const uchar* h = hidden.ptr<uchar>(y);
     cv::Vec3f* b = image_.ptr<cv::Vec3f>(y);
     uchar* k = known_.ptr<uchar>(y);
+    cv::Vec3f* pend = pending_.ptr<cv::Vec3f>(y);
+    uchar* held = settled_.ptr<uchar>(y);
     const bool row_in = y >= er.y && y < er.y + er.height && !map.empty();
     const float* e = row_in ? map.ptr<float>(y - er.y) : nullptr;
     for (int x = r.x; x < r.x + r.width; ++x) {
+      uchar& n = held[x];
       if (h[x]) {
-        settled_.at<uchar>(y, x) = 0;
+        n = 0;
         continue;
       }
       const cv::Vec3f c(in[x][0], in[x][1], in[x][2]);
       const cv::Vec3f diff = c - b[x];
-      const bool arm_colour = colour.valid() && colour.Probability(in[x]) >= kArmColour;
-      if (k[x] && diff.dot(diff) <= tolerance2) {
-        double a = rate;
-        if (e && x >= er.x && x < er.x + er.width) {
-          a = rate * std::max(kMinFollowShare, 1.0 - e[x - er.x]);
-        }
-        b[x] += static_cast<float>(a) * diff;
-        settled_.at<uchar>(y, x) = 0;
-      } else if (k[x] && !arm_colour) {
-        b[x] += static_cast<float>(rate) * diff;
-        settled_.at<uchar>(y, x) = 0;
-      } else if (!k[x] && !arm_colour) {
-        b[x] = c;
-        k[x] = 255;
-      } else {
+      const bool explained = k[x] && diff.dot(diff) <= tolerance2;
+      if (!explained && colour.valid() && colour.Probability(in[x]) >= kArmColour) {
         // Changed, or never seen, in the arm's colour: the scene once it has held one colour.
-        cv::Vec3f& pend = pending_.at<cv::Vec3f>(y, x);
-        uchar& n = settled_.at<uchar>(y, x);
-        const cv::Vec3f d = c - pend;
+        const cv::Vec3f d = c - pend[x];
         if (n > 0 && d.dot(d) <= tolerance2) {
-          pend += (1.0f / (n + 1)) * d;
+          pend[x] += (1.0f / (n + 1)) * d;
           if (n < 255) ++n;
         } else {
-          pend = c;
+          pend[x] = c;
           n = 1;
         }
         if (n >= kSettleFrames) {
-          b[x] = pend;
+          b[x] = pend[x];
           k[x] = 255;
         }
+      } else if (k[x]) {
+        // Explained: followed as much as it does not look like the arm; changed in another
+        // colour (a shadow, the light): followed.
+        double a = rate;
+        if (explained && e && x >= er.x && x < er.x + er.width) {
+          a = rate * std::max(kMinFollowShare, 1.0 - e[x - er.x]);
+        }
+        b[x] += static_cast<float>(a) * diff;
+        n = 0;
+      } else {
+        b[x] = c;  // never seen, in another colour: the scene as it is
+        k[x] = 255;
       }
     }
   }

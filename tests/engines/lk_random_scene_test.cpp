@@ -1,10 +1,9 @@
 // The LK engine on randomised scenes (synth arm --random), one or two fixed scenes per failure
 // class of docs/accuracy.md: short sleeves, camouflage, the hand above the head, the forearm
 // across the torso (also in the shirt's cloth), fast swings, a swaying body, a passing shadow and
-// drifting light. Each run gets the
-// joints clicked on the first motion frame (the benchmark's `joints` mode) and is scored over the
-// motion frames: the error of its ok frames, its coverage and its confidently wrong frames (ok,
-// worse segment > 15 deg off). The seeds lie outside the tuning and held-out ranges; the frames are
+// drifting light. Each run gets the joints clicked on the first motion frame (the benchmark's
+// `joints` mode) and is scored over the motion frames: the error of its ok frames, its coverage
+// and its confidently wrong frames (ok, worse segment > 15 deg off). The seeds lie outside the tuning and held-out ranges; the frames are
 // small and JPEG-compressed as the scene's video would hold them.
 #include <cmath>
 #include <memory>
