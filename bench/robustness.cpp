@@ -356,7 +356,8 @@ int Run(const Args& a) {
     return 1;
   }
   if (!a.quiet) {
-    std::cerr << "robustness: wrote " << a.out << "/{scenes.tsv,frames.tsv,table.md,features.md,summary.md}\n";
+    std::cerr << "robustness: wrote " << a.out
+              << "/{scenes.tsv,frames.tsv,table.md,features.md,summary.md}\n";
   }
   return 0;
 }

@@ -100,11 +100,12 @@ std::string SceneTsv(const std::vector<SceneResult>& scenes, const std::vector<R
 }
 
 std::string FrameTsv(const std::vector<SceneResult>& scenes, const std::vector<RunSpec>& specs) {
-  std::string out = "seed\ttier\tengine\tmode\tframe\tstatus\tconfidence\terr_upper\terr_fore\tnote\n";
+  std::string out =
+      "seed\ttier\tengine\tmode\tframe\tstatus\tconfidence\terr_upper\terr_fore\tnote\n";
   for (const SceneResult& s : scenes) {
     for (std::size_t i = 0; i < specs.size() && i < s.runs.size(); ++i) {
-      const std::string head = std::to_string(s.seed) + "\t" + synth::SceneTierName(s.tier) +
-                               "\t" + EngineName(specs[i].engine) + "\t" + specs[i].mode->name;
+      const std::string head = std::to_string(s.seed) + "\t" + synth::SceneTierName(s.tier) + "\t" +
+                               EngineName(specs[i].engine) + "\t" + specs[i].mode->name;
       for (const FrameRecord& f : s.runs[i].frames) {
         std::string note = f.note;
         for (char& c : note) {

@@ -54,9 +54,9 @@ struct FrameRecord {
 struct RunResult {
   synth::MotionScore score;
   std::vector<FrameRecord> frames;  // the motion frames, in order
-  std::string error;        // the pipeline's error when it could not run (coverage 0)
-  std::string lost_reason;  // the most frequent reason of the lost rows, digits as '#'
-  double seconds = 0;       // wall time of the analysis
+  std::string error;                // the pipeline's error when it could not run (coverage 0)
+  std::string lost_reason;          // the most frequent reason of the lost rows, digits as '#'
+  double seconds = 0;               // wall time of the analysis
 };
 
 struct SceneResult {

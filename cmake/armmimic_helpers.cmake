@@ -19,11 +19,24 @@ function(armmimic_add_layer)
   target_link_libraries(${L_NAME} PUBLIC ${L_DEPS})
 endfunction()
 
+# armmimic_add_sources(<target>)
+# Adds every .cpp and .h of the calling folder to <target> (a layer split into folders).
+function(armmimic_add_sources target)
+  file(GLOB _srcs CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp ${CMAKE_CURRENT_SOURCE_DIR}/*.h)
+  target_sources(${target} PRIVATE ${_srcs})
+endfunction()
+
 # armmimic_add_test_suite(NAME <exe> DEPS <targets...>)
 # One GoogleTest binary per layer (a relink of Qt per test file would not fit a 2-core machine).
+# With SUBDIRS, the .cpp files of those subfolders are added too (a layer whose tests are split
+# into folders, like the engines').
 function(armmimic_add_test_suite)
-  cmake_parse_arguments(T "" "NAME" "DEPS" ${ARGN})
+  cmake_parse_arguments(T "" "NAME" "DEPS;SUBDIRS" ${ARGN})
   file(GLOB _srcs CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  foreach(_dir ${T_SUBDIRS})
+    file(GLOB _sub CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${_dir}/*.cpp)
+    list(APPEND _srcs ${_sub})
+  endforeach()
   add_executable(${T_NAME} ${_srcs} ${PROJECT_SOURCE_DIR}/tests/common/test_main.cpp
     ${PROJECT_SOURCE_DIR}/tests/common/test_util.cpp)
   target_include_directories(${T_NAME} PRIVATE ${PROJECT_SOURCE_DIR}/tests/common)

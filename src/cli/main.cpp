@@ -49,7 +49,8 @@ void CommandRegistry::Add(const Command& command) { Registry().push_back(command
 
 std::vector<Command> CommandRegistry::All() {
   std::vector<Command> all = Registry();
-  std::sort(all.begin(), all.end(), [](const Command& a, const Command& b) { return a.order < b.order; });
+  std::sort(all.begin(), all.end(),
+            [](const Command& a, const Command& b) { return a.order < b.order; });
   return all;
 }
 

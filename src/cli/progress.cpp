@@ -24,7 +24,8 @@ void ProgressBar::Update(long done) {
 }
 
 void ProgressBar::Draw(long done) {
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double rate = elapsed > 0 ? done / elapsed : 0;
   char line[200];
   if (total_ > 0) {

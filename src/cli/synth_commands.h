@@ -8,7 +8,9 @@
 
 namespace armmimic::cli {
 
-int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& global);     // cmd_synth_arm.cpp
-int RunSynthMarker(const std::vector<std::string>& args, const GlobalOptions& global);  // cmd_synth_marker.cpp
+int RunSynthArm(const std::vector<std::string>& args,
+                const GlobalOptions& global);  // cmd_synth_arm.cpp
+int RunSynthMarker(const std::vector<std::string>& args,
+                   const GlobalOptions& global);  // cmd_synth_marker.cpp
 
 }  // namespace armmimic::cli

@@ -31,7 +31,8 @@ double AngleDiff(double a_deg, double b_deg) { return Wrap180(a_deg - b_deg); }
 
 double AxisDiff(double a_deg, double b_deg) { return std::fabs(FoldToAxis(a_deg - b_deg)); }
 
-double ResolveDirection(double axis_deg, const cv::Point2d& from_px, const cv::Point2d& towards_px) {
+double ResolveDirection(double axis_deg, const cv::Point2d& from_px,
+                        const cv::Point2d& towards_px) {
   const cv::Point2d v = DirectionVector(axis_deg);
   const cv::Point2d d = towards_px - from_px;
   const double dot = v.x * d.x + v.y * d.y;

@@ -45,8 +45,8 @@ TEST(CliParamsFrom, RepeatsTheRunRowForRowAndFlagsOverrideIt) {
   std::vector<std::string> first = {"-q", "analyze", video, "-o", dir.file("old.tsv")};
   for (const std::string& f : BgsubFlags()) first.push_back(f);
   for (const char* f : {"--threshold", "40", "--param", "bgsub.closing_size=3", "--param",
-                               "bgsub.reject_shadow=false", "--param", "bgsub.min_support=0.45",
-                               "--param", "bgsub.upper_arm_fraction=0.55"}) {
+                        "bgsub.reject_shadow=false", "--param", "bgsub.min_support=0.45", "--param",
+                        "bgsub.upper_arm_fraction=0.55"}) {
     first.push_back(f);
   }
   test::CliResult r = test::RunCli(first);

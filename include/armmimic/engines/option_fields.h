@@ -1,7 +1,7 @@
 // OptionField: one engine parameter described for editors (the GUI's parameter forms and its
 // saved settings): key, label, help, kind, range, documented default and how to read and write
 // it in its options struct. One table per options struct; a new option is one line in
-// src/engines/option_fields.cpp.
+// src/engines/common/option_fields.cpp.
 #pragma once
 
 #include <functional>

@@ -1,0 +1,200 @@
+#include "bgsub/calib.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <opencv2/imgproc.hpp>
+
+#include "armmimic/core/geometry.h"
+#include "bgsub/masks.h"
+
+namespace armmimic::bgsub {
+namespace {
+
+// The arm's thickness: this quantile of its columns' heights (the upper arm is the thickest part;
+// a part hidden in front of something of its own colour shows thinner, never thicker). Columns at
+// least kFullShare of that thick give the axis' height.
+constexpr double kThickQuantile = 0.8;
+constexpr double kFullShare = 0.75;
+constexpr double kBandShare = 0.3;
+// A region of the standstill's difference this many times smaller than the torso is a speck.
+constexpr int kBodyPartShare = 25;
+
+double Quantile(std::vector<double> v, double q) {
+  if (v.empty()) return kNaN;
+  auto at = v.begin() + static_cast<std::ptrdiff_t>(q * (v.size() - 1) + 0.5);
+  std::nth_element(v.begin(), at, v.end());
+  return *at;
+}
+
+double MedianOf(std::vector<double> v) { return Quantile(std::move(v), 0.5); }
+
+// The standing body: the largest region of the standstill's difference from the empty room.
+void FindBody(const PixelModel& pixels, ArmCalibration* cal) {
+  cv::Mat person, labels;
+  pixels.StandstillPerson(&person);
+  const std::vector<Component> parts = MaskComponents(person, &labels);
+  const int largest = LargestComponent(parts);
+  if (largest < 0) return;
+  const Component& c = parts[static_cast<std::size_t>(largest)];
+  ComponentMask(labels, c, &cal->body);
+  // The head, and a hanging arm a gap of wall away from the torso, are the body too: every
+  // sizeable region of the standstill's difference (not specks of noise) joins the mask.
+  cv::Mat one;
+  for (const Component& part : parts) {
+    if (part.label == c.label || part.area_px < std::max(16, c.area_px / kBodyPartShare)) continue;
+    ComponentMask(labels, part, &one);
+    cal->body |= one;
+  }
+  Close(&cal->body, cv::Rect(cv::Point(), cal->body.size()), 5);
+  cal->body_box = c.box;
+}
+
+// The rows of `box` that hold the horizontal arm: around the fullest row, those at least
+// kBandShare as full (what hangs off it, a strip of the torso's side, is left out).
+cv::Rect HorizontalBand(const cv::Mat& arm, const cv::Rect& box) {
+  std::vector<int> counts(static_cast<std::size_t>(box.height));
+  for (int y = 0; y < box.height; ++y) {
+    counts[static_cast<std::size_t>(y)] =
+        cv::countNonZero(arm(cv::Rect(box.x, box.y + y, box.width, 1)));
+  }
+  const auto full = std::max_element(counts.begin(), counts.end());
+  const int floor = static_cast<int>(std::ceil(kBandShare * *full));
+  int top = static_cast<int>(full - counts.begin()), bottom = top;
+  while (top > 0 && counts[static_cast<std::size_t>(top - 1)] >= floor) --top;
+  while (bottom + 1 < box.height && counts[static_cast<std::size_t>(bottom + 1)] >= floor) ++bottom;
+  return cv::Rect(box.x, box.y + top, box.width, bottom - top + 1);
+}
+
+// The straight arm of the arm-length image: the largest region outside the standing body that
+// differs from both the empty room and the standstill, with the regions lying in its band of rows
+// (an arm broken where it crosses something of its own colour).
+bool FindStraightArm(const PixelModel& pixels, const cv::Mat& arm_length, const cv::Mat& body,
+                     cv::Mat* arm, cv::Rect* band) {
+  cv::Mat person, moved, both, labels;
+  pixels.Differ(arm_length, pixels.background(), &person);
+  pixels.Differ(arm_length, pixels.standstill(), &moved);
+  cv::bitwise_and(person, moved, both);
+  // Outside the standing body: where the hanging arm left the torso's side is not the arm.
+  if (!body.empty()) both.setTo(0, body);
+  // Thin lines (edges drawn a little differently) are no arm.
+  cv::morphologyEx(both, both, cv::MORPH_OPEN, cv::Mat::ones(3, 3, CV_8UC1));
+  const std::vector<Component> parts = MaskComponents(both, &labels);
+  const int largest = LargestComponent(parts);
+  if (largest < 0) return false;
+  const Component& main = parts[static_cast<std::size_t>(largest)];
+  ComponentMask(labels, main, arm);
+  const cv::Rect box = HorizontalBand(*arm, main.box);
+  *band = box;
+  // Pieces of the same arm: sizeable, no taller than it, centred in its rows and in line with it
+  // (at most half its length away).
+  cv::Mat one;
+  for (const Component& c : parts) {
+    const double cy = c.box.y + 0.5 * c.box.height;
+    const int gap = std::max(c.box.x - (band->x + band->width), band->x - (c.box.x + c.box.width));
+    if (c.label == main.label || c.area_px < std::max(8, main.area_px / 20) || cy < box.y ||
+        cy > box.y + box.height || c.box.height > 1.5 * box.height + 2 || gap > band->width / 2) {
+      continue;
+    }
+    ComponentMask(labels, c, &one);
+    *arm |= one;
+    *band |= cv::Rect(c.box.x, box.y, c.box.width, box.height);
+  }
+  return true;
+}
+
+// The axis of the standstill's hanging arm, the shoulder's x: the body's outer edge on the arm's
+// side, one arm radius in, over the rows of the upper arm (from two radii below the shoulder to
+// a quarter of the arm's length further). `inner_x` is the straight arm's inner end; the edge is
+// looked for from three radii outside it inwards to the body's centre. NaN when too few rows
+// have an edge.
+double HangingArmAxis(const ArmCalibration& cal, int inner_x, double length) {
+  if (cal.body.empty() || !cal.body_box) return kNaN;
+  const double r = cal.half_width_px;
+  const int centre = cal.body_box->x + cal.body_box->width / 2;
+  const int outer = inner_x + cal.side * static_cast<int>(std::lround(3 * r + 2));
+  const int y0 = static_cast<int>(std::lround(cal.shoulder_px.y + 2 * r));
+  const int last = std::min(cal.body.rows - 1, y0 + static_cast<int>(std::max(4 * r, length / 4)));
+  std::vector<double> edges;
+  for (int y = std::max(0, y0); y <= last; ++y) {
+    const uchar* row = cal.body.ptr<uchar>(y);
+    for (int x = outer; x != centre; x -= cal.side) {
+      if (x < 0 || x >= cal.body.cols) continue;
+      if (row[x]) {
+        edges.push_back(x);
+        break;
+      }
+    }
+  }
+  if (edges.size() < 3) return kNaN;
+  return MedianOf(edges) - cal.side * r;
+}
+
+}  // namespace
+
+ArmCalibration Calibrate(const PixelModel& pixels, const cv::Mat& arm_length,
+                         const std::optional<cv::Point2d>& fixed_shoulder) {
+  ArmCalibration cal;
+  FindBody(pixels, &cal);
+  if (!cal.body_box && !fixed_shoulder) {
+    cal.note = "no body in the standstill frames (check the background)";
+    return cal;
+  }
+  cv::Mat arm;
+  cv::Rect band;
+  if (!FindStraightArm(pixels, arm_length, cal.body, &arm, &band)) {
+    cal.note = "arm-length image: no arm differs from the standstill";
+    return cal;
+  }
+  const RegionMoments m = ComputeMoments(arm, band);
+  const double centre_x =
+      fixed_shoulder ? fixed_shoulder->x : cal.body_box->x + 0.5 * cal.body_box->width;
+  cal.side = m.cx >= centre_x ? 1 : -1;
+  // Column extents of the straight arm, inner end (towards the body) first.
+  struct Column {
+    int x, count, top, bottom;
+  };
+  std::vector<Column> cols;
+  for (int x = band.x; x < band.x + band.width; ++x) {
+    Column c{x, 0, band.y + band.height, band.y - 1};
+    for (int y = band.y; y < band.y + band.height; ++y) {
+      if (!arm.at<uchar>(y, x)) continue;
+      ++c.count;
+      c.top = std::min(c.top, y);
+      c.bottom = std::max(c.bottom, y);
+    }
+    if (c.count > 0) cols.push_back(c);
+  }
+  if (cols.size() < 4) {
+    cal.note = "arm-length image: the straight arm is too small";
+    return cal;
+  }
+  if (cal.side < 0) std::reverse(cols.begin(), cols.end());
+  const double length = std::abs(cols.back().x - cols.front().x) + 1;
+  std::vector<double> heights, mids;
+  for (const Column& c : cols) heights.push_back(c.count);
+  const double thick = Quantile(heights, kThickQuantile);
+  for (const Column& c : cols) {
+    if (c.count >= kFullShare * thick) mids.push_back(0.5 * (c.top + c.bottom));
+  }
+  cal.half_width_px = std::max(1.0, 0.5 * thick);
+  cal.shoulder_px = cv::Point2d(cols.front().x, MedianOf(mids));
+  if (fixed_shoulder) {
+    cal.shoulder_px = *fixed_shoulder;
+  } else if (const double axis = HangingArmAxis(cal, cols.front().x, length); std::isfinite(axis)) {
+    cal.shoulder_px.x = axis;
+  } else {
+    // Where the straight arm leaves the hanging one: one arm radius outside the shoulder.
+    cal.shoulder_px.x -= cal.side * cal.half_width_px;
+  }
+  cal.reach_px = cal.side * (cols.back().x - cal.shoulder_px.x) + 0.5;
+  if (!(cal.reach_px > 4 * cal.half_width_px)) {
+    cal.note = "arm-length image: the straight arm is shorter than it is thick";
+    return cal;
+  }
+  cal.ok = true;
+  return cal;
+}
+
+}  // namespace armmimic::bgsub

@@ -1,0 +1,267 @@
+#include "bgsub/fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <opencv2/imgproc.hpp>
+
+namespace armmimic::bgsub {
+namespace {
+
+// Bits of a pixel's code: differs from the empty room, differs from the standstill, the standing
+// body of the standstill, the standstill's hanging arm.
+constexpr int kPerson = 1, kMoved = 2, kBody = 4, kRest = 8;
+constexpr int kArmNow = 2;  // the weight of the person where the standstill was not
+
+// The weight of each code.
+cv::Mat WeightTable() {
+  cv::Mat lut(1, 256, CV_8SC1, cv::Scalar(0));
+  for (int c = 0; c < 16; ++c) {
+    const bool person = c & kPerson, moved = c & kMoved, body = c & kBody, rest = c & kRest;
+    int w;
+    if (person && moved) {
+      w = kArmNow;  // the person where the standstill was not: the arm now
+    } else if (person) {
+      w = rest || !body ? 1 : 0;  // the hanging arm unchanged; the unchanged body says nothing
+    } else {
+      w = moved ? -2 : -1;  // the empty room: uncovered now, or as in the standstill
+    }
+    lut.at<schar>(0, c) = static_cast<schar>(w);
+  }
+  return lut;
+}
+
+// Peaks of a circular score (one per degree): local maxima over +-`half` degrees, best first.
+std::vector<int> Peaks(const std::vector<int>& score, int half, std::size_t count) {
+  std::vector<int> peaks;
+  const int n = static_cast<int>(score.size());
+  for (int k = 0; k < n; ++k) {
+    bool top = true;
+    for (int d = -half; d <= half && top; ++d) {
+      const int j = ((k + d) % n + n) % n;
+      top = score[static_cast<std::size_t>(j)] < score[static_cast<std::size_t>(k)] ||
+            (score[static_cast<std::size_t>(j)] == score[static_cast<std::size_t>(k)] && j >= k);
+    }
+    if (top) peaks.push_back(k);
+  }
+  std::sort(peaks.begin(), peaks.end(), [&](int a, int b) {
+    return score[static_cast<std::size_t>(a)] > score[static_cast<std::size_t>(b)];
+  });
+  if (peaks.size() > count) peaks.resize(count);
+  return peaks;
+}
+
+// Sample lines across a segment, as shares of the calibrated half-width (the forearm is a little
+// thinner than the upper arm, so the outer lines stay inside it).
+constexpr double kAcrossInner = 0.35, kAcrossOuter = 0.7;
+// The flanks: from this share of the half-width outside the segment, along its middle part (the
+// ends touch the body at the shoulder and the other segment at the elbow).
+constexpr double kFlankGap = 0.5, kFlankFrom = 0.25, kFlankTo = 0.8;
+
+int Wrap360(int deg) { return ((deg % 360) + 360) % 360; }
+
+}  // namespace
+
+void ArmEvidence::Begin(const ArmCalibration& cal, const cv::Size& region, double rest_deg) {
+  const double r = cal.half_width_px;
+  const int reach = static_cast<int>(std::ceil(1.3 * cal.reach_px + 2 * r + 2));
+  const cv::Point s(cvRound(cal.shoulder_px.x), cvRound(cal.shoulder_px.y));
+  window_tl_ = s - cv::Point(reach, reach);
+  origin_ = cv::Point(reach, reach);
+  weights_ = cv::Mat::zeros(2 * reach + 1, 2 * reach + 1, CV_8SC1);
+  rect_ = cv::Rect(window_tl_, weights_.size()) & cv::Rect(cv::Point(), region);
+  static_code_ = cv::Mat::zeros(rect_.size(), CV_8UC1);
+  if (rect_.area() == 0) return;
+  if (!cal.body.empty()) {
+    cv::bitwise_and(cal.body(rect_), cv::Scalar(kBody), static_code_);
+  }
+  cv::Mat rest = cv::Mat::zeros(rect_.size(), CV_8UC1);
+  const cv::Point2d from = cal.shoulder_px - cv::Point2d(rect_.tl());
+  const cv::Point2d to = from + DirectionVector(rest_deg) * cal.reach_px;
+  cv::line(rest, from, to, cv::Scalar(kRest), 2 * static_cast<int>(std::lround(r)) + 1);
+  static_code_ |= rest;
+}
+
+void ArmEvidence::Update(const cv::Mat& person, const cv::Mat& moved) {
+  static const cv::Mat kTable = WeightTable();
+  if (rect_.area() == 0) return;
+  cv::bitwise_and(person, cv::Scalar(kPerson), code_);
+  cv::bitwise_and(moved, cv::Scalar(kMoved), bits_);
+  code_ |= bits_;
+  code_ |= static_code_;
+  cv::Mat out = weights_(rect_ - window_tl_);
+  cv::LUT(code_, kTable, out);
+}
+
+std::vector<ArmFitter::Ray> ArmFitter::MakeRays(int stride, double t0, double t1,
+                                                double half_width) {
+  std::vector<Ray> rays(360);
+  // Lines along the segment across most of its width: a ray off the arm's axis loses its outer
+  // samples, so a straight arm is fitted along its axis and not bent within its own thickness.
+  std::vector<double> across{0};
+  if (half_width >= 2)
+    across = {-kAcrossOuter * half_width, -kAcrossInner * half_width, 0, kAcrossInner * half_width,
+              kAcrossOuter * half_width};
+  for (int k = 0; k < 360; ++k) {
+    const cv::Point2d d = DirectionVector(k), n(-d.y, d.x);
+    for (double t = t0; t <= t1; t += 1.0) {
+      for (double a : across) {
+        const cv::Point2d p = d * t + n * a;
+        rays[static_cast<std::size_t>(k)].offsets.push_back(cvRound(p.y) * stride + cvRound(p.x));
+      }
+    }
+  }
+  return rays;
+}
+
+std::vector<ArmFitter::Ray> ArmFitter::MakeFlanks(int stride, double len, double half_width,
+                                                  int side) {
+  std::vector<Ray> rays(360);
+  const double gap = std::max(2.0, kFlankGap * half_width);
+  const double across[] = {side * (half_width + gap), side * (2 * half_width + gap)};
+  for (int k = 0; k < 360; ++k) {
+    const cv::Point2d d = DirectionVector(k), n(-d.y, d.x);
+    for (double t = kFlankFrom * len; t <= kFlankTo * len; t += 1.0) {
+      for (double a : across) {
+        const cv::Point2d p = d * t + n * a;
+        rays[static_cast<std::size_t>(k)].offsets.push_back(cvRound(p.y) * stride + cvRound(p.x));
+      }
+    }
+  }
+  return rays;
+}
+
+double ArmFitter::Clutter(const cv::Mat& weights, int from, int deg,
+                          const std::vector<Ray> (&flanks)[2]) const {
+  // Only new arm evidence (the person where the standstill was not) counts: beside an arm at
+  // rest lies the standstill's own arm or body, unchanged.
+  double clearer = 1;
+  const schar* w = weights.ptr<schar>() + from;
+  for (const std::vector<Ray>& side : flanks) {
+    const std::vector<int>& offsets = side[static_cast<std::size_t>(Wrap360(deg))].offsets;
+    int now = 0;
+    for (int off : offsets) now += w[off] >= kArmNow;
+    clearer = std::min(clearer, offsets.empty() ? 0.0 : static_cast<double>(now) / offsets.size());
+  }
+  return clearer;
+}
+
+void ArmFitter::Begin(int stride, double upper_len, double fore_len, double half_width) {
+  stride_ = stride;
+  upper_len_ = upper_len;
+  fore_len_ = fore_len;
+  half_width_ = half_width;
+  // The upper arm from one arm radius out (its first part is the shoulder, under the standstill's
+  // arm), the forearm from half a radius past the elbow to the fingertip.
+  upper_ = MakeRays(stride, std::min(half_width, 0.5 * upper_len), upper_len, half_width);
+  fore_ = MakeRays(stride, std::min(0.5 * half_width, 0.5 * fore_len), fore_len, half_width);
+  for (int i = 0; i < 2; ++i) {
+    upper_flank_[i] = MakeFlanks(stride, upper_len, half_width, i == 0 ? 1 : -1);
+    fore_flank_[i] = MakeFlanks(stride, fore_len, half_width, i == 0 ? 1 : -1);
+  }
+}
+
+int ArmFitter::Score(const cv::Mat& weights, int from, int deg,
+                     const std::vector<Ray>& rays) const {
+  const schar* w = weights.ptr<schar>() + from;
+  int sum = 0;
+  for (int off : rays[static_cast<std::size_t>(Wrap360(deg))].offsets) sum += w[off];
+  return sum;
+}
+
+void ArmFitter::Count(const cv::Mat& weights, int from, int deg, const std::vector<Ray>& rays,
+                      int* pos, int* neg, int* n) const {
+  const schar* w = weights.ptr<schar>() + from;
+  for (int off : rays[static_cast<std::size_t>(Wrap360(deg))].offsets) {
+    *pos += w[off] > 0;
+    *neg += w[off] < 0;
+    ++*n;
+  }
+}
+
+const cv::Mat& ArmFitter::WithoutUpper(const cv::Mat& weights, const cv::Point& origin,
+                                       int deg) const {
+  weights.copyTo(without_upper_);
+  const cv::Point2d elbow = cv::Point2d(origin) + DirectionVector(deg) * upper_len_;
+  cv::line(without_upper_, origin, elbow, cv::Scalar(0), 2 * static_cast<int>(half_width_) + 1);
+  return without_upper_;
+}
+
+ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
+  ArmFit fit;
+  if (upper_.empty() || weights.empty()) return fit;
+  const int from = origin.y * stride_ + origin.x;
+  std::vector<int> up(360);
+  for (int k = 0; k < 360; ++k) up[static_cast<std::size_t>(k)] = Score(weights, from, k, upper_);
+  struct Pose {
+    int up, fore, score;
+  };
+  std::vector<Pose> poses;  // the best forearm of each upper-arm peak
+  // Of equal scores the straighter arm: a straight arm's segments can tilt within its width.
+  auto better = [](int score, int u, int f, const Pose& than) {
+    return score > than.score ||
+           (score == than.score &&
+            std::abs(AngleDiff(f, u)) < std::abs(AngleDiff(than.fore, than.up)));
+  };
+  auto elbow_at = [&](int deg) {
+    const cv::Point2d e = DirectionVector(deg) * upper_len_;
+    return from + cvRound(e.y) * stride_ + cvRound(e.x);
+  };
+  for (int u : Peaks(up, 4, 4)) {
+    const int e = elbow_at(u);
+    const cv::Mat& rest = WithoutUpper(weights, origin, u);
+    Pose best{u, u, std::numeric_limits<int>::min() / 2};
+    for (int f = u - 160; f <= u + 160; f += 2) {
+      const int s = Score(rest, e, f, fore_);
+      if (better(s, u, f, best)) best = {u, Wrap360(f), s};
+    }
+    best.score += up[static_cast<std::size_t>(u)];
+    poses.push_back(best);
+  }
+  if (poses.empty()) return fit;
+  std::sort(poses.begin(), poses.end(),
+            [](const Pose& a, const Pose& b) { return a.score > b.score; });
+  // Refine the best to a degree: the upper arm +-1, the forearm +-2 from each elbow.
+  Pose best = poses.front();
+  const Pose coarse = best;
+  for (int du = -1; du <= 1; ++du) {
+    const int u = Wrap360(coarse.up + du), e = elbow_at(u);
+    const cv::Mat& rest = WithoutUpper(weights, origin, u);
+    for (int df = -2; df <= 2; ++df) {
+      const int f = Wrap360(coarse.fore + df);
+      const int s = up[static_cast<std::size_t>(u)] + Score(rest, e, f, fore_);
+      if (better(s, u, f, best)) best = {u, f, s};
+    }
+  }
+  // The best other pose: another upper-arm peak, or another forearm from the best elbow.
+  int second = std::numeric_limits<int>::min() / 2;
+  for (std::size_t i = 1; i < poses.size(); ++i) {
+    if (std::abs(AngleDiff(poses[i].up, best.up)) > 15) second = std::max(second, poses[i].score);
+  }
+  const int e = elbow_at(best.up);
+  const cv::Mat& rest = WithoutUpper(weights, origin, best.up);
+  for (int f = best.up - 160; f <= best.up + 160; f += 2) {
+    if (std::abs(AngleDiff(f, best.fore)) <= 15) continue;
+    second = std::max(second, up[static_cast<std::size_t>(best.up)] + Score(rest, e, f, fore_));
+  }
+  int upos = 0, uneg = 0, un = 0, fpos = 0, fneg = 0, fn = 0;
+  Count(weights, from, best.up, upper_, &upos, &uneg, &un);
+  Count(weights, e, best.fore, fore_, &fpos, &fneg, &fn);
+  fit.clutter = std::max(Clutter(weights, from, best.up, upper_flank_),
+                         Clutter(weights, e, best.fore, fore_flank_));
+  fit.found = true;
+  fit.upper_deg = Wrap180(best.up);
+  fit.fore_deg = Wrap180(best.fore);
+  fit.elbow_px = cv::Point2d(origin) + DirectionVector(best.up) * upper_len_;
+  fit.wrist_px = fit.elbow_px + DirectionVector(best.fore) * fore_len_;
+  fit.upper_support = un > 0 ? static_cast<double>(upos) / un : 0;
+  fit.fore_support = fn > 0 ? static_cast<double>(fpos) / fn : 0;
+  fit.against = un + fn > 0 ? static_cast<double>(uneg + fneg) / (un + fn) : 1;
+  fit.margin = second > (std::numeric_limits<int>::min() / 4)
+                   ? static_cast<double>(best.score - second) / (un + fn)
+                   : 2.0;
+  return fit;
+}
+
+}  // namespace armmimic::bgsub

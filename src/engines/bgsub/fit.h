@@ -1,0 +1,84 @@
+// Background-subtraction engine, default path: the arm as two segments of calibrated length fitted
+// to per-pixel evidence. Every pixel the arm can reach from the shoulder gets a weight: the person
+// where the standstill was not (the arm now there) counts for it, the empty room against it, the
+// standstill's own arm unchanged for it, the unchanged body neither way. The upper arm is the ray
+// from the shoulder, the forearm (with the hand) the ray from the elbow at the upper arm's length,
+// and the pair with the most weight along both wins. Private to src/engines.
+#pragma once
+
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "armmimic/core/angles.h"
+#include "bgsub/calib.h"
+
+namespace armmimic::bgsub {
+
+// The weights of the window around the shoulder that the arm can reach.
+class ArmEvidence {
+ public:
+  // `region` is the analysed region's size; the rest arm hangs from the shoulder along rest_deg.
+  void Begin(const ArmCalibration& cal, const cv::Size& region, double rest_deg);
+  // The window's part inside the region (region coordinates): the masks Update takes.
+  const cv::Rect& rect() const { return rect_; }
+  // From the person and moved masks of rect() (CV_8UC1 0/255).
+  void Update(const cv::Mat& person, const cv::Mat& moved);
+  const cv::Mat& weights() const { return weights_; }  // CV_8SC1, the whole window
+  cv::Point origin() const { return origin_; }         // the shoulder, window coordinates
+  cv::Point window_tl() const { return window_tl_; }   // window (0,0) in region coordinates
+
+ private:
+  cv::Rect rect_;
+  cv::Point origin_, window_tl_;
+  cv::Mat static_code_;  // CV_8UC1 of rect(): body and rest-arm bits
+  cv::Mat code_, bits_;
+  cv::Mat weights_;
+};
+
+struct ArmFit {
+  bool found = false;
+  double upper_deg = kNaN, fore_deg = kNaN;
+  cv::Point2d elbow_px, wrist_px;  // window coordinates
+  double upper_support = 0;        // share of the upper arm's samples with weight for the arm
+  double fore_support = 0;         // the same for the forearm and hand
+  double against = 0;              // share of all samples with weight against the arm
+  // The flanks of a segment (lines beside it, outside its width) with weight for an arm: the
+  // clearer side's share, of the worse segment. A folded arm covers one flank of each segment;
+  // a mask flooded by light or texture covers both.
+  double clutter = 0;
+  double margin = 0;  // mean weight per sample over the best distinct other pose
+};
+
+class ArmFitter {
+ public:
+  // `stride` is the weights' row step; lengths in pixels.
+  void Begin(int stride, double upper_len, double fore_len, double half_width);
+  ArmFit Fit(const cv::Mat& weights, const cv::Point& origin) const;
+
+ private:
+  struct Ray {
+    std::vector<int> offsets;  // sample offsets from the ray's origin, in weights' elements
+  };
+  static std::vector<Ray> MakeRays(int stride, double t0, double t1, double half_width);
+  // Lines beside a segment on one side (+1 left of its direction, -1 right), outside its width,
+  // over its middle part.
+  static std::vector<Ray> MakeFlanks(int stride, double len, double half_width, int side);
+  double Clutter(const cv::Mat& weights, int from, int deg,
+                 const std::vector<Ray> (&flanks)[2]) const;
+  int Score(const cv::Mat& weights, int from, int deg, const std::vector<Ray>& rays) const;
+  void Count(const cv::Mat& weights, int from, int deg, const std::vector<Ray>& rays, int* pos,
+             int* neg, int* n) const;
+
+  // `weights` with the upper arm at `deg` cleared: the forearm is scored on what the upper arm
+  // does not already explain (a forearm folded back over it would count its pixels twice).
+  const cv::Mat& WithoutUpper(const cv::Mat& weights, const cv::Point& origin, int deg) const;
+
+  int stride_ = 0;
+  double upper_len_ = 0, fore_len_ = 0, half_width_ = 0;
+  mutable cv::Mat without_upper_;  // WithoutUpper's buffer
+  std::vector<Ray> upper_, fore_;  // one per degree, 0..359 (DirectionVector)
+  std::vector<Ray> upper_flank_[2], fore_flank_[2];
+};
+
+}  // namespace armmimic::bgsub

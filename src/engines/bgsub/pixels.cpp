@@ -1,0 +1,256 @@
+#include "bgsub/pixels.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include <opencv2/imgproc.hpp>
+
+namespace armmimic::bgsub {
+namespace {
+
+// A pixel differs when a channel is off by more than kNoiseFactor times its noise plus
+// kQuantisation grey levels (compression's blocks and rounding, which the noise of a still
+// scene does not show), and never for less than kMinThreshold.
+constexpr double kNoiseFactor = 4.0;
+constexpr double kQuantisation = 4.0;
+constexpr double kMinThreshold = 8.0;
+// The gain's samples: a grid of this step, skipping dark and saturated levels.
+constexpr int kGainStep = 4;
+constexpr int kGainMinLevel = 24;
+constexpr int kGainMaxLevel = 250;
+// Gain blocks of about this many pixels a side (a soft shadow is several blocks wide). A block's
+// gain stands when enough of its samples agree with its median (within kAgree); one off its
+// neighbours' median by more than kOutlier is a block the arm covers, and takes theirs.
+constexpr int kBlockPx = 40;
+constexpr double kAgree = 0.06;
+constexpr double kMinAgreeing = 0.4;
+constexpr double kOutlier = 0.08;
+
+float Median(std::vector<float>* v) {
+  if (v->empty()) return 1.0f;
+  auto mid = v->begin() + static_cast<std::ptrdiff_t>(v->size() / 2);
+  std::nth_element(v->begin(), mid, v->end());
+  return *mid;
+}
+
+// One gain per channel of `bgr` over `reference`: the median ratio over a sparse grid.
+cv::Scalar GlobalGain(const cv::Mat& bgr, const cv::Mat& reference) {
+  std::array<std::vector<float>, 3> ratios;
+  for (int y = kGainStep / 2; y < bgr.rows; y += kGainStep) {
+    const cv::Vec3b* f = bgr.ptr<cv::Vec3b>(y);
+    const cv::Vec3b* b = reference.ptr<cv::Vec3b>(y);
+    for (int x = kGainStep / 2; x < bgr.cols; x += kGainStep) {
+      for (int c = 0; c < 3; ++c) {
+        if (b[x][c] < kGainMinLevel || b[x][c] > kGainMaxLevel || f[x][c] > kGainMaxLevel) continue;
+        ratios[static_cast<std::size_t>(c)].push_back(static_cast<float>(f[x][c]) / b[x][c]);
+      }
+    }
+  }
+  cv::Scalar g(1, 1, 1);
+  for (int c = 0; c < 3; ++c) {
+    if (ratios[static_cast<std::size_t>(c)].size() >= 16) {
+      g[c] = Median(&ratios[static_cast<std::size_t>(c)]);
+    }
+  }
+  return g;
+}
+
+// 255 where a channel of |bgr - reference| exceeds `threshold` (CV_8UC3 each).
+void Exceeds(const cv::Mat& bgr, const cv::Mat& reference, const cv::Mat& threshold, cv::Mat* diff,
+             cv::Mat* any, cv::Mat* mask) {
+  cv::absdiff(bgr, reference, *diff);
+  cv::compare(*diff, threshold, *diff, cv::CMP_GT);
+  // Any channel over: every grey weight is positive.
+  cv::cvtColor(*diff, *any, cv::COLOR_BGR2GRAY);
+  cv::threshold(*any, *mask, 0, 255, cv::THRESH_BINARY);
+}
+
+// Blocks without a gain take their valid neighbours' mean (repeatedly), then `fallback`; a block
+// far from its neighbours' median takes that median.
+void RepairGrid(const std::vector<uchar>& valid_in, const cv::Vec3f& fallback, cv::Mat* grid) {
+  const int w = grid->cols, h = grid->rows;
+  std::vector<uchar> valid = valid_in;
+  for (int pass = 0; pass < w + h; ++pass) {
+    std::vector<uchar> next = valid;
+    bool missing = false;
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        if (valid[static_cast<std::size_t>(y * w + x)]) continue;
+        cv::Vec3f sum(0, 0, 0);
+        int n = 0;
+        for (int dy = -1; dy <= 1; ++dy) {
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int yy = y + dy, xx = x + dx;
+            if (yy < 0 || xx < 0 || yy >= h || xx >= w) continue;
+            if (!valid[static_cast<std::size_t>(yy * w + xx)]) continue;
+            sum += grid->at<cv::Vec3f>(yy, xx);
+            ++n;
+          }
+        }
+        if (n > 0) {
+          grid->at<cv::Vec3f>(y, x) = sum / n;
+          next[static_cast<std::size_t>(y * w + x)] = 1;
+        } else {
+          missing = true;
+        }
+      }
+    }
+    valid = next;
+    if (!missing) break;
+  }
+  for (int i = 0; i < w * h; ++i) {
+    if (!valid[static_cast<std::size_t>(i)]) grid->at<cv::Vec3f>(i / w, i % w) = fallback;
+  }
+  const cv::Mat before = grid->clone();
+  std::vector<float> around;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        around.clear();
+        for (int dy = -1; dy <= 1; ++dy) {
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int yy = y + dy, xx = x + dx;
+            if ((dx || dy) && yy >= 0 && xx >= 0 && yy < h && xx < w) {
+              around.push_back(before.at<cv::Vec3f>(yy, xx)[c]);
+            }
+          }
+        }
+        const float m = Median(&around);
+        float& g = grid->at<cv::Vec3f>(y, x)[c];
+        if (std::fabs(g - m) > kOutlier * m) g = m;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void PixelModel::Begin(const cv::Size& size) {
+  sum_ = cv::Mat::zeros(size, CV_32FC3);
+  sum_sq_ = cv::Mat::zeros(size, CV_32FC3);
+  count_ = 0;
+  threshold_.release();
+  blocks_ = cv::Size(std::max(1, (size.width + kBlockPx / 2) / kBlockPx),
+                     std::max(1, (size.height + kBlockPx / 2) / kBlockPx));
+}
+
+void PixelModel::AddStandstill(const cv::Mat& bgr) {
+  cv::accumulate(bgr, sum_);
+  cv::accumulateSquare(bgr, sum_sq_);
+  ++count_;
+}
+
+void PixelModel::Finish(const cv::Mat& background, int cap) {
+  background_ = background.clone();
+  const double n = std::max(1, count_);
+  cv::Mat mean, var;
+  sum_.convertTo(mean, CV_32FC3, 1.0 / n);
+  mean.convertTo(standstill_, CV_8UC3);
+  var = sum_sq_ / n - mean.mul(mean);
+  std::vector<cv::Mat> ch;
+  cv::split(var, ch);
+  cv::Mat sigma = cv::max(cv::max(ch[0], ch[1]), ch[2]);
+  cv::max(sigma, 0, sigma);
+  cv::sqrt(sigma, sigma);
+  std::vector<float> samples;
+  for (int y = 1; y < sigma.rows; y += 3) {
+    const float* s = sigma.ptr<float>(y);
+    for (int x = 1; x < sigma.cols; x += 3) samples.push_back(s[x]);
+  }
+  noise_ = samples.empty() ? 0.0 : Median(&samples);
+  cv::Mat t1;
+  cv::max(sigma, noise_, sigma);
+  sigma.convertTo(t1, CV_8UC1, kNoiseFactor, kQuantisation);
+  cv::max(t1, kMinThreshold, t1);
+  cv::min(t1, std::max(cap, static_cast<int>(kMinThreshold)), t1);
+  cv::merge(std::vector<cv::Mat>{t1, t1, t1}, threshold_);
+  standstill_gain_ = GlobalGain(standstill_, background_);
+  standstill_.convertTo(standstill_f_, CV_32FC3);
+  background_.convertTo(background_f_, CV_32FC3);
+  cv::multiply(background_f_, standstill_gain_, background_f_);
+  sum_.release();
+  sum_sq_.release();
+}
+
+void PixelModel::MeasureGain(const cv::Mat& bgr, const cv::Mat& ignore) {
+  const int bw = (bgr.cols + blocks_.width - 1) / blocks_.width;
+  const int bh = (bgr.rows + blocks_.height - 1) / blocks_.height;
+  const int count = blocks_.area();
+  thread_local std::vector<std::array<std::vector<float>, 3>> ratios;
+  ratios.resize(static_cast<std::size_t>(count));
+  for (auto& b : ratios) {
+    for (auto& v : b) v.clear();
+  }
+  for (int y = kGainStep / 2; y < bgr.rows; y += kGainStep) {
+    const cv::Vec3b* f = bgr.ptr<cv::Vec3b>(y);
+    const cv::Vec3b* s = standstill_.ptr<cv::Vec3b>(y);
+    const uchar* skip = ignore.empty() ? nullptr : ignore.ptr<uchar>(y);
+    const int row = (y / bh) * blocks_.width;
+    for (int x = kGainStep / 2; x < bgr.cols; x += kGainStep) {
+      if (skip && skip[x]) continue;
+      auto& block = ratios[static_cast<std::size_t>(row + x / bw)];
+      for (int c = 0; c < 3; ++c) {
+        if (s[x][c] < kGainMinLevel || s[x][c] > kGainMaxLevel || f[x][c] > kGainMaxLevel) continue;
+        block[static_cast<std::size_t>(c)].push_back(static_cast<float>(f[x][c]) / s[x][c]);
+      }
+    }
+  }
+  gain_.create(blocks_, CV_32FC3);
+  std::vector<uchar> valid(static_cast<std::size_t>(count), 1);
+  std::array<std::vector<float>, 3> all;
+  for (int i = 0; i < count; ++i) {
+    for (int c = 0; c < 3; ++c) {
+      std::vector<float>& v = ratios[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)];
+      const float m = Median(&v);
+      const auto agree = std::count_if(v.begin(), v.end(),
+                                       [&](float r) { return std::fabs(r - m) <= kAgree * m; });
+      if (v.size() < 12 || agree < kMinAgreeing * v.size()) valid[static_cast<std::size_t>(i)] = 0;
+      gain_.at<cv::Vec3f>(i / blocks_.width, i % blocks_.width)[c] = m;
+    }
+    if (valid[static_cast<std::size_t>(i)]) {
+      const cv::Vec3f g = gain_.at<cv::Vec3f>(i / blocks_.width, i % blocks_.width);
+      for (int c = 0; c < 3; ++c) all[static_cast<std::size_t>(c)].push_back(g[c]);
+    }
+  }
+  cv::Vec3f fallback;
+  for (int c = 0; c < 3; ++c) fallback[c] = Median(&all[static_cast<std::size_t>(c)]);
+  RepairGrid(valid, fallback, &gain_);
+  cv::resize(gain_, gain_map_, bgr.size(), 0, 0, cv::INTER_LINEAR);
+}
+
+void PixelModel::Compare(const cv::Mat& bgr, const cv::Rect& rect, const cv::Mat& ignore,
+                         cv::Mat* person, cv::Mat* moved) {
+  MeasureGain(bgr, ignore);
+  const cv::Mat frame = bgr(rect), gain = gain_map_(rect), threshold = threshold_(rect);
+  cv::multiply(standstill_f_(rect), gain, scaled_f_);
+  scaled_f_.convertTo(scaled_, CV_8UC3);
+  Exceeds(frame, scaled_, threshold, &diff_, &any_, moved);
+  cv::multiply(background_f_(rect), gain, scaled_f_);
+  scaled_f_.convertTo(scaled_, CV_8UC3);
+  Exceeds(frame, scaled_, threshold, &diff_, &any_, person);
+}
+
+void PixelModel::StandstillPerson(cv::Mat* mask) const {
+  cv::Mat scaled, diff, any;
+  cv::multiply(background_, standstill_gain_, scaled);
+  Exceeds(standstill_, scaled, threshold_, &diff, &any, mask);
+}
+
+void PixelModel::Differ(const cv::Mat& bgr, const cv::Mat& reference, cv::Mat* mask) const {
+  // A pixel differs only from every reference pixel within one pixel of it: the image may come
+  // from another encoder (a still) whose edges fall a little differently.
+  cv::Mat scaled, padded, diff, any, one;
+  cv::multiply(reference, GlobalGain(bgr, reference), scaled);
+  cv::copyMakeBorder(scaled, padded, 1, 1, 1, 1, cv::BORDER_REPLICATE);
+  *mask = cv::Mat(bgr.size(), CV_8UC1, cv::Scalar(255));
+  for (int dy = 0; dy <= 2; ++dy) {
+    for (int dx = 0; dx <= 2; ++dx) {
+      Exceeds(bgr, padded(cv::Rect(dx, dy, bgr.cols, bgr.rows)), threshold_, &diff, &any, &one);
+      *mask &= one;
+    }
+  }
+}
+
+}  // namespace armmimic::bgsub

@@ -1,0 +1,444 @@
+// The analysis pipeline behind `armmimic-cli analyze` and the GUI's Analyze task: engine
+// agnostic, streaming (one frame in memory at a time).
+#include "armmimic/engines/analysis.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include <opencv2/imgproc.hpp>
+
+#include "armmimic/core/frame_pacer.h"
+#include "armmimic/core/image_io.h"
+#include "armmimic/engines/engine.h"
+#include "armmimic/engines/option_fields.h"
+#include "armmimic/engines/pose.h"
+#include "armmimic/engines/run_record.h"
+#include "common/engine_internal.h"
+
+namespace armmimic {
+namespace {
+
+std::string SizeText(const cv::Size& s) {
+  return std::to_string(s.width) + "x" + std::to_string(s.height);
+}
+
+std::string BaseName(const std::string& path) {
+  std::string p = path;
+  while (p.size() > 1 && p.back() == '/') p.pop_back();
+  const auto slash = p.find_last_of('/');
+  return slash == std::string::npos ? p : p.substr(slash + 1);
+}
+
+std::string ShortNumber(double v) {
+  std::string s = FormatNumber(v, 3);
+  if (s.find('.') != std::string::npos) {
+    while (!s.empty() && s.back() == '0') s.pop_back();
+    if (!s.empty() && s.back() == '.') s.pop_back();
+  }
+  return s;
+}
+
+// Shorter clicked segments give no usable direction or length.
+constexpr double kMinClickedSegmentPx = 4;
+
+bool Cancelled(const AnalysisCallbacks& cb) {
+  return cb.cancel != nullptr && cb.cancel->load(std::memory_order_relaxed);
+}
+
+void Phase(const AnalysisCallbacks& cb, const std::string& phase) {
+  if (cb.on_phase) cb.on_phase(phase);
+}
+
+// Loads an image given by `flag` and checks its size against the video's.
+Status LoadSized(const std::string& path, const std::string& flag, const VideoInfo& video,
+                 cv::Mat* out) {
+  Status st = ReadImage(path, out);
+  if (!st) return Status::Error(flag + ": " + st.message());
+  if (out->size() != video.size) {
+    return Status::Error(flag + " " + path + " is " + SizeText(out->size()) + " but " + video.path +
+                         " is " + SizeText(video.size) + "; they must have the same size");
+  }
+  return Status::Ok();
+}
+
+// The input of a pass: options.open_source when set, else the files named in options.inputs.
+std::unique_ptr<VideoSource> OpenInput(const AnalysisOptions& options, Status* status) {
+  if (options.open_source) return options.open_source(status);
+  return VideoSource::Open(options.inputs, status);
+}
+
+// Averages frames [start, start+count) of `source` (thesis 5.2.1); `open_status` is returned
+// when the source could not be opened.
+Status EstimateBackgroundOf(std::unique_ptr<VideoSource> source, const Status& open_status,
+                            int start, int count, cv::Mat* background,
+                            const AnalysisCallbacks& callbacks);
+
+// The pose network's part before the engine starts: --auto-calibrate's joints, and the pose
+// engine's arm when --side is auto. Decisions go to on_estimate.
+Status PreparePose(const AnalysisOptions& options, const VideoInfo& info,
+                   const AnalysisCallbacks& callbacks, AnalysisOptions* resolved) {
+  auto tell = [&](const std::string& text) {
+    if (callbacks.on_estimate && !text.empty()) callbacks.on_estimate(text);
+  };
+  if (options.auto_calibrate) {
+    Phase(callbacks, "auto-calibrate");
+    PoseArm arm;
+    PoseSide side = options.calibrate_side;
+    Status st = internal::DetectArmJointsFrom(
+        [&options](Status* s) { return OpenInput(options, s); }, options.start,
+        options.calibrate_side, options.model_dir, options.engine.pose, &arm, &side);
+    if (!st) return Status::Error("--auto-calibrate: " + st.message());
+    resolved->shoulder_px = arm.shoulder;
+    resolved->elbow_px = arm.elbow;
+    resolved->wrist_px = arm.wrist;
+    auto xy = [](const cv::Point2d& p) {
+      return ShortNumber(std::round(p.x)) + "," + ShortNumber(std::round(p.y));
+    };
+    tell("auto-calibrate: the person's " + std::string(PoseSideName(side)) + " arm in frame " +
+         std::to_string(options.start) + ": --shoulder " + xy(arm.shoulder) + " --elbow " +
+         xy(arm.elbow) + " --wrist " + xy(arm.wrist));
+  }
+  if (options.engine.kind == EngineKind::kPose && options.engine.pose.side == PoseSide::kAuto) {
+    std::string why;
+    Status st = internal::ChoosePoseSide([&options](Status* s) { return OpenInput(options, s); },
+                                         options.start, info.fps, options.model_dir,
+                                         &resolved->engine.pose.side, &why);
+    if (!st) return st;
+    tell(why);
+  }
+  return Status::Ok();
+}
+
+using RowSink = std::function<Status(const ArmMeasurement&)>;
+using ReadySink = std::function<Status(const AngleMeta&)>;
+
+Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
+           const ReadySink& on_ready, const RowSink& on_row, AnalysisSummary* summary) {
+  const auto t0 = std::chrono::steady_clock::now();
+  *summary = AnalysisSummary();
+  auto finish = [&](Status st) {
+    summary->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return st;
+  };
+  Status st = given.Check();
+  if (!st) return finish(st);
+
+  Status open_status;
+  std::unique_ptr<VideoSource> source = OpenInput(given, &open_status);
+  if (!source) return finish(open_status);
+  const VideoInfo info = source->info();
+  summary->video = info;
+  if (callbacks.on_open) callbacks.on_open(info);
+  const EngineKind kind = given.engine.kind;
+  const bool arm_engine = kind != EngineKind::kMarker;
+
+  if (arm_engine && info.frame_count >= 0 && given.start >= info.frame_count) {
+    return finish(Status::Error("--start " + std::to_string(given.start) + " is past the end of " +
+                                info.path + " (" + std::to_string(info.frame_count) + " frames)"));
+  }
+
+  AnalysisOptions options = given;  // with what the pose network decided
+  if (arm_engine) {
+    st = PreparePose(given, info, callbacks, &options);
+    if (!st) return finish(st);
+  }
+
+  EngineContext context;
+  context.model_dir = options.model_dir;
+  context.frame_size = info.size;
+  context.fps = info.fps;
+  context.shoulder_px = options.shoulder_px;
+  context.roi = options.roi;
+  if (options.roi) {
+    const cv::Rect inside = *options.roi & cv::Rect(0, 0, info.size.width, info.size.height);
+    if (inside != *options.roi) {
+      return finish(Status::Error(
+          "--roi " + std::to_string(options.roi->x) + "," + std::to_string(options.roi->y) + "," +
+          std::to_string(options.roi->width) + "," + std::to_string(options.roi->height) +
+          " does not fit in " + info.path + " (" + SizeText(info.size) + ")"));
+    }
+  }
+  const std::pair<const char*, const std::optional<cv::Point2d>*> joints[] = {
+      {"--shoulder", &options.shoulder_px},
+      {"--elbow", &options.elbow_px},
+      {"--wrist", &options.wrist_px}};
+  for (const auto& [flag, joint] : joints) {
+    if (!*joint) continue;
+    const cv::Point2d& s = **joint;
+    if (s.x < 0 || s.y < 0 || s.x >= info.size.width || s.y >= info.size.height) {
+      return finish(Status::Error(std::string(flag) + " is outside " + info.path + " (" +
+                                  SizeText(info.size) + ")"));
+    }
+  }
+  context.elbow_px = options.elbow_px;
+  context.wrist_px = options.wrist_px;
+  if (arm_engine) {
+    if (!options.background_path.empty()) {
+      st = LoadSized(options.background_path, "--background", info, &context.background);
+      if (!st) return finish(st);
+    } else if (options.background_frames > 0) {
+      // A first pass over frames [0, K) of the input itself (thesis 5.2.1).
+      Phase(callbacks, "background");
+      Status bg_open;
+      std::unique_ptr<VideoSource> bg_source = OpenInput(options, &bg_open);
+      st = EstimateBackgroundOf(std::move(bg_source), bg_open, 0, options.background_frames,
+                                &context.background, callbacks);
+      if (!st) return finish(Status::Error("--background-frames: " + st.message()));
+      if (Cancelled(callbacks)) {
+        summary->cancelled = true;
+        return finish(Status::Ok());
+      }
+    }
+    if (!options.arm_length_path.empty()) {
+      st = LoadSized(options.arm_length_path, "--arm-length", info, &context.arm_length);
+      if (!st) return finish(st);
+    }
+  } else if (!options.reference_path.empty()) {
+    st = ReadImage(options.reference_path, &context.reference);
+    if (!st) return finish(Status::Error("--reference: " + st.message()));
+  }
+
+  std::unique_ptr<Engine> engine = Engine::Create(options.engine);
+  st = engine->Begin(context);
+  if (!st) return finish(st);
+
+  AngleMeta meta = {{"engine", EngineName(kind)},
+                    {"source", BaseName(info.path.empty() ? options.inputs.front() : info.path)},
+                    {"fps", ShortNumber(info.fps)},
+                    {"width", std::to_string(info.size.width)},
+                    {"height", std::to_string(info.size.height)}};
+  if (arm_engine) meta.emplace_back("start", std::to_string(options.start));
+  for (auto& kv : engine->Describe()) meta.push_back(std::move(kv));
+  // The inputs besides the video and every engine parameter, under the name `analyze --param`
+  // takes, so the file says how to make it again (`analyze --params-from`).
+  for (auto& kv : RunRecordMeta(options)) meta.push_back(std::move(kv));
+  summary->meta = meta;
+  if (on_ready) {
+    st = on_ready(meta);
+    if (!st) return finish(st);
+  }
+
+  if (arm_engine && options.start > 0 && info.kind == SourceKind::kCamera) {
+    // A live camera or stream cannot seek: its first `start` frames are read and dropped, so
+    // frame numbers still count from the first frame it delivered.
+    Frame skipped;
+    for (int i = 0; i < options.start; ++i) {
+      if (Cancelled(callbacks)) {
+        summary->cancelled = true;
+        return finish(Status::Ok());
+      }
+      if (!source->Read(&skipped, &st)) {
+        return finish(Status::Error("--start " + std::to_string(options.start) + ": " + info.path +
+                                    " ended after " + std::to_string(i) + " frames" +
+                                    (st ? std::string() : " (" + st.message() + ")")));
+      }
+    }
+  } else if (arm_engine && options.start > 0) {
+    st = source->Seek(options.start);
+    if (!st)
+      return finish(
+          Status::Error("--start " + std::to_string(options.start) + ": " + st.message()));
+  }
+  const int total =
+      info.frame_count >= 0 ? info.frame_count - (arm_engine ? options.start : 0) : -1;
+  Phase(callbacks, "analysis");
+  FramePacer pacer(options.realtime && info.kind == SourceKind::kVideo ? info.fps : 0);
+  Frame frame;
+  int done = 0;
+  int setup = 0;
+  while (true) {
+    if (Cancelled(callbacks)) {
+      summary->cancelled = true;
+      break;
+    }
+    Status read_status;
+    if (!source->Read(&frame, &read_status)) {
+      if (!read_status) return finish(read_status);
+      break;
+    }
+    const auto captured = pacer.Wait(frame, callbacks.cancel);
+    if (callbacks.on_frame) callbacks.on_frame(frame, captured);
+    const ArmMeasurement m = engine->Process(frame);
+    summary->last_frame = frame.index;
+    ++done;
+    if (!m.estimate.empty() && callbacks.on_estimate) callbacks.on_estimate(m.estimate);
+    if (callbacks.on_measurement) callbacks.on_measurement(frame, m);
+    if (m.row()) {
+      ++summary->frames;
+      (m.phase == MeasurementPhase::kOk ? summary->ok : summary->lost)++;
+      if (on_row) {
+        st = on_row(m);
+        if (!st) return finish(st);
+      }
+    } else {
+      ++setup;
+    }
+    if (callbacks.on_progress) callbacks.on_progress(done, total);
+  }
+  if (!summary->cancelled && summary->frames == 0 && setup > 0) {
+    return finish(Status::Error(
+        info.path + " ended during the standstill: frames [" + std::to_string(options.start) +
+        ", " + std::to_string(options.start + setup) + ") were read, " +
+        "no frame was left to analyse (see --start and " + "--standstill-frames)"));
+  }
+  return finish(Status::Ok());
+}
+
+}  // namespace
+
+Status AnalysisOptions::Check() const {
+  if (auto_calibrate) {
+    if (engine.kind == EngineKind::kBgsub || engine.kind == EngineKind::kMarker ||
+        engine.kind == EngineKind::kPose) {
+      return Status::Error(
+          std::string("--auto-calibrate is for the tracking engines, not --engine ") +
+          EngineName(engine.kind));
+    }
+    if (shoulder_px || elbow_px || wrist_px) {
+      return Status::Error(
+          "--auto-calibrate finds the joints itself: give it or --shoulder/--elbow/--wrist, not "
+          "both");
+    }
+  }
+  if (engine.kind != EngineKind::kLk && (elbow_px || wrist_px)) {
+    return Status::Error(std::string(elbow_px ? "--elbow" : "--wrist") +
+                         " is used by --engine lk only");
+  }
+  if (inputs.empty()) return Status::Error("no INPUT given (a video, images or a folder)");
+  if (start < 0)
+    return Status::Error("--start must be 0 or more (got " + std::to_string(start) + ")");
+  if (background_frames < 0) {
+    return Status::Error("--background-frames must be at least 1 (got " +
+                         std::to_string(background_frames) + ")");
+  }
+  if (roi && (roi->x < 0 || roi->y < 0 || roi->width <= 0 || roi->height <= 0)) {
+    return Status::Error("--roi needs X,Y >= 0 and W,H > 0");
+  }
+  const bool has_bg = !background_path.empty();
+  const bool has_frames = background_frames > 0;
+  switch (engine.kind) {
+    case EngineKind::kBgsub:
+      if (arm_length_path.empty()) {
+        return Status::Error("--engine bgsub needs --arm-length ARM.png (thesis 5.2.3)");
+      }
+      if (has_bg == has_frames) {
+        return Status::Error(
+            "--engine bgsub needs exactly one of --background BG.png and --background-frames K");
+      }
+      break;
+    case EngineKind::kLk:
+      if ((elbow_px || wrist_px) && !(shoulder_px && elbow_px && wrist_px)) {
+        return Status::Error(
+            "--elbow and --wrist go together with --shoulder: the arm's three joints in the start "
+            "frame");
+      }
+      if (elbow_px && wrist_px && shoulder_px) {
+        const double upper = cv::norm(*elbow_px - *shoulder_px);
+        const double fore = cv::norm(*wrist_px - *elbow_px);
+        if (upper < kMinClickedSegmentPx || fore < kMinClickedSegmentPx) {
+          return Status::Error(std::string(upper < kMinClickedSegmentPx ? "--elbow" : "--wrist") +
+                               " is less than " + std::to_string(int(kMinClickedSegmentPx)) +
+                               " pixels from the " +
+                               (upper < kMinClickedSegmentPx ? "shoulder" : "elbow") +
+                               ": the segment has no direction");
+        }
+      }
+      if (!has_bg && !has_frames && !shoulder_px && !auto_calibrate) {
+        return Status::Error(
+            "--engine lk needs one of --background, --background-frames, --shoulder or "
+            "--auto-calibrate");
+      }
+      if (has_bg && has_frames) {
+        return Status::Error("--background and --background-frames cannot both be given");
+      }
+      break;
+    case EngineKind::kMarker:
+      if (reference_path.empty()) {
+        return Status::Error("--engine marker needs --reference REF.png");
+      }
+      break;
+    case EngineKind::kPose:
+      break;  // needs nothing but the model
+  }
+  return engine.Check();
+}
+
+Status EstimateBackground(const std::vector<std::string>& inputs, int start, int count,
+                          cv::Mat* background, const AnalysisCallbacks& callbacks) {
+  Status st;
+  std::unique_ptr<VideoSource> source = VideoSource::Open(inputs, &st);
+  return EstimateBackgroundOf(std::move(source), st, start, count, background, callbacks);
+}
+
+namespace {
+
+Status EstimateBackgroundOf(std::unique_ptr<VideoSource> source, const Status& open_status,
+                            int start, int count, cv::Mat* background,
+                            const AnalysisCallbacks& callbacks) {
+  if (count < 1) return Status::Error("the background needs at least 1 frame");
+  if (start < 0) return Status::Error("the first background frame must be 0 or more");
+  if (!source) return open_status;
+  Status st;
+  const VideoInfo& info = source->info();
+  const std::string range =
+      "[" + std::to_string(start) + ", " + std::to_string(start + count) + ")";
+  if (info.frame_count >= 0 && start + count > info.frame_count) {
+    return Status::Error(info.path + " has " + std::to_string(info.frame_count) +
+                         " frames; the background needs frames " + range);
+  }
+  if (start > 0) {
+    st = source->Seek(start);
+    if (!st) return st;
+  }
+  cv::Mat sum;
+  Frame frame;
+  for (int i = 0; i < count; ++i) {
+    if (Cancelled(callbacks)) return Status::Ok();
+    Status read_status;
+    if (!source->Read(&frame, &read_status)) {
+      if (!read_status) return read_status;
+      return Status::Error(info.path + " ended after " + std::to_string(start + i) +
+                           " frames; the background needs frames " + range);
+    }
+    if (sum.empty()) sum = cv::Mat::zeros(frame.image.size(), CV_32FC3);
+    if (frame.image.size() != sum.size()) {
+      return Status::Error(info.path + ": frame " + std::to_string(frame.index) + " is " +
+                           SizeText(frame.image.size()) + ", the first is " + SizeText(sum.size()));
+    }
+    cv::accumulate(frame.image, sum);
+    if (callbacks.on_progress) callbacks.on_progress(i + 1, count);
+  }
+  sum.convertTo(*background, CV_8UC3, 1.0 / count);
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status RunAnalysis(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
+                   AnalysisSummary* summary) {
+  return Run(options, callbacks, nullptr, nullptr, summary);
+}
+
+Status AnalyzeToFile(const AnalysisOptions& options, const std::string& output_path,
+                     const AnalysisCallbacks& callbacks, AnalysisSummary* summary) {
+  AngleFileWriter writer;
+  const bool file_column = options.engine.kind == EngineKind::kMarker;
+  // The engines that rate their own rows (pose, lk, and bgsub's two-segment fit, not its thesis
+  // path) write the optional confidence column.
+  const bool confidence_column =
+      options.engine.kind == EngineKind::kPose || options.engine.kind == EngineKind::kLk ||
+      (options.engine.kind == EngineKind::kBgsub && !options.engine.bgsub.thesis_mode);
+  Status st = Run(
+      options, callbacks,
+      [&](const AngleMeta& meta) {
+        return writer.Open(output_path, meta, file_column, confidence_column,
+                           /*signed_yaw_column=*/file_column);
+      },
+      [&](const ArmMeasurement& m) { return writer.Write(m.ToRow()); }, summary);
+  if (!st) return st;
+  if (summary->meta.empty()) return Status::Ok();  // cancelled before the file was opened
+  return writer.Commit(!summary->cancelled);
+}
+
+}  // namespace armmimic

@@ -1,0 +1,97 @@
+#include "common/arm_gate.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "armmimic/core/angle_file.h"
+#include "armmimic/core/angles.h"
+
+namespace armmimic {
+
+void ArmGate::Reset() {
+  confirmed_ = o_.start_confirmed;
+  have_last_ = false;
+  run_length_ = 0;
+  frame_dt_ = 0;
+}
+
+void ArmGate::Anchor(double upper_deg, double fore_deg, double time_s) {
+  last_.upper_deg = upper_deg;
+  last_.bend_deg = AngleDiff(fore_deg, upper_deg);
+  last_.time_s = time_s;
+  have_last_ = true;
+  confirmed_ = true;
+  run_length_ = 0;
+}
+
+double ArmGate::Reach(double dt_s) const {
+  // At least one frame's worth (the smallest step seen; 30 fps before one is seen).
+  const double dt = std::max(dt_s, frame_dt_ > 0 ? frame_dt_ : 1.0 / 30);
+  return o_.max_speed_deg_s * dt;
+}
+
+bool ArmGate::Consistent(const Pose& from, const Pose& to) const {
+  // Still images (no time between them) can hold any poses: no speed to check.
+  if (!(to.time_s > from.time_s)) return true;
+  const double reach = Reach(to.time_s - from.time_s);
+  return std::abs(AngleDiff(to.upper_deg, from.upper_deg)) <= reach &&
+         std::abs(AngleDiff(to.bend_deg, from.bend_deg)) <= reach;
+}
+
+void ArmGate::Lose(ArmMeasurement* m, const std::string& why) {
+  m->phase = MeasurementPhase::kLost;
+  m->note = why + (m->note.empty() ? "" : " (" + m->note + ")");
+  m->upper_deg = m->fore_deg = m->yaw_deg = m->bend_deg = kNaN;
+  m->upper_com_px = m->fore_com_px = cv::Point2d(kNaN, kNaN);
+}
+
+void ArmGate::Review(ArmMeasurement* m, double support) {
+  if (m->phase != MeasurementPhase::kOk) {
+    run_length_ = 0;
+    return;
+  }
+  if (std::isfinite(support) && support < o_.min_support) {
+    run_length_ = 0;
+    Lose(m, "evidence too weak (support " + FormatNumber(support, 2) + ")");
+    return;
+  }
+  Pose now;
+  now.upper_deg = m->upper_deg;
+  now.bend_deg = AngleDiff(m->fore_deg, m->upper_deg);
+  now.time_s = m->time_s;
+  if (have_last_ && now.time_s > last_.time_s) {
+    const double dt = now.time_s - last_.time_s;
+    frame_dt_ = frame_dt_ > 0 ? std::min(frame_dt_, dt) : dt;
+  }
+  if (confirmed_) {
+    if (!have_last_ || Consistent(last_, now)) {
+      last_ = now;
+      have_last_ = true;
+      return;
+    }
+    const double turn = std::max(std::abs(AngleDiff(now.upper_deg, last_.upper_deg)),
+                                 std::abs(AngleDiff(now.bend_deg, last_.bend_deg)));
+    const double dt = now.time_s - last_.time_s;
+    confirmed_ = false;
+    run_last_ = now;
+    run_length_ = 1;
+    Lose(m, "jump of " + FormatNumber(turn, 0) + " deg in " + FormatNumber(dt, 3) +
+                " s, faster than an arm turns");
+    return;
+  }
+  // Unconfirmed: a run of agreeing candidates re-acquires the arm.
+  run_length_ = run_length_ > 0 && Consistent(run_last_, now) ? run_length_ + 1 : 1;
+  run_last_ = now;
+  if (run_length_ >= o_.confirm_frames) {
+    confirmed_ = true;
+    run_length_ = 0;
+    last_ = now;
+    have_last_ = true;
+    m->note = "re-acquired; " + m->note;
+    return;
+  }
+  Lose(m, "re-acquiring (" + std::to_string(run_length_) + "/" + std::to_string(o_.confirm_frames) +
+              " agreeing frames)");
+}
+
+}  // namespace armmimic

@@ -1,0 +1,224 @@
+#include "common/arm_model_fit.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "armmimic/core/angles.h"
+
+namespace armmimic::arm {
+namespace {
+
+// The strips: the upper arm from just past the shoulder (where it merges with the body) to the
+// elbow; the forearm from just past the elbow through the hand.
+constexpr double kUpperFrom = 0.15, kUpperTo = 0.95;
+constexpr double kForeFrom = 0.1;
+constexpr double kHandShare = 0.8;  // of the hand's length: its tip narrows
+
+// The wide search's grid (degrees) and the distance between its poses that counts as another
+// pose.
+constexpr double kWideUpperStep = 4, kWideBendStep = 5;
+constexpr double kDistinctDeg = 12;
+constexpr double kRefineDeg = 4;
+
+double ForeTo(const ArmShape& shape) {
+  return shape.fore_px > 0 ? 1 + kHandShare * shape.hand_px / shape.fore_px : 1;
+}
+
+// Offset of the peak of a parabola through (-1, a), (0, b), (1, c), within half a step.
+double ParabolaPeak(double a, double b, double c) {
+  const double den = a - 2 * b + c;
+  return den < 0 ? std::clamp(0.5 * (a - c) / den, -0.5, 0.5) : 0.0;
+}
+
+}  // namespace
+
+double DistanceToSegment(const cv::Point2d& p, const cv::Point2d& a, const cv::Point2d& b) {
+  const cv::Point2d ab = b - a;
+  const double len2 = ab.dot(ab);
+  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  const cv::Point2d d = p - (a + t * ab);
+  return std::sqrt(d.dot(d));
+}
+
+ArmJoints JointsOf(const ArmPose& pose, const ArmShape& shape) {
+  ArmJoints j;
+  j.shoulder = pose.shoulder;
+  j.elbow = pose.shoulder + shape.upper_px * DirectionVector(pose.upper_deg);
+  j.wrist = j.elbow + shape.fore_px * DirectionVector(pose.fore_deg);
+  return j;
+}
+
+SegmentScore ScoreSegment(const EvidenceMap& evidence, const cv::Point2d& from_px, double deg,
+                          double length_px, double hw_px, double t0, double t1, bool coarse,
+                          const cv::Point2d& avoid_a, const cv::Point2d& avoid_b,
+                          double avoid_hw_px) {
+  SegmentScore out;
+  const double span = (t1 - t0) * length_px;
+  if (!(span > 0)) return out;
+  const cv::Point2d u = DirectionVector(deg), n(-u.y, u.x);
+  const int along = coarse ? 6 : std::clamp(static_cast<int>(span / 2.5), 6, 16);
+  static constexpr double kFine[4] = {-0.6, -0.2, 0.2, 0.6};
+  static constexpr double kCoarse[2] = {-0.4, 0.4};
+  const double* across = coarse ? kCoarse : kFine;
+  const int n_across = coarse ? 2 : 4;
+  const double flank = hw_px + std::max(2.0, 0.75 * hw_px);
+  double inside = 0, flanks = 0;
+  int n_inside = 0, n_flank = 0;
+  for (int k = 0; k < along; ++k) {
+    const double t = (t0 + (t1 - t0) * (k + 0.5) / along) * length_px;
+    const cv::Point2d p = from_px + t * u;
+    for (int a = 0; a < n_across; ++a) {
+      const cv::Point2d q = p + across[a] * hw_px * n;
+      inside += evidence.At(q.x, q.y);
+      ++n_inside;
+    }
+    for (int s = -1; s <= 1; s += 2) {
+      const cv::Point2d q = p + s * flank * n;
+      if (avoid_hw_px > 0 && DistanceToSegment(q, avoid_a, avoid_b) < avoid_hw_px) continue;
+      flanks += evidence.At(q.x, q.y);
+      ++n_flank;
+    }
+  }
+  out.inside = inside / n_inside;
+  out.score = out.inside - (n_flank > 0 ? flanks / n_flank : 0.0);
+  return out;
+}
+
+PoseScore ScorePose(const EvidenceMap& evidence, const ArmPose& pose, const ArmShape& shape,
+                    bool coarse) {
+  PoseScore s;
+  const ArmJoints j = JointsOf(pose, shape);
+  s.upper = ScoreSegment(evidence, j.shoulder, pose.upper_deg, shape.upper_px, shape.upper_hw,
+                         kUpperFrom, kUpperTo, coarse);
+  s.fore = ScoreSegment(evidence, j.elbow, pose.fore_deg, shape.fore_px, shape.fore_hw, kForeFrom,
+                        ForeTo(shape), coarse, j.shoulder, j.elbow, shape.upper_hw + 1);
+  s.total = s.upper.score + s.fore.score;
+  return s;
+}
+
+FitResult FitNear(const EvidenceMap& evidence, const ArmShape& shape, const ArmPose& predicted,
+                  const LocalSearch& search) {
+  const int ru = std::max(1, static_cast<int>(std::ceil(search.upper_range_deg)));
+  const int rb = std::max(1, static_cast<int>(std::ceil(search.bend_range_deg)));
+  const int nu = 2 * ru + 1, nb = 2 * rb + 1;
+  const double bend0 = AngleDiff(predicted.fore_deg, predicted.upper_deg);
+  const cv::Point2d s = predicted.shoulder;
+  std::vector<double> total(static_cast<std::size_t>(nu * nb), -4.0);
+  int best = -1;
+  for (int i = 0; i < nu; ++i) {
+    const double up = predicted.upper_deg + (i - ru);
+    const SegmentScore su =
+        ScoreSegment(evidence, s, up, shape.upper_px, shape.upper_hw, kUpperFrom, kUpperTo);
+    const cv::Point2d elbow = s + shape.upper_px * DirectionVector(up);
+    for (int j = 0; j < nb; ++j) {
+      const double bend = bend0 + (j - rb);
+      if (std::abs(bend) > kMaxBendDeg) continue;
+      const SegmentScore sf =
+          ScoreSegment(evidence, elbow, up + bend, shape.fore_px, shape.fore_hw, kForeFrom,
+                       ForeTo(shape), false, s, elbow, shape.upper_hw + 1);
+      const int k = i * nb + j;
+      total[k] = su.score + sf.score;
+      if (best < 0 || total[k] > total[best]) best = k;
+    }
+  }
+  FitResult r;
+  r.pose = predicted;
+  if (best < 0) {
+    r.score = ScorePose(evidence, predicted, shape);
+    return r;
+  }
+  const int bi = best / nb, bj = best % nb;
+  double di = bi - ru, dj = bj - rb;
+  auto at = [&](int i, int j) { return total[static_cast<std::size_t>(i * nb + j)]; };
+  if (bi > 0 && bi < nu - 1 && at(bi - 1, bj) > -4 && at(bi + 1, bj) > -4) {
+    di += ParabolaPeak(at(bi - 1, bj), at(bi, bj), at(bi + 1, bj));
+  }
+  if (bj > 0 && bj < nb - 1 && at(bi, bj - 1) > -4 && at(bi, bj + 1) > -4) {
+    dj += ParabolaPeak(at(bi, bj - 1), at(bi, bj), at(bi, bj + 1));
+  }
+  r.pose.upper_deg = Wrap180(predicted.upper_deg + di);
+  r.pose.fore_deg = Wrap180(r.pose.upper_deg + bend0 + dj);
+  r.score = ScorePose(evidence, r.pose, shape);
+  return r;
+}
+
+std::vector<FitResult> FitAnywhere(const EvidenceMap& evidence, const ArmShape& shape,
+                                   const cv::Point2d& shoulder, int count) {
+  const int nu = static_cast<int>(360 / kWideUpperStep);
+  const int nb = 2 * static_cast<int>(kMaxBendDeg / kWideBendStep) + 1;
+  std::vector<double> total(static_cast<std::size_t>(nu * nb));
+  for (int i = 0; i < nu; ++i) {
+    const double up = -180 + kWideUpperStep * (i + 1);
+    const SegmentScore su = ScoreSegment(evidence, shoulder, up, shape.upper_px, shape.upper_hw,
+                                         kUpperFrom, kUpperTo, true);
+    const cv::Point2d elbow = shoulder + shape.upper_px * DirectionVector(up);
+    for (int j = 0; j < nb; ++j) {
+      const double bend = -kMaxBendDeg + kWideBendStep * j;
+      const SegmentScore sf =
+          ScoreSegment(evidence, elbow, up + bend, shape.fore_px, shape.fore_hw, kForeFrom,
+                       ForeTo(shape), true, shoulder, elbow, shape.upper_hw + 1);
+      total[static_cast<std::size_t>(i * nb + j)] = su.score + sf.score;
+    }
+  }
+  // Local maxima of the grid (the upper arm's direction wraps around), best first.
+  std::vector<std::pair<double, int>> peaks;
+  const int ri = static_cast<int>(std::ceil(kDistinctDeg / kWideUpperStep));
+  const int rj = static_cast<int>(std::ceil(kDistinctDeg / kWideBendStep));
+  for (int i = 0; i < nu; ++i) {
+    for (int j = 0; j < nb; ++j) {
+      const double v = total[static_cast<std::size_t>(i * nb + j)];
+      bool peak = true;
+      for (int di = -ri; di <= ri && peak; ++di) {
+        for (int dj = -rj; dj <= rj && peak; ++dj) {
+          const int jj = j + dj;
+          if ((di == 0 && dj == 0) || jj < 0 || jj >= nb) continue;
+          const int ii = (i + di + nu) % nu;
+          const double w = total[static_cast<std::size_t>(ii * nb + jj)];
+          // Ties go to the earlier cell, so a plateau gives one peak.
+          peak = w < v || (w == v && ii * nb + jj > i * nb + j);
+        }
+      }
+      if (peak) peaks.emplace_back(v, i * nb + j);
+    }
+  }
+  std::sort(peaks.begin(), peaks.end(), [](const auto& a, const auto& b) {
+    return a.first > b.first || (a.first == b.first && a.second < b.second);
+  });
+  std::vector<FitResult> out;
+  LocalSearch refine;
+  refine.upper_range_deg = refine.bend_range_deg = kRefineDeg;
+  for (const auto& [v, k] : peaks) {
+    if (static_cast<int>(out.size()) >= count) break;
+    ArmPose p;
+    p.shoulder = shoulder;
+    p.upper_deg = Wrap180(-180 + kWideUpperStep * (k / nb + 1));
+    p.fore_deg = Wrap180(p.upper_deg - kMaxBendDeg + kWideBendStep * (k % nb));
+    out.push_back(FitNear(evidence, shape, p, refine));
+  }
+  std::sort(out.begin(), out.end(),
+            [](const FitResult& a, const FitResult& b) { return a.score.total > b.score.total; });
+  return out;
+}
+
+double ForeRivalScore(const EvidenceMap& evidence, const ArmShape& shape, const ArmPose& pose,
+                      double apart_deg) {
+  constexpr double kStepDeg = 3;
+  const ArmJoints j = JointsOf(pose, shape);
+  const double bend0 = AngleDiff(pose.fore_deg, pose.upper_deg);
+  double best = -2;
+  for (double bend = -kMaxBendDeg; bend <= kMaxBendDeg; bend += kStepDeg) {
+    if (std::abs(bend - bend0) < apart_deg) continue;
+    const SegmentScore sf =
+        ScoreSegment(evidence, j.elbow, pose.upper_deg + bend, shape.fore_px, shape.fore_hw,
+                     kForeFrom, 1, false, j.shoulder, j.elbow, shape.upper_hw + 1);
+    best = std::max(best, sf.score);
+  }
+  return best;
+}
+
+double PoseDistanceDeg(const ArmPose& a, const ArmPose& b) {
+  return std::max(std::abs(AngleDiff(a.upper_deg, b.upper_deg)),
+                  std::abs(AngleDiff(a.fore_deg, b.fore_deg)));
+}
+
+}  // namespace armmimic::arm

@@ -1,0 +1,39 @@
+// Private to src/engines: what the shared parts in common/ call in each engine's folder. The
+// engine classes themselves stay hidden in their folder's engine.cpp; Engine::Create reaches
+// them through the factories, and the analysis pipeline reaches the pose engine's steps before
+// a run (choosing the side, detecting the joints) through the declarations below.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "armmimic/core/status.h"
+#include "armmimic/core/video_source.h"
+#include "armmimic/engines/engine.h"
+#include "armmimic/engines/pose.h"
+#include "armmimic/engines/pose_options.h"
+
+namespace armmimic::internal {
+
+std::unique_ptr<Engine> CreateBgsubEngine(const BgsubOptions& options);
+std::unique_ptr<Engine> CreateLkEngine(const LkOptions& options);
+std::unique_ptr<Engine> CreateMarkerEngine(const MarkerOptions& options);
+std::unique_ptr<Engine> CreatePoseEngine(const PoseOptions& options);
+
+// The pose engine's steps before a run (pose/calibrate.cpp).
+// Opens the analysed input for one pass (AnalysisOptions::open_source or its files).
+using SourceOpener = std::function<std::unique_ptr<VideoSource>(Status*)>;
+
+// DetectArmJoints (pose.h) on the input `open` gives.
+Status DetectArmJointsFrom(const SourceOpener& open, int frame, PoseSide side,
+                           const std::string& model_dir, const PoseOptions& options, PoseArm* arm,
+                           PoseSide* chosen);
+
+// The arm better seen over frames [start, start + one second): the scores summed over a few
+// frames. *why says what was decided, for the shells to show.
+Status ChoosePoseSide(const SourceOpener& open, int start, double fps, const std::string& model_dir,
+                      PoseSide* side, std::string* why);
+
+}  // namespace armmimic::internal

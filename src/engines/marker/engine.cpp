@@ -1,0 +1,237 @@
+// The marker-joint engine (thesis chapter 4, docs/marker.md): the lower part's silhouette and
+// markers give the joint's signed yaw through a cylinder model, the upper marker its bend; the
+// thesis path (acos(n/N), eqs. 4-2..4-5) runs under --thesis.
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <opencv2/imgproc.hpp>
+
+#include "armmimic/core/angle_file.h"
+#include "common/engine_internal.h"
+#include "marker/detect.h"
+#include "marker/model.h"
+
+namespace armmimic {
+
+Status MarkerOptions::Check() const {
+  if (median_size < 1 || median_size % 2 == 0 || median_size > 31) {
+    return Status::Error("--median: window must be odd, 1..31 (got " + std::to_string(median_size) +
+                         ")");
+  }
+  if (low < 0 || low > 255) return Status::Error("--low must be in [0, 255]");
+  if (high < 0 || high > 255) return Status::Error("--high must be in [0, 255]");
+  if (low > high) {
+    return Status::Error("--low " + std::to_string(low) + " is above --high " +
+                         std::to_string(high));
+  }
+  if (flood_range < 0 || flood_range > 255) {
+    return Status::Error("--flood-range must be in [0, 255]");
+  }
+  if (min_area < 1 || max_area < min_area) {
+    return Status::Error("--min-area/--max-area: need 1 <= min-area <= max-area");
+  }
+  if (!(min_aspect > 0 && max_aspect >= min_aspect)) {
+    return Status::Error("--min-aspect/--max-aspect: need 0 < min-aspect <= max-aspect");
+  }
+  if (!(min_fill >= 0 && min_fill <= 1)) return Status::Error("--min-fill must be in [0, 1]");
+  if (!(fov_deg >= 0 && fov_deg <= 140)) return Status::Error("--fov must be in [0, 140] degrees");
+  if (!(max_marker_turn_deg > 0 && max_marker_turn_deg < 90)) {
+    return Status::Error("marker option max_marker_turn_deg must be in (0, 90)");
+  }
+  if (!(agreement_sigmas > 0)) return Status::Error("marker option agreement_sigmas must be > 0");
+  if (!(max_upper_turn_deg > 0 && max_upper_turn_deg < 90)) {
+    return Status::Error("marker option max_upper_turn_deg must be in (0, 90)");
+  }
+  if (!(upper_tolerance > 0)) return Status::Error("marker option upper_tolerance must be > 0");
+  return Status::Ok();
+}
+
+namespace internal {
+namespace {
+
+std::string Fixed(double v, int decimals) { return FormatNumber(v, decimals); }
+
+class MarkerEngine : public Engine {
+ public:
+  explicit MarkerEngine(const MarkerOptions& options) : requested_(options), options_(options) {}
+
+  EngineKind kind() const override { return EngineKind::kMarker; }
+
+  Status Begin(const EngineContext& context) override {
+    begun_ = false;
+    const cv::Mat& ref = context.reference;
+    if (ref.empty()) {
+      return Status::Error(
+          "--reference: the marker engine needs a reference image (the joint at zero yaw and "
+          "zero bend)");
+    }
+    if (ref.type() != CV_8UC3) return Status::Error("--reference: the image must be 8-bit BGR");
+    if (!context.frame_size.empty() && context.frame_size != ref.size()) {
+      return Status::Error("--reference: the reference is " + std::to_string(ref.cols) + "x" +
+                           std::to_string(ref.rows) + " but the input is " +
+                           std::to_string(context.frame_size.width) + "x" +
+                           std::to_string(context.frame_size.height));
+    }
+    options_ = requested_;
+    MarkerTriple t;
+    if (!FindReferenceMarkers(ref, &t)) {
+      return Status::Error("--reference: cannot find the three markers (" +
+                           std::to_string(reference_blobs_) +
+                           " dark blobs passed the threshold and the heuristics; expected two "
+                           "side by side and one centred above them)");
+    }
+    if (options_.thesis_mode) {
+      ref_.markers = t;
+      ref_.n_px = t.right.centre.x - t.left.centre.x;
+      ref_.e_px = 0.5 * ((t.left.centre.y + t.right.centre.y) * 0.5 - t.upper.centre.y);
+      if (ref_.n_px < 3 || ref_.e_px < 3) {
+        return Status::Error("--reference: the markers are too close together (N = " +
+                             Fixed(ref_.n_px, 1) + " px, e = " + Fixed(ref_.e_px, 1) + " px)");
+      }
+    } else {
+      // Sub-pixel centroids: once with the darkest level, then with the learnt marker/surround.
+      double ratio = 0;
+      for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
+        if (!RefineMarker(scratch_.gray, scratch_.filtered, 0, 0, b)) {
+          return Status::Error("--reference: the markers have too little contrast to measure");
+        }
+        ratio += b->core / b->surround;
+      }
+      for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
+        b->centre = {b->box.x + (b->box.width - 1) / 2.0, b->box.y + (b->box.height - 1) / 2.0};
+        RefineMarker(scratch_.gray, scratch_.filtered, ratio / 3, 0, b);
+      }
+      std::string message;
+      if (!CalibrateMarkerJoint(scratch_.gray, t, options_, &cal_, &message)) {
+        return Status::Error("--reference: " + message);
+      }
+    }
+    size_ = ref.size();
+    begun_ = true;
+    return Status::Ok();
+  }
+
+  ArmMeasurement Process(const Frame& frame) override {
+    ArmMeasurement m;
+    m.frame = frame.index;
+    m.time_s = frame.time_s;
+    m.file = frame.name;
+    m.phase = MeasurementPhase::kLost;
+    if (!begun_) {
+      m.note = "the engine has no reference yet";
+      return m;
+    }
+    if (frame.image.empty() || frame.image.size() != size_ || frame.image.type() != CV_8UC3) {
+      m.note = "image size differs from the reference";
+      return m;
+    }
+    if (options_.thesis_mode) return ProcessThesis(frame.image, m);
+    cv::cvtColor(frame.image, scratch_.gray, cv::COLOR_BGR2GRAY);
+    const MarkerViewResult r = MeasureMarkerView(scratch_.gray, cal_, options_, &view_);
+    m.note = r.note;
+    m.candidate_boxes = r.candidates;
+    if (std::isfinite(r.axis_x_px)) {
+      m.cylinder_axis_px = {{r.axis_x_px, static_cast<double>(r.bottom_row)}, r.pivot_px};
+      m.cylinder_edges_px = {{r.left_edge_px, r.pivot_px.y},
+                             {r.left_edge_px, static_cast<double>(r.bottom_row)},
+                             {r.right_edge_px, r.pivot_px.y},
+                             {r.right_edge_px, static_cast<double>(r.bottom_row)}};
+    }
+    if (!r.ok) return m;
+    m.phase = MeasurementPhase::kOk;
+    m.yaw_signed_deg = DegFromRad(r.yaw);
+    m.yaw_deg = std::abs(m.yaw_signed_deg);
+    m.bend_deg = std::isfinite(r.bend) ? Wrap180(DegFromRad(r.bend)) : kNaN;
+    m.shoulder_px = r.pivot_px;  // the pivot, for the overlay
+    m.marker_centres = {r.upper_px, r.left_px, r.right_px};
+    return m;
+  }
+
+  AngleMeta Describe() const override {
+    AngleMeta meta = {
+        {"median", std::to_string(options_.median_size)},
+        {"low", std::to_string(options_.low)},
+        {"high", std::to_string(options_.high)},
+        {"flood_range", std::to_string(options_.flood_range)},
+        {"area", std::to_string(options_.min_area) + ".." + std::to_string(options_.max_area)},
+        {"mode", options_.thesis_mode ? "thesis" : "cylinder"}};
+    if (!begun_) return meta;
+    if (options_.thesis_mode) {
+      meta.emplace_back("N_px", Fixed(ref_.n_px, 3));
+      meta.emplace_back("e_px", Fixed(ref_.e_px, 3));
+    } else {
+      meta.emplace_back("fov_deg", Fixed(options_.fov_deg, 1));
+      meta.emplace_back("radius_px", Fixed(cal_.radius_px, 2));
+      meta.emplace_back(
+          "alpha_deg",
+          Fixed(DegFromRad(0.5 * (cal_.lower.theta_right0 - cal_.lower.theta_left0)), 2));
+      meta.emplace_back("e_radii", Fixed(cal_.upper.e, 3));
+    }
+    return meta;
+  }
+
+ private:
+  // The reference's three markers (4.2); when [low, high] does not show them (other
+  // illumination), the nearest window of the same width that does.
+  bool FindReferenceMarkers(const cv::Mat& ref, MarkerTriple* t) {
+    std::vector<MarkerBlob> blobs = FindMarkerCandidates(ref, options_, &scratch_);
+    reference_blobs_ = static_cast<int>(blobs.size());
+    if (ChooseReferenceTriple(blobs, scratch_.filtered, options_.thesis_mode, t)) return true;
+    if (!options_.auto_window || options_.thesis_mode) return false;
+    const int width = requested_.high - requested_.low;
+    for (int shift = 5; shift <= 255; shift += 5) {
+      for (int sign : {-1, 1}) {
+        MarkerOptions o = requested_;
+        o.low = requested_.low + sign * shift;
+        o.high = o.low + width;
+        if (o.low < 0 || o.high > 255) continue;
+        blobs = FindMarkerCandidates(ref, o, &scratch_);
+        if (ChooseReferenceTriple(blobs, scratch_.filtered, false, t)) {
+          options_ = o;
+          return true;
+        }
+      }
+    }
+    FindMarkerCandidates(ref, options_, &scratch_);  // leave the scratch as for the window used
+    return false;
+  }
+
+  ArmMeasurement& ProcessThesis(const cv::Mat& image, ArmMeasurement& m) {
+    const std::vector<MarkerBlob> blobs = FindMarkerCandidates(image, options_, &scratch_);
+    m.candidate_boxes.reserve(blobs.size());
+    for (const MarkerBlob& b : blobs) m.candidate_boxes.push_back(b.box);
+    MarkerTriple t;
+    if (!ThreeLargest(blobs, &t)) {
+      m.note = "fewer than three markers found (one hidden?)";
+      return m;
+    }
+    m.marker_centres = {t.upper.centre, t.left.centre, t.right.centre};
+    const MarkerAngles a = ComputeThesisAngles(t, ref_);
+    m.phase = MeasurementPhase::kOk;
+    m.yaw_deg = a.yaw_deg;
+    m.bend_deg = a.bend_deg;
+    m.shoulder_px = a.pivot_px;
+    m.note = "three largest; yaw = acos(n/N)";
+    return m;
+  }
+
+  MarkerOptions requested_;
+  MarkerOptions options_;  // as used: the window may be shifted by Begin
+  MarkerReference ref_;    // thesis path
+  MarkerCalibration cal_;  // cylinder model
+  MarkerScratch scratch_;
+  MarkerViewScratch view_;
+  int reference_blobs_ = 0;
+  cv::Size size_;
+  bool begun_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Engine> CreateMarkerEngine(const MarkerOptions& options) {
+  return std::make_unique<MarkerEngine>(options);
+}
+
+}  // namespace internal
+}  // namespace armmimic

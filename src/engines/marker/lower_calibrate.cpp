@@ -1,0 +1,335 @@
+// The lower part on the reference image (docs/marker.md, "Calibration"): the silhouette found
+// from scratch around the lower pair, the bands of rows that show only the surface, the markers'
+// grey ratio, angular radius, zero-yaw angles and height.
+#include <algorithm>
+#include <cmath>
+
+#include "armmimic/core/angles.h"
+#include "marker/lower.h"
+
+namespace armmimic::internal {
+namespace {
+
+// A silhouette step fainter than this (grey levels a pixel) wanders with the noise.
+constexpr double kTrackable = 5;
+// ... and one fainter than this is placed better by the markers' symmetry.
+constexpr double kPlain = 15;
+
+std::vector<int> RowRange(double from, double to, int rows) {
+  std::vector<int> out;
+  for (int y = std::max(1, static_cast<int>(std::ceil(from)));
+       y <= std::min(rows - 2, static_cast<int>(std::floor(to))); ++y) {
+    out.push_back(y);
+  }
+  return out;
+}
+
+// The silhouette's two steps in `profiles` (each over the same columns, first column x0), about
+// symmetric about `mid` (within 3 pixels) at half-widths [lo, hi]: the pair of columns with the
+// largest summed gradient magnitude (each band sees its own background, so the step's sign may
+// differ).
+bool SymmetricEdges(const std::vector<std::vector<double>>& profiles, int x0, double mid, double lo,
+                    double hi, int* left, int* right) {
+  auto g = [&](int i) {
+    double sum = 0;
+    for (const std::vector<double>& p : profiles) {
+      if (i >= 1 && i + 1 < static_cast<int>(p.size())) sum += std::abs(p[i + 1] - p[i - 1]);
+    }
+    return sum;
+  };
+  double best = 0;
+  *left = *right = -1;
+  for (int xl = static_cast<int>(std::ceil(mid - hi)); xl <= mid - lo; ++xl) {
+    const int i = xl - x0;
+    const int j = static_cast<int>(std::lround(2 * mid - xl)) - x0;
+    for (int dj = -3; dj <= 3; ++dj) {  // the markers' midpoint is only near the axis
+      const double s = g(i) + g(j + dj);
+      if (s > best) best = s, *left = i + x0, *right = j + dj + x0;
+    }
+  }
+  return *left >= 0;
+}
+
+// Measures a band's two edges near `left`, `right` (image columns): the steepest step (tracked in
+// the views; one weaker than kTrackable grey levels a pixel is untrackable: strength 0)
+// and the edge fitted to the profile's shape (the silhouette itself).
+void MeasureBand(const cv::Mat& gray, int x0, int width, double left, double right, EdgeBand* band,
+                 std::vector<double>* profile) {
+  ColumnProfile(gray, band->rows, x0, width, profile);
+  const double at[2] = {left, right};
+  for (int side = 0; side < 2; ++side) {
+    band->edge_px[side] = band->peak_px[side] = at[side];
+    band->strength[side] = 0;
+    if (band->rows.empty()) continue;
+    const int c = static_cast<int>(std::lround(at[side])) - x0;
+    const ProfileEdge e = FindProfileEdge(*profile, x0, c - 2, c + 2, 0);
+    if (!e.found) continue;
+    band->peak_px[side] = e.x;
+    band->edge_px[side] = FitProfileEdge(*profile, x0, e.x, 2.0, side == 0 ? 1 : -1);
+    if (std::abs(e.strength) >= kTrackable) band->strength[side] = e.strength;
+  }
+}
+
+// Mean of the bands' fitted edges on `side`, weighted by rows and squared step (a faint step
+// places the edge poorly), over the bands that track it (all bands when none does); nan
+// without rows.
+double MeanEdge(const EdgeBand* bands, int side) {
+  double sum = 0, n = 0;
+  for (int pass = 0; pass < 2 && n == 0; ++pass) {
+    for (int b = 0; b < 2; ++b) {
+      if (pass == 0 && bands[b].strength[side] == 0) continue;
+      const double w = bands[b].rows.size() *
+                       (pass == 0 ? bands[b].strength[side] * bands[b].strength[side] : 1);
+      sum += w * bands[b].edge_px[side];
+      n += w;
+    }
+  }
+  return n > 0 ? sum / n : kNaN;
+}
+
+// Rows of the band below the markers down to where the lower part ends: its bottom rim is seen
+// from above, so the end shows first at the limbs. A row ends the band when its grey level near
+// either limb or at the centre steps away from the band's median there.
+std::vector<int> RowsOnTheSurface(const cv::Mat& gray, const std::vector<int>& rows, double xl,
+                                  double xr) {
+  if (rows.empty()) return rows;
+  const int l = static_cast<int>(std::ceil(xl + 0.5)), r = static_cast<int>(std::floor(xr - 0.5));
+  const int c0 = static_cast<int>(std::ceil(xl + 0.33 * (xr - xl)));
+  const int c1 = static_cast<int>(std::floor(xr - 0.33 * (xr - xl)));
+  const int groups[3][2] = {{l, l + 2}, {c0, c1}, {r - 2, r}};
+  std::vector<double> level[3];
+  for (int y : rows) {
+    for (int g = 0; g < 3; ++g) {
+      double sum = 0;
+      for (int x = groups[g][0]; x <= groups[g][1]; ++x) sum += gray.at<uchar>(y, x);
+      level[g].push_back(sum / std::max(1, groups[g][1] - groups[g][0] + 1));
+    }
+  }
+  double median[3];
+  for (int g = 0; g < 3; ++g) {
+    std::vector<double> sorted = level[g];
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    median[g] = sorted[sorted.size() / 2];
+  }
+  std::vector<int> out;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    bool off = false;
+    for (int g = 0; g < 3; ++g) off |= std::abs(level[g][i] - median[g]) > 0.1 * median[g] + 5;
+    if (off) break;
+    out.push_back(rows[i]);
+  }
+  return out;
+}
+
+// An edge no band shows (the limb as bright as the wall behind it), from the other edge and the
+// reference's markers: at zero yaw the lower markers lie symmetrically about the front, where
+// the upper marker is, so theta(left) + theta(right) = 2 theta(upper). Bisection over the hidden
+// edge's column. NaN when no column satisfies it.
+double HiddenEdge(const MarkerCamera& camera, double known, int hidden_side, cv::Point2d left_px,
+                  cv::Point2d right_px, cv::Point2d upper_px) {
+  auto misfit = [&](double other) {
+    const CylinderView c =
+        hidden_side == 1 ? CylinderView(camera, known, other) : CylinderView(camera, other, known);
+    if (!c.valid()) return kNaN;
+    return c.ThetaFromX(left_px.x) + c.ThetaFromX(right_px.x) - 2 * c.ThetaFromX(upper_px.x);
+  };
+  const double n = right_px.x - left_px.x;
+  const double sign = hidden_side == 1 ? 1 : -1;
+  // The hidden edge lies beyond the far marker, at most 3 pair-spacings from the known edge.
+  const double far = hidden_side == 1 ? right_px.x : left_px.x;
+  double a = far + sign, b = known + sign * 3 * n;
+  double fa = misfit(a), fb = misfit(b);
+  if (!(fa * fb < 0)) return kNaN;
+  for (int it = 0; it < 60; ++it) {
+    const double m = 0.5 * (a + b), fm = misfit(m);
+    if (fa * fm <= 0) {
+      b = m, fb = fm;
+    } else {
+      a = m, fa = fm;
+    }
+  }
+  return 0.5 * (a + b);
+}
+
+// Where the reference's markers put things (image pixels).
+struct Layout {
+  double n, mid, y_low, e_px, h, cy, off;
+  int x0, width;  // the columns searched
+};
+
+// The silhouette from every row the straight reference shows it on (between the upper and the
+// lower markers, and below them): a first estimate of both edges.
+bool FirstSilhouette(const cv::Mat& gray, const Layout& g, double upper_y, double* left,
+                     double* right, std::string* message) {
+  EdgeBand first[2];
+  first[0].rows =
+      RowRange(upper_y + 0.7 * g.h + 2, g.y_low - 0.7 * g.h - 0.15 * g.off - 2, gray.rows);
+  first[1].rows =
+      RowRange(g.y_low + 0.7 * g.h + 0.1 * g.off + 2, g.y_low + 1.6 * g.e_px, gray.rows);
+  std::vector<std::vector<double>> profiles(2);
+  for (int b = 0; b < 2; ++b) ColumnProfile(gray, first[b].rows, g.x0, g.width, &profiles[b]);
+  int li = 0, ri = 0;
+  if (first[0].rows.size() + first[1].rows.size() < 4 ||
+      !SymmetricEdges(profiles, g.x0, g.mid, 0.45 * g.n, 1.7 * g.n, &li, &ri)) {
+    *message = "the joint shows too few rows beside its markers to find its silhouette";
+    return false;
+  }
+  for (int b = 0; b < 2; ++b) MeasureBand(gray, g.x0, g.width, li, ri, &first[b], &profiles[b]);
+  *left = MeanEdge(first, 0);
+  *right = MeanEdge(first, 1);
+  const bool faint = first[0].strength[0] == 0 && first[1].strength[0] == 0 &&
+                     first[0].strength[1] == 0 && first[1].strength[1] == 0;
+  if (std::isnan(*left) || std::isnan(*right) || faint) {
+    *message =
+        "the joint's silhouette does not stand out from the background around the lower "
+        "markers";
+    return false;
+  }
+  return true;
+}
+
+// The rows the lower markers can reach (turned, they recede towards the horizon row), and the
+// bands above (below where a bent upper part can reach: 1.15 radii below the pivot) and below
+// them that show only the surface.
+bool ChooseBands(const cv::Mat& gray, const Layout& g, const CylinderView& cyl, double left,
+                 double right, LowerCalibration* cal, std::string* message) {
+  const double d = cyl.distance();
+  const double toward = g.off / d * 1.2 + 2, away = g.off / std::max(1.0, d - 1) * 1.2 + 2;
+  const bool below_horizon = g.y_low >= g.cy;
+  cal->band_top = std::max(
+      0, static_cast<int>(std::floor(g.y_low - 0.5 * g.h - (below_horizon ? toward : away))));
+  cal->band_bottom =
+      std::min(gray.rows - 1,
+               static_cast<int>(std::ceil(g.y_low + 0.5 * g.h + (below_horizon ? away : toward))));
+  const double pivot_y = g.y_low - g.e_px;
+  cal->bands[0].rows = RowRange(pivot_y + 1.15 * cyl.half_width_px(), cal->band_top - 2, gray.rows);
+  cal->bands[1].rows = RowsOnTheSurface(
+      gray, RowRange(cal->band_bottom + 2, g.y_low + 1.6 * g.e_px, gray.rows), left, right);
+  if (cal->bands[0].rows.size() + cal->bands[1].rows.size() < 3) {
+    *message = "the joint shows too few rows beside its markers to find its silhouette";
+    return false;
+  }
+  return true;
+}
+
+// Marker grey over surface grey at the two markers' centres, then the markers measured with it:
+// their zero-yaw angles, angular radius and height.
+bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, int x0,
+                             const std::vector<double>& surface, LowerCalibration* cal,
+                             LowerScan* scan, std::string* message) {
+  LowerScratch scratch;
+  for (int pass = 0; pass < 2; ++pass) {
+    MeasureLowerMarkers(gray, *cal, x0, surface, true, scan, &scratch);
+    if (scan->markers.size() != 2) {
+      *message = "found " + std::to_string(scan->markers.size()) +
+                 " dark patches across the joint at the lower markers' height, expected 2";
+      return false;
+    }
+    if (pass == 1) break;
+    double ratio = 0;
+    for (const LowerMarker& m : scan->markers) {
+      const cv::Point c(static_cast<int>(std::lround(m.centre_px.x)),
+                        static_cast<int>(std::lround(m.centre_px.y)));
+      double sum = 0;
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) sum += gray.at<uchar>(c.y + dy, c.x + dx);
+      }
+      ratio += sum / 9 / std::max(1.0, surface[c.x - x0]);
+    }
+    cal->marker_ratio = std::clamp(0.5 * ratio, 0.0, 0.8);
+  }
+  const LowerMarker& l = scan->markers[0];
+  const LowerMarker& r = scan->markers[1];
+  cal->theta_left0 = l.theta;
+  cal->theta_right0 = r.theta;
+  cal->delta = 0.5 * (l.radius + r.radius);
+  const double f = camera.focal_px, cy = camera.principal_px.y;
+  const CylinderView& c = scan->cylinder;
+  cal->height = 0.5 * ((cy - l.centre_px.y) * c.Depth(l.theta) / f +
+                       (cy - r.centre_px.y) * c.Depth(r.theta) / f);
+  return true;
+}
+
+}  // namespace
+
+bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Point2d left_px,
+                        cv::Point2d right_px, cv::Point2d upper_px, double marker_height_px,
+                        LowerCalibration* cal, LowerScan* scan, std::string* message) {
+  Layout g;
+  g.n = right_px.x - left_px.x;
+  g.mid = 0.5 * (left_px.x + right_px.x);
+  g.y_low = 0.5 * (left_px.y + right_px.y);
+  g.e_px = 0.5 * (g.y_low - upper_px.y);
+  g.h = marker_height_px;
+  g.cy = camera.principal_px.y;
+  g.off = std::abs(g.y_low - g.cy);
+  g.x0 = std::max(0, static_cast<int>(g.mid - 1.8 * g.n) - 4);
+  g.width = std::min(gray.cols, static_cast<int>(g.mid + 1.8 * g.n) + 5) - g.x0;
+  double left = 0, right = 0;
+  if (!FirstSilhouette(gray, g, upper_px.y, &left, &right, message)) return false;
+  const CylinderView cyl(camera, left, right);
+  if (!cyl.valid()) {
+    *message = "the joint's silhouette is too wide for the camera's field of view (--fov)";
+    return false;
+  }
+  if (!ChooseBands(gray, g, cyl, left, right, cal, message)) return false;
+  // Each band's own edges, and the surface's grey level per column from all of them.
+  std::vector<double> surface(g.width, 0.0), profile;
+  double rows = 0;
+  for (EdgeBand& band : cal->bands) {
+    MeasureBand(gray, g.x0, g.width, left, right, &band, &profile);
+    for (int i = 0; i < g.width; ++i) surface[i] += band.rows.size() * profile[i];
+    rows += band.rows.size();
+  }
+  for (double& v : surface) v /= rows;
+  const EdgeBand* bands = cal->bands;
+  if (bands[0].strength[0] == 0 && bands[1].strength[0] == 0 && bands[0].strength[1] == 0 &&
+      bands[1].strength[1] == 0) {
+    *message = "the joint's silhouette does not stand out from the background";
+    return false;
+  }
+  cal->left_edge_px = MeanEdge(bands, 0);
+  cal->right_edge_px = MeanEdge(bands, 1);
+  // A faint edge may be placed on the surface's shading near the limb instead, and bands that
+  // disagree (a silhouette is one column) show an edge caught on something else: such a side
+  // (the weaker, if both) is checked against where the reference's lower markers lie
+  // symmetrically about the upper one, and moved there when more than a pixel off.
+  auto steepest = [&](int side) {
+    return std::max(std::abs(bands[0].strength[side]), std::abs(bands[1].strength[side]));
+  };
+  auto unsure = [&](int side) {
+    const bool both = bands[0].strength[side] != 0 && bands[1].strength[side] != 0;
+    return steepest(side) < kPlain ||
+           (both && std::abs(bands[0].edge_px[side] - bands[1].edge_px[side]) > 1);
+  };
+  int weak = steepest(0) < steepest(1) ? 0 : 1;
+  if (unsure(1 - weak) && !unsure(weak)) weak = 1 - weak;
+  if (unsure(weak)) {
+    const double known = weak == 0 ? cal->right_edge_px : cal->left_edge_px;
+    const double edge = HiddenEdge(camera, known, weak, left_px, right_px, upper_px);
+    double& fitted = weak == 0 ? cal->left_edge_px : cal->right_edge_px;
+    // A faint step that both bands place alike is the limb or the shading inside it, never
+    // beyond: the symmetry moves it only outwards (the markers' centroids shift a little under
+    // side light, which would otherwise narrow a plainly seen joint).
+    const bool agree = !(bands[0].strength[weak] != 0 && bands[1].strength[weak] != 0 &&
+                         std::abs(bands[0].edge_px[weak] - bands[1].edge_px[weak]) > 1);
+    const bool outwards = (weak == 0 ? fitted - edge : edge - fitted) > 0;
+    if (!std::isnan(edge)) {
+      if (steepest(weak) == 0 || (std::abs(edge - fitted) > 1 && (outwards || !agree))) {
+        fitted = edge;
+      }
+    } else if (steepest(weak) == 0) {
+      *message = "the joint's silhouette does not stand out from the background on one side";
+      return false;
+    }
+  }
+  cal->search_px = std::max(3, static_cast<int>(std::lround(0.1 * (right - left))));
+  cal->marker_height_px = g.h;
+  *scan = LowerScan();
+  scan->left_edge_px = cal->left_edge_px;
+  scan->right_edge_px = cal->right_edge_px;
+  scan->cylinder = CylinderView(camera, cal->left_edge_px, cal->right_edge_px);
+  return MeasureReferenceMarkers(gray, camera, g.x0, surface, cal, scan, message);
+}
+
+}  // namespace armmimic::internal

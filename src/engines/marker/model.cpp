@@ -1,0 +1,151 @@
+// The marker joint's cylinder model (docs/marker.md): calibration from the reference, and one
+// view: silhouette and lower markers -> signed yaw; upper marker -> bend.
+#include "marker/model.h"
+
+#include <cmath>
+
+#include "armmimic/core/angle_file.h"
+#include "marker/yaw.h"
+
+namespace armmimic::internal {
+
+bool CalibrateMarkerJoint(const cv::Mat& gray, const MarkerTriple& t, const MarkerOptions& options,
+                          MarkerCalibration* cal, std::string* message) {
+  *cal = MarkerCalibration();
+  cal->camera = MarkerCamera::FromFov(options.fov_deg, gray.size());
+  LowerScan scan;
+  if (!CalibrateLowerPart(gray, cal->camera, t.left.centre, t.right.centre, t.upper.centre,
+                          t.upper.box.height, &cal->lower, &scan, message)) {
+    return false;
+  }
+  const CylinderView& cyl = scan.cylinder;
+  cal->radius_px = cyl.half_width_px();
+  UpperCalibration& u = cal->upper;
+  u.k = DiscCentroidFactor(cal->lower.delta);
+  // The reference is straight: the upper marker's centroid, k times nearer the axis than its
+  // centre, gives its angle; its row and the lower markers' give the pivot's height and e.
+  const double x = cyl.axis_x() + (t.upper.centre.x - cyl.axis_x()) / u.k;
+  u.theta0 = cyl.ThetaFromX(x);
+  const double f = cal->camera.focal_px;
+  const double upper_height =
+      (cal->camera.principal_px.y - t.upper.centre.y) * cyl.Depth(u.theta0) / f;
+  u.pivot_height = 0.5 * (upper_height + cal->lower.height);
+  u.e = 0.5 * (upper_height - cal->lower.height);
+  if (!(u.e > 0.3)) {
+    *message = "the upper marker is not above the lower ones";
+    return false;
+  }
+  u.marker_ratio = cal->lower.marker_ratio;
+  u.marker_height_px = t.upper.box.height;
+  u.face_area_px = t.upper.coverage_px;
+  u.stretch_level = SampleStretch(gray, ProjectPivot(cyl, u), t.upper.centre).level;
+  u.support = UpperSilhouetteSupport(gray, cyl, u, 0, 0);
+  u.darkness = UpperMarkerDarkness(gray, t.upper.centre, u.marker_height_px);
+  return true;
+}
+
+namespace {
+
+// Past this the upper marker cannot be seen (a marker is unreadable past 75 degrees).
+constexpr double kHiddenDeg = 80;
+
+// How far the upper marker is turned from the camera at `yaw` (radians, >= 0).
+double UpperTurn(const MarkerCalibration& cal, double yaw) {
+  return std::abs(std::remainder(cal.upper.theta0 + yaw, 2 * kPi));
+}
+
+// Measures the upper marker for one yaw, when it faces the camera closely enough.
+UpperMeasurement Upper(const cv::Mat& gray, const CylinderView& cyl, const MarkerCalibration& cal,
+                       const MarkerOptions& options, double yaw) {
+  if (UpperTurn(cal, yaw) > RadFromDeg(options.max_upper_turn_deg)) {
+    UpperMeasurement m;
+    m.note = "the upper marker is turned away";
+    return m;
+  }
+  return MeasureUpperMarker(gray, cyl, cal.upper, yaw, options.upper_tolerance);
+}
+
+}  // namespace
+
+MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration& cal,
+                                   const MarkerOptions& options, MarkerViewScratch* s) {
+  MarkerViewResult out;
+  LowerScan& scan = s->scan;
+  if (!ScanLowerPart(gray, cal.lower, cal.camera, &scan, &s->lower)) {
+    out.note = scan.failure;
+    return out;
+  }
+  const CylinderView& cyl = scan.cylinder;
+  out.left_edge_px = scan.left_edge_px;
+  out.right_edge_px = scan.right_edge_px;
+  out.axis_x_px = cyl.axis_x();
+  const std::vector<int>& below = cal.lower.bands[1].rows;
+  out.bottom_row = below.empty() ? cal.lower.band_bottom : below.back();
+  out.pivot_px = ProjectPivot(cyl, cal.upper);
+  const int rows = static_cast<int>(std::lround(cal.lower.marker_height_px));
+  for (const LowerMarker& m : scan.markers) {
+    out.candidates.emplace_back(m.first_col,
+                                static_cast<int>(std::lround(m.centre_px.y)) - rows / 2,
+                                m.last_col - m.first_col + 1, rows);
+  }
+  const YawSolution yaw =
+      SolveYaw(scan, cal.lower, options.agreement_sigmas, RadFromDeg(options.max_marker_turn_deg));
+  if (yaw.hypotheses.empty()) {
+    out.note = yaw.note;
+    return out;
+  }
+  // One marker that could be either side: a side is out when the other lower marker would show
+  // and does not, or when it turns the upper marker away although the other side finds it
+  // plainly. Of two sides left, the one whose upper marker is found plainly (its silhouette as
+  // clear as in the reference) wins if the other finds none.
+  std::size_t pick = 0;
+  UpperMeasurement upper = Upper(gray, cyl, cal, options, yaw.hypotheses[0].yaw);
+  out.candidates.insert(out.candidates.end(), upper.spots.begin(), upper.spots.end());
+  if (yaw.hypotheses.size() == 2) {
+    const UpperMeasurement other = Upper(gray, cyl, cal, options, yaw.hypotheses[1].yaw);
+    out.candidates.insert(out.candidates.end(), other.spots.begin(), other.spots.end());
+    const UpperMeasurement* uppers[2] = {&upper, &other};
+    bool alive[2], plain[2], telling[2];
+    for (int i = 0; i < 2; ++i) {
+      plain[i] = uppers[i]->found && !uppers[i]->ambiguous;
+      // Found with its silhouette as plain as the reference's: the upper part is there.
+      telling[i] = plain[i] && uppers[i]->support >= 0.5 * cal.upper.support;
+    }
+    for (int i = 0; i < 2; ++i) {
+      const bool hidden = UpperTurn(cal, yaw.hypotheses[i].yaw) > RadFromDeg(kHiddenDeg);
+      alive[i] = !yaw.hypotheses[i].other_missing && !(hidden && telling[1 - i]);
+    }
+    if (alive[0] && alive[1]) {  // the side whose upper marker shows plainly, if only one does
+      if (telling[0] && !plain[1]) {
+        alive[1] = false;
+      } else if (telling[1] && !plain[0]) {
+        alive[0] = false;
+      }
+    }
+    if (alive[0] == alive[1]) {
+      out.note = alive[0] ? "one lower marker shows, and it could be either"
+                          : "one lower marker shows, and the rest of the joint contradicts it";
+      return out;
+    }
+    if (alive[1]) pick = 1, upper = other;
+  }
+  const YawHypothesis& h = yaw.hypotheses[pick];
+  out.ok = true;
+  out.yaw = h.yaw;
+  if (h.left) out.left_px = h.left->centre_px;
+  if (h.right) out.right_px = h.right->centre_px;
+  const std::string markers = h.left && h.right ? "both lower markers"
+                              : h.left          ? "the left lower marker"
+                                                : "the right lower marker";
+  if (upper.found && !upper.ambiguous) {
+    out.bend = upper.bend;
+    out.upper_px = upper.centre_px;
+    out.note = "yaw from " + markers + " (+-" + FormatNumber(DegFromRad(h.sigma), 2) +
+               " deg); bend from the upper marker";
+  } else {
+    out.note = "yaw from " + markers + "; no bend: " + upper.note;
+  }
+  return out;
+}
+
+}  // namespace armmimic::internal

@@ -1,0 +1,114 @@
+// The signed yaw from the lower markers (docs/marker.md, "Yaw"). A yaw psi turns every surface
+// point about the axis, so each lower marker's angle is its reference angle plus psi: each one
+// alone gives psi, two give a consistency check and a weighted mean. A single marker could be
+// either one; a side is ruled out when it puts the other marker where the image shows no dark
+// patch although one would show.
+#include "marker/yaw.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "armmimic/core/angle_file.h"
+#include "armmimic/core/angles.h"
+
+namespace armmimic::internal {
+namespace {
+
+double Wrap(double a) {
+  while (a <= -kPi) a += 2 * kPi;
+  while (a > kPi) a -= 2 * kPi;
+  return a;
+}
+
+// Would the marker at `theta` show in the band, and does it? True when it would show at least
+// a pixel wide and the image has well under half of its dark area there.
+bool MissingWhereItWouldShow(const LowerScan& scan, const LowerCalibration& cal, double theta,
+                             const LowerMarker& seen) {
+  const CylinderView& cyl = scan.cylinder;
+  const double lo = std::max(theta - cal.delta, -cyl.limb());
+  const double hi = std::min(theta + cal.delta, cyl.limb());
+  if (hi <= lo) return false;
+  const double x0 = cyl.XFromTheta(lo), x1 = cyl.XFromTheta(hi);
+  const double width = std::abs(x1 - x0);
+  if (width < 0.4) return false;  // too thin to tell
+  // A disc's mean chord is pi/4 of its diameter; the part past the limb shows its middle rows.
+  const double expected = width * 0.75 * cal.marker_height_px;
+  return scan.CoverageBetween(x0 - 1, x1 + 1, &seen) < 0.35 * expected;
+}
+
+}  // namespace
+
+YawSolution SolveYaw(const LowerScan& scan, const LowerCalibration& cal, double agreement_sigmas,
+                     double max_turn) {
+  YawSolution out;
+  const std::vector<LowerMarker>& m = scan.markers;
+  if (m.empty()) {
+    out.note = "no lower marker faces the camera";
+    return out;
+  }
+  // Nearly edge-on markers help, but alone they are too foreshortened to read.
+  const bool any_facing = std::any_of(m.begin(), m.end(), [&](const LowerMarker& k) {
+    return std::abs(scan.cylinder.Facing(k.theta)) <= max_turn;
+  });
+  if (!any_facing) {
+    out.note = "every lower marker is turned more than " + FormatNumber(DegFromRad(max_turn), 0) +
+               " degrees from the camera";
+    return out;
+  }
+  const double spacing0 = cal.theta_right0 - cal.theta_left0;
+  if (m.size() >= 2) {
+    // The pair whose spacing is the reference's: left and right, each giving the yaw.
+    double best = 1e9;
+    YawHypothesis h;
+    bool agree = false;
+    for (std::size_t i = 0; i < m.size(); ++i) {
+      for (std::size_t j = i + 1; j < m.size(); ++j) {
+        const double yl = m[i].theta - cal.theta_left0;
+        const double yr = m[j].theta - cal.theta_right0;
+        const double spread = std::hypot(m[i].sigma, m[j].sigma);
+        const double misfit = std::abs(yl - yr);
+        if (misfit >= best) continue;
+        best = misfit;
+        agree = misfit <= agreement_sigmas * spread + RadFromDeg(1);
+        const double wl = 1 / (m[i].sigma * m[i].sigma), wr = 1 / (m[j].sigma * m[j].sigma);
+        h.yaw = Wrap((wl * yl + wr * yr) / (wl + wr));
+        h.sigma = 1 / std::sqrt(wl + wr);
+        h.left = &m[i];
+        h.right = &m[j];
+      }
+    }
+    if (agree) {
+      out.hypotheses.push_back(h);
+      return out;
+    }
+    // A marker the limb cuts is read from one end only; when it disagrees, the whole one decides
+    // (the pair's order still tells which one it is).
+    if (h.left->cut != h.right->cut) {
+      const LowerMarker& whole = h.left->cut ? *h.right : *h.left;
+      if (std::abs(scan.cylinder.Facing(whole.theta)) <= max_turn) {
+        YawHypothesis one;
+        one.yaw = Wrap(whole.theta - (h.left->cut ? cal.theta_right0 : cal.theta_left0));
+        one.sigma = whole.sigma;
+        (h.left->cut ? one.right : one.left) = &whole;
+        out.hypotheses.push_back(one);
+        return out;
+      }
+    }
+    out.note = "the two lower markers disagree by " + FormatNumber(DegFromRad(best), 1) +
+               " degrees of yaw";
+    return out;
+  }
+  const LowerMarker& seen = m[0];
+  for (int side = 0; side < 2; ++side) {
+    YawHypothesis h;
+    h.yaw = Wrap(seen.theta - (side == 0 ? cal.theta_left0 : cal.theta_right0));
+    h.sigma = seen.sigma;
+    (side == 0 ? h.left : h.right) = &seen;
+    const double other = side == 0 ? seen.theta + spacing0 : seen.theta - spacing0;
+    h.other_missing = MissingWhereItWouldShow(scan, cal, other, seen);
+    out.hypotheses.push_back(h);
+  }
+  return out;
+}
+
+}  // namespace armmimic::internal

@@ -1,0 +1,88 @@
+// The pose-network engine: MoveNet keypoints every frame, one arm's shoulder, elbow and wrist
+// turned into the angle file's directions. Crop tracking as in MoveNet's demo: the first frame
+// (and any frame after the person was lost) runs on the whole image padded to a square, later
+// frames on a square around the previous keypoints; when the arm's scores drop in a crop, the
+// whole image is searched again at once. That body look is followed by a closer look at the
+// upper body (pose_looks.h), which places the joints. A row is lost when a joint's score is low,
+// a segment is much shorter than its usual length (pointing at the camera) or the looks disagree
+// on its direction (pose_gate.h): never `ok` on a guess.
+#include "armmimic/engines/pose.h"
+#include "common/engine_internal.h"
+#include "pose/gate.h"
+#include "pose/looks.h"
+
+namespace armmimic {
+namespace {
+
+class PoseEngine : public Engine {
+ public:
+  explicit PoseEngine(const PoseOptions& options) : o_(options), gate_(options) {}
+
+  EngineKind kind() const override { return EngineKind::kPose; }
+
+  Status Begin(const EngineContext& context) override {
+    if (context.frame_size.width <= 0 || context.frame_size.height <= 0) {
+      return Status::Error("pose: the video has no frame size");
+    }
+    area_ = cv::Rect(cv::Point(0, 0), context.frame_size);
+    if (context.roi) area_ = *context.roi & area_;
+    Status st;
+    net_ = PoseNetwork::Load(context.model_dir, &st);
+    if (!net_) return st;
+    tracking_ = false;
+    return Status::Ok();
+  }
+
+  ArmMeasurement Process(const Frame& frame) override {
+    ArmMeasurement m;
+    m.frame = frame.index;
+    m.time_s = frame.time_s;
+    const cv::Mat image = frame.image(area_);
+    const PoseCrop whole = WholeImageCrop(image.size());
+    const bool cropped =
+        tracking_ && (crop_.x != whole.x || crop_.y != whole.y || crop_.size != whole.size);
+    PoseCrop used = cropped ? crop_ : whole;
+    PoseKeypoints k = net_->Run(image, used);
+    if (o_.side == PoseSide::kAuto) {  // without a first-second choice: the better arm now
+      o_.side = ArmOf(k, PoseSide::kLeft).score >= ArmOf(k, PoseSide::kRight).score
+                    ? PoseSide::kLeft
+                    : PoseSide::kRight;
+      m.estimate = std::string("arm: the person's ") + PoseSideName(o_.side) +
+                   " (the better seen in the first frame)";
+    }
+    if (cropped && ArmOf(k, o_.side).score < o_.min_score) {
+      // The scores dropped inside the crop: search the whole image again.
+      const PoseKeypoints again = net_->Run(image, whole);
+      if (ArmOf(again, o_.side).score > ArmOf(k, o_.side).score) {
+        k = again;
+        used = whole;
+      }
+    }
+    crop_ = NextCrop(k, image.size(), o_.crop_score);
+    tracking_ = crop_.size > 0;
+    internal::PoseLooks looks = internal::TakeLooks(net_.get(), image, k, used, o_.side, o_);
+    looks.Shift(cv::Point2d(area_.tl()));
+    gate_.Decide(looks, o_.side, &m);
+    return m;
+  }
+
+  AngleMeta Describe() const override { return {{"model", "movenet-lightning-v4"}}; }
+
+ private:
+  PoseOptions o_;
+  internal::PoseArmGate gate_;
+  cv::Rect area_;
+  std::unique_ptr<PoseNetwork> net_;
+  bool tracking_ = false;
+  PoseCrop crop_;
+};
+
+}  // namespace
+
+namespace internal {
+std::unique_ptr<Engine> CreatePoseEngine(const PoseOptions& options) {
+  return std::make_unique<PoseEngine>(options);
+}
+}  // namespace internal
+
+}  // namespace armmimic

@@ -1,0 +1,109 @@
+// The arm engines' honest-status gate: weak evidence and impossible jumps are `lost`, and the
+// arm is re-acquired once agreeing frames return.
+#include "common/arm_gate.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+namespace armmimic {
+namespace {
+
+constexpr double kFps = 30;
+
+ArmMeasurement Candidate(int frame, double upper_deg, double fore_deg) {
+  ArmMeasurement m;
+  m.frame = frame;
+  m.time_s = frame / kFps;
+  m.phase = MeasurementPhase::kOk;
+  m.upper_deg = upper_deg;
+  m.fore_deg = fore_deg;
+  return m;
+}
+
+bool Ok(ArmGate* gate, int frame, double upper_deg, double fore_deg, double support = 1) {
+  ArmMeasurement m = Candidate(frame, upper_deg, fore_deg);
+  gate->Review(&m, support);
+  if (m.phase == MeasurementPhase::kLost) {
+    EXPECT_TRUE(std::isnan(m.upper_deg)) << "a lost frame keeps no angle";
+    EXPECT_FALSE(m.note.empty()) << "a lost frame says why";
+  }
+  return m.phase == MeasurementPhase::kOk;
+}
+
+TEST(ArmGate, SmoothMotionUpToTheSpeedLimitStaysOk) {
+  ArmGate gate;  // 600 deg/s: 20 degrees a frame at 30 fps
+  double upper = -90;
+  for (int f = 0; f < 12; ++f, upper += 15) {
+    EXPECT_TRUE(Ok(&gate, f, upper, upper + 0.5 * f)) << "frame " << f;
+  }
+}
+
+TEST(ArmGate, AFlipFasterThanAnArmTurnsIsLost) {
+  ArmGate gate;
+  for (int f = 0; f < 5; ++f) ASSERT_TRUE(Ok(&gate, f, -90 + 2 * f, -90 + 2 * f));
+  EXPECT_FALSE(Ok(&gate, 5, 60, 60)) << "150 degrees in one frame";
+  // The forearm folding 120 degrees in a frame is as impossible as the upper arm flipping.
+  ArmGate bend_gate;
+  ASSERT_TRUE(Ok(&bend_gate, 0, -90, -90));
+  EXPECT_FALSE(Ok(&bend_gate, 1, -90, 30));
+}
+
+TEST(ArmGate, ReacquiresAfterAgreeingFramesNotOnTheFirst) {
+  ArmGateOptions o;
+  o.confirm_frames = 3;
+  ArmGate gate(o);
+  ASSERT_TRUE(Ok(&gate, 0, -90, -90));
+  EXPECT_FALSE(Ok(&gate, 1, 45, 45));  // the jump
+  EXPECT_FALSE(Ok(&gate, 2, 47, 47));  // 2 of 3 agreeing
+  EXPECT_TRUE(Ok(&gate, 3, 49, 49));   // 3 of 3: trusted again
+  EXPECT_TRUE(Ok(&gate, 4, 51, 51));
+}
+
+TEST(ArmGate, DisagreeingCandidatesAreNeverTrusted) {
+  ArmGate gate;
+  ASSERT_TRUE(Ok(&gate, 0, -90, -90));
+  // A candidate that flips back and forth between two readings never forms an agreeing run.
+  for (int f = 1; f < 20; ++f) {
+    EXPECT_FALSE(Ok(&gate, f, f % 2 ? 80 : -40, f % 2 ? 80 : -40)) << "frame " << f;
+  }
+}
+
+TEST(ArmGate, WeakEvidenceIsLostAndStrongEvidenceReturns) {
+  ArmGate gate;
+  ASSERT_TRUE(Ok(&gate, 0, -90, -90));
+  EXPECT_FALSE(Ok(&gate, 1, -88, -88, 0.1));
+  EXPECT_TRUE(Ok(&gate, 2, -86, -86, 0.9));
+  EXPECT_TRUE(Ok(&gate, 3, -84, -84, std::nan("")));  // not rated: the speed rule still applies
+}
+
+TEST(ArmGate, ALongGapAllowsAProportionallyLargerMove) {
+  ArmGate gate;
+  ASSERT_TRUE(Ok(&gate, 0, -90, -90));
+  ArmMeasurement lost;
+  lost.phase = MeasurementPhase::kLost;
+  for (int f = 1; f < 10; ++f) gate.Review(&lost, std::nan(""));
+  // 10 frames at 30 fps: up to 200 degrees of turn are reachable.
+  EXPECT_TRUE(Ok(&gate, 10, 60, 60));
+}
+
+TEST(ArmGate, AnUncalibratedStartNeedsAgreeingFrames) {
+  ArmGateOptions o;
+  o.start_confirmed = false;
+  o.confirm_frames = 2;
+  ArmGate gate(o);
+  EXPECT_FALSE(Ok(&gate, 0, -90, -90));
+  EXPECT_TRUE(Ok(&gate, 1, -89, -89));
+}
+
+TEST(ArmGate, StillImagesWithoutTimeHaveNoSpeedToCheck) {
+  ArmGate gate;
+  ArmMeasurement a = Candidate(0, -90, -90), b = Candidate(1, 60, 60);
+  a.time_s = b.time_s = 0;
+  gate.Review(&a, 1);
+  gate.Review(&b, 1);
+  EXPECT_EQ(b.phase, MeasurementPhase::kOk) << b.note;
+}
+
+}  // namespace
+}  // namespace armmimic
