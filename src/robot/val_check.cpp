@@ -105,6 +105,85 @@ Status CheckTarget(const JointArray& target, double time_s, SafetyState& s) {
   return Status::Ok();
 }
 
+// MOVE #PPOINT(j1,...,j6): six numbers, a target inside the limits, reached within the speed
+// limits from the last checked position (CheckTarget).
+Status CheckMove(const std::string& cmd, const std::string& rest, double time_s,
+                 SafetyState& state) {
+  const std::string u = Upper(rest);
+  if (u.rfind("#PPOINT", 0) != 0) {
+    return Status::Error(cmd + "only moves to #PPOINT(j1,...,j6) can be checked");
+  }
+  std::string args = Trim(rest.substr(7));
+  if (args.size() < 2 || args.front() != '(' || args.back() != ')') {
+    return Status::Error(cmd + "expected #PPOINT(j1,j2,j3,j4,j5,j6)");
+  }
+  std::vector<double> v;
+  if (!ParseList(args.substr(1, args.size() - 2), &v) || v.size() != kJoints) {
+    return Status::Error(cmd + "#PPOINT needs six numbers");
+  }
+  JointArray target{};
+  std::copy(v.begin(), v.end(), target.begin());
+  const Status s = CheckTarget(target, time_s, state);
+  return s.ok() ? s : Status::Error(cmd + s.message());
+}
+
+// DRIVE joint,change,speed: from a known position, inside the joint's limit and speed limit.
+Status CheckDrive(const std::string& cmd, const std::string& rest, SafetyState& state) {
+  std::vector<double> v;
+  if (!ParseList(rest, &v) || v.size() != 3) {
+    return Status::Error(cmd + "expected DRIVE joint,change,speed");
+  }
+  // Range first: converting a double outside int's range is undefined.
+  if (!(v[0] >= 1 && v[0] <= kJoints) || v[0] != std::floor(v[0])) {
+    return Status::Error(cmd + "joint must be 1..6");
+  }
+  const int joint = static_cast<int>(v[0]);
+  if (!(v[2] > 0 && v[2] <= 100)) return Status::Error(cmd + "speed must be in (0,100]");
+  if (!state.have_position) {
+    return Status::Error(cmd + "DRIVE needs a known joint position (send a checked MOVE first)");
+  }
+  if (std::isnan(state.monitor_speed_pct)) {
+    return Status::Error(cmd + "motion before any SPEED line: the controller's speed is unknown");
+  }
+  const int j = joint - 1;
+  const double target = state.last_deg[j] + v[1];
+  if (!state.limits.Inside(j, target)) {
+    return Status::Error(cmd + "J" + std::to_string(joint) + " would reach " + Num(target) +
+                         ", outside the limit " + DescribeLimit(state.limits, j));
+  }
+  const double joint_speed =
+      state.monitor_speed_pct / 100.0 * v[2] / 100.0 * state.joint_speed_at_100_deg_s[j];
+  if (joint_speed > state.limits.max_speed_deg_s[j] * (1 + 1e-9)) {
+    return Status::Error(cmd + "J" + std::to_string(joint) + " would move at " + Num(joint_speed) +
+                         " deg/s, over its limit of " + Num(state.limits.max_speed_deg_s[j]) +
+                         " deg/s");
+  }
+  state.last_deg[j] = target;
+  state.last_time_s = kNaN;  // a DRIVE takes its own time
+  return Status::Ok();
+}
+
+// SPEED pct: the monitor speed, or the program speed inside EDIT ... E or after DO; either way
+// no joint may then move faster than its limit.
+Status CheckSpeed(const std::string& cmd, const std::string& rest, bool via_do,
+                  SafetyState& state) {
+  double pct = 0;
+  if (!ParseDouble(rest, &pct) || !(pct > 0)) {
+    return Status::Error(cmd + "expected SPEED followed by one number > 0");
+  }
+  const bool program_speed = via_do || state.in_editor;
+  const double monitor = program_speed ? state.monitor_speed_pct : pct;
+  const double prog = program_speed ? pct : state.program_speed_pct;
+  const Status s = CheckSpeedSetting(monitor, prog, state);
+  if (!s.ok()) return Status::Error(cmd + s.message());
+  if (program_speed) {
+    state.program_speed_pct = pct;
+  } else {
+    state.monitor_speed_pct = pct;
+  }
+  return Status::Ok();
+}
+
 }  // namespace
 
 SafetyState SafetyState::For(const JointLimits& limits, const ControllerProfile& profile) {
@@ -147,77 +226,12 @@ Status CheckLine(const std::string& raw_line, double time_s, SafetyState& state)
   }
   const std::string cmd = "'" + line + "': ";
   switch (kw) {
-    case Keyword::kMove: {
-      const std::string u = Upper(rest);
-      if (u.rfind("#PPOINT", 0) != 0) {
-        return Status::Error(cmd + "only moves to #PPOINT(j1,...,j6) can be checked");
-      }
-      std::string args = Trim(rest.substr(7));
-      if (args.size() < 2 || args.front() != '(' || args.back() != ')') {
-        return Status::Error(cmd + "expected #PPOINT(j1,j2,j3,j4,j5,j6)");
-      }
-      std::vector<double> v;
-      if (!ParseList(args.substr(1, args.size() - 2), &v) || v.size() != kJoints) {
-        return Status::Error(cmd + "#PPOINT needs six numbers");
-      }
-      JointArray target{};
-      std::copy(v.begin(), v.end(), target.begin());
-      const Status s = CheckTarget(target, time_s, state);
-      return s.ok() ? s : Status::Error(cmd + s.message());
-    }
-    case Keyword::kDrive: {
-      std::vector<double> v;
-      if (!ParseList(rest, &v) || v.size() != 3) {
-        return Status::Error(cmd + "expected DRIVE joint,change,speed");
-      }
-      // Range first: converting a double outside int's range is undefined.
-      if (!(v[0] >= 1 && v[0] <= kJoints) || v[0] != std::floor(v[0])) {
-        return Status::Error(cmd + "joint must be 1..6");
-      }
-      const int joint = static_cast<int>(v[0]);
-      if (!(v[2] > 0 && v[2] <= 100)) return Status::Error(cmd + "speed must be in (0,100]");
-      if (!state.have_position) {
-        return Status::Error(cmd +
-                             "DRIVE needs a known joint position (send a checked MOVE first)");
-      }
-      if (std::isnan(state.monitor_speed_pct)) {
-        return Status::Error(cmd +
-                             "motion before any SPEED line: the controller's speed is unknown");
-      }
-      const int j = joint - 1;
-      const double target = state.last_deg[j] + v[1];
-      if (!state.limits.Inside(j, target)) {
-        return Status::Error(cmd + "J" + std::to_string(joint) + " would reach " + Num(target) +
-                             ", outside the limit " + DescribeLimit(state.limits, j));
-      }
-      const double joint_speed =
-          state.monitor_speed_pct / 100.0 * v[2] / 100.0 * state.joint_speed_at_100_deg_s[j];
-      if (joint_speed > state.limits.max_speed_deg_s[j] * (1 + 1e-9)) {
-        return Status::Error(cmd + "J" + std::to_string(joint) + " would move at " +
-                             Num(joint_speed) + " deg/s, over its limit of " +
-                             Num(state.limits.max_speed_deg_s[j]) + " deg/s");
-      }
-      state.last_deg[j] = target;
-      state.last_time_s = kNaN;  // a DRIVE takes its own time
-      return Status::Ok();
-    }
-    case Keyword::kSpeed: {
-      double pct = 0;
-      if (!ParseDouble(rest, &pct) || !(pct > 0)) {
-        return Status::Error(cmd + "expected SPEED followed by one number > 0");
-      }
-      const bool program_speed = via_do || state.in_editor;
-      const double monitor = program_speed ? state.monitor_speed_pct : pct;
-      const double prog = program_speed ? pct : state.program_speed_pct;
-      const Status s = CheckSpeedSetting(monitor, prog, state);
-      if (!s.ok()) return Status::Error(cmd + s.message());
-      if (program_speed) {
-        state.program_speed_pct = pct;
-      } else {
-        state.monitor_speed_pct = pct;
-      }
-      return Status::Ok();
-    }
+    case Keyword::kMove:
+      return CheckMove(cmd, rest, time_s, state);
+    case Keyword::kDrive:
+      return CheckDrive(cmd, rest, state);
+    case Keyword::kSpeed:
+      return CheckSpeed(cmd, rest, via_do, state);
     case Keyword::kEdit:
       if (state.in_editor) return Status::Error(cmd + "EDIT while already editing");
       if (!ValidName(rest)) return Status::Error(cmd + "expected EDIT followed by a program name");

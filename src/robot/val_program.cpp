@@ -101,6 +101,35 @@ double RoundTo(double v, int decimals) {
   return std::round(v * scale) / scale;
 }
 
+// The limits a program's header records (limits_min_deg, limits_max_deg, speed_limit_deg_s):
+// all three or none, six numbers each, and limits that pass their own check.
+Status ReadHeaderLimits(const std::string& source_name, ValProgram* p) {
+  const auto min_it = p->header.find("limits_min_deg");
+  const auto max_it = p->header.find("limits_max_deg");
+  const auto speed_it = p->header.find("speed_limit_deg_s");
+  const int present =
+      (min_it != p->header.end()) + (max_it != p->header.end()) + (speed_it != p->header.end());
+  if (present > 0) {
+    std::vector<double> mins, maxs, speeds;
+    if (present != 3 || !ParseList(min_it->second, &mins) || !ParseList(max_it->second, &maxs) ||
+        !ParseList(speed_it->second, &speeds) || mins.size() != kJoints || maxs.size() != kJoints ||
+        speeds.size() != kJoints) {
+      return Status::Error(source_name +
+                           ": header limits need limits_min_deg, limits_max_deg and "
+                           "speed_limit_deg_s, six comma-separated numbers each");
+    }
+    JointLimits lim;
+    std::copy(mins.begin(), mins.end(), lim.min_deg.begin());
+    std::copy(maxs.begin(), maxs.end(), lim.max_deg.begin());
+    std::copy(speeds.begin(), speeds.end(), lim.max_speed_deg_s.begin());
+    const Status check = lim.Check();
+    if (!check.ok()) return Status::Error(source_name + ": header limits: " + check.message());
+    p->header_limits = lim;
+    p->has_header_limits = true;
+  }
+  return Status::Ok();
+}
+
 }  // namespace
 
 std::string FormatJointDeg(double deg, int decimals) { return FormatNumber(deg, decimals); }
@@ -176,29 +205,8 @@ Status ParseValProgram(std::istream& in, const std::string& source_name, int max
                          ": timing comment not followed by a command line");
   }
   if (p.lines.empty()) return Status::Error(source_name + ": no command lines to send");
-  const auto min_it = p.header.find("limits_min_deg");
-  const auto max_it = p.header.find("limits_max_deg");
-  const auto speed_it = p.header.find("speed_limit_deg_s");
-  const int present =
-      (min_it != p.header.end()) + (max_it != p.header.end()) + (speed_it != p.header.end());
-  if (present > 0) {
-    std::vector<double> mins, maxs, speeds;
-    if (present != 3 || !ParseList(min_it->second, &mins) || !ParseList(max_it->second, &maxs) ||
-        !ParseList(speed_it->second, &speeds) || mins.size() != kJoints || maxs.size() != kJoints ||
-        speeds.size() != kJoints) {
-      return Status::Error(source_name +
-                           ": header limits need limits_min_deg, limits_max_deg and "
-                           "speed_limit_deg_s, six comma-separated numbers each");
-    }
-    JointLimits lim;
-    std::copy(mins.begin(), mins.end(), lim.min_deg.begin());
-    std::copy(maxs.begin(), maxs.end(), lim.max_deg.begin());
-    std::copy(speeds.begin(), speeds.end(), lim.max_speed_deg_s.begin());
-    const Status check = lim.Check();
-    if (!check.ok()) return Status::Error(source_name + ": header limits: " + check.message());
-    p.header_limits = lim;
-    p.has_header_limits = true;
-  }
+  const Status limits = ReadHeaderLimits(source_name, &p);
+  if (!limits.ok()) return limits;
   *out = std::move(p);
   return Status::Ok();
 }
