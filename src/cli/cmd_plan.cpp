@@ -1,4 +1,6 @@
 // armmimic-cli plan ANGLES.tsv -o PROGRAM.val: angle series -> PUMA joint keyframes -> VAL text.
+// Length: RunPlan is the subcommand's flag table, its checks and the run, read top to bottom in
+// --help order.
 #include <cmath>
 #include <iostream>
 

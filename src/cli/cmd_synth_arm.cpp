@@ -1,4 +1,5 @@
 // armmimic-cli synth arm OUTDIR: an arm scene (thesis protocol) with its ground truth.
+// Length: RunSynthArm is the subcommand's flag table and its checks, one list in --help order.
 #include <iostream>
 
 #include "args.h"

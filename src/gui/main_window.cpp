@@ -1,3 +1,5 @@
+// The main window: docks, menus and the wiring between the panels; each task is its own widget.
+// Length: wireActions connects every menu action to its handler in one list.
 #include "main_window.h"
 
 #include <cmath>

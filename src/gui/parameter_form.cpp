@@ -1,3 +1,7 @@
+// An engine's parameter form, built from its option table: one editor per row, basic and
+// advanced groups, defaults and saved settings.
+// Length: the constructor builds one editor per table row in one loop whose cases share the
+// layouts.
 #include "parameter_form.h"
 
 #include <QCheckBox>

@@ -2,6 +2,8 @@
 // controller's joints) and the link box (ports, simulator, connect, buttons). The plan box is
 // in robot_panel_plan.cpp, sending in robot_panel_send.cpp, saved settings in
 // robot_panel_settings.cpp.
+// Length: the constructor wires the preview, the animation, the simulator poll and the link's
+// signals in one place.
 #include "robot_panel.h"
 
 #include <memory>

@@ -1,3 +1,6 @@
+// The line protocol with the controller as a transport-free state machine: lines out, echoes,
+// prompts, error replies and time-outs in, fed bytes and time.
+// Length: one state machine whose handlers share the state of the line in flight.
 #include "armmimic/robot/link_protocol.h"
 #include "armmimic/core/text.h"
 

@@ -1,5 +1,6 @@
 // The arm scene renderer: a textured room, a person facing the camera, one arm moving.
 // Everything is drawn for an arm on the right of the image; the left side is the mirror image.
+// Length: one renderer whose drawing steps share the person's layout and the room.
 #include "armmimic/synth/arm_scene.h"
 
 #include <algorithm>

@@ -1,6 +1,8 @@
 // Marker-joint scenes: scene conditions (background, lighting, clutter) drawn from the seed, views
 // with known poses, truth rows and the folder writer. The joint itself is ray cast in
 // marker_render.cpp.
+// Length: the renderer's constructor draws the scene's conditions from one seeded generator in a
+// fixed order.
 #include "armmimic/synth/marker_scene.h"
 
 #include <algorithm>

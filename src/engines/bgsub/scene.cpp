@@ -1,3 +1,7 @@
+// The bgsub scene: the shoulder and arm length from the calibration images, and the arm's mask
+// in each frame (two-step differencing, components, the arm's pick).
+// Length: FindArmMask is the thesis' differencing pipeline, its stages sharing the search box and
+// buffers.
 #include "bgsub/scene.h"
 
 #include <algorithm>

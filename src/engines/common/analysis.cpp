@@ -1,5 +1,7 @@
 // The analysis pipeline behind `armmimic-cli analyze` and the GUI's Analyze task: engine
 // agnostic, streaming (one frame in memory at a time).
+// Length: the pipeline's run is one loop from open to commit; Run's checks, engine start and frame
+// loop share its state.
 #include "armmimic/engines/analysis.h"
 
 #include <chrono>
