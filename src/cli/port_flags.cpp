@@ -1,5 +1,7 @@
 #include "port_flags.h"
 
+#include "armmimic/serial/port_table.h"
+
 namespace armmimic::cli {
 
 void AddPortFlags(ArgParser& p, serial::PortSettings* port) {
@@ -12,12 +14,7 @@ void AddPortFlags(ArgParser& p, serial::PortSettings* port) {
   p.Int("--stop-bits", &port->stop_bits, "N", "stop bits 1 or 2 (default 1)", 1, 2);
   p.Custom("--flow", "MODE", "flow control: none, xonxoff or rtscts (default none)",
            [port](const std::string& v) { return serial::ParseFlowControl(v, &port->flow); });
-  for (const char* member : {"port", "baud", "data_bits", "parity", "stop_bits", "flow"}) {
-    std::string flag = std::string("--") + member;
-    if (flag == "--data_bits") flag = "--data-bits";
-    if (flag == "--stop_bits") flag = "--stop-bits";
-    p.BindKey(std::string("port.") + member, flag);
-  }
+  for (const auto& f : serial::PortOptionFields()) p.BindKey("port." + f.key, f.flag);
 }
 
 }  // namespace armmimic::cli

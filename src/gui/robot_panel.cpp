@@ -23,6 +23,7 @@
 #include "controller_settings.h"
 #include "recent_files.h"
 #include "robot_link.h"
+#include "robot_option_keys.h"
 #include "robot_preview.h"
 #include "sim_controller.h"
 #include "ui_robot_panel.h"
@@ -144,6 +145,7 @@ void RobotPanel::wirePlanBox() {
   clamp_ = u.clamp;
   limits_ = u.limitsTable;
   report_ = u.planReport;
+  BindRobotOptionKeys(this);
   for (int j = 0; j < robot::kJoints; ++j) {
     for (int c = 0; c < 3; ++c) limits_->setItem(j, c, new QTableWidgetItem);
   }
