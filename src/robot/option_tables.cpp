@@ -62,12 +62,12 @@ Row<M> Map(const char* key, const char* def, const char* flag, const char* label
 const std::vector<OptionField<PlannerOptions>>& PlannerOptionFields() {
   static const std::vector<OptionField<P>> fields = {
       Real<P>("cutoff_hz", &P::cutoff_hz, 3.0, 0, kNoMax, 2, "Cutoff",
-              "low-pass cutoff; 0 = no filter")
+              "zero-phase low-pass cutoff; 0 = no filter")
           .Unit("Hz")
           .Flag("--cutoff")
           .Main(),
       Real<P>("max_gap_s", &P::max_gap_s, 0.5, 0, kNoMax, 2, "Max gap",
-              "longest run of lost frames filled in (live: after it the filter restarts)")
+              "longest run of lost frames filled in; longer refuses")
           .Unit("s")
           .Flag("--max-gap-s"),
       Enum<P>("gap", &P::gap, GapMode::kInterpolate, {"hold", "interpolate"}, "Gap filling",
@@ -79,17 +79,17 @@ const std::vector<OptionField<PlannerOptions>>& PlannerOptionFields() {
           .Unit("deg/s")
           .Flag("--max-jump"),
       Real<P>("deadband_deg", &P::deadband_deg, 2.0, 0, kNoMax, 2, "Deadband",
-              "a new keyframe (live: command) when a joint moved more than this")
+              "a new keyframe when a joint moved more than this")
           .Unit("deg")
           .Flag("--deadband")
           .Main(),
       Real<P>("min_interval_s", &P::min_interval_s, 0.2, 0, kNoMax, 2, "Min interval",
-              "no two motion keyframes (live: commands) closer than this")
+              "no two motion keyframes closer than this; 0.2 s: at most 5 moves/s")
           .Unit("s")
           .Flag("--min-interval")
           .Below("max_interval_s"),
       Real<P>("max_interval_s", &P::max_interval_s, 1.0, 0, kNoMax, 2, "Max interval",
-              "a keyframe (live: command) at least this often")
+              "a keyframe at least this often")
           .AboveMin()
           .Unit("s")
           .Flag("--max-interval"),
