@@ -25,22 +25,21 @@ const std::vector<OptionField<PortSettings>>& PortOptionFields() {
             o->port = text;
             return std::string();
           },
-          "Port", "the serial device, e.g. /dev/ttyUSB0")
+          "Port", "serial port, e.g. /dev/ttyUSB0; a bare name is tried as ./NAME, then /dev/NAME")
           .Flag("--port")
           .Main(),
-      Int<S>("baud", &S::baud, 9600, 1, 4000000, "Baud rate", "the line's speed, bits per second")
-          .Flag("--baud")
-          .Main(),
-      Int<S>("data_bits", &S::data_bits, 8, 5, 8, "Data bits", "bits per character")
+      Int<S>("baud", &S::baud, 9600, 1, 4000000, "Baud rate", "baud rate").Flag("--baud").Main(),
+      Int<S>("data_bits", &S::data_bits, 8, 5, 8, "Data bits", "data bits 5..8")
           .Flag("--data-bits"),
       Text<S>(
           "parity", "none", [](const S& o) { return ParityName(o.parity); },
           [](const std::string& text, S* o) { return ParseParity(text, &o->parity); }, "Parity",
           "none, even or odd")
           .Flag("--parity"),
-      Int<S>("stop_bits", &S::stop_bits, 1, 1, 2, "Stop bits", "1 or 2").Flag("--stop-bits"),
+      Int<S>("stop_bits", &S::stop_bits, 1, 1, 2, "Stop bits", "stop bits 1 or 2")
+          .Flag("--stop-bits"),
       Enum<S>("flow", &S::flow, FlowControl::kNone, {"none", "xonxoff", "rtscts"}, "Flow control",
-              "none, software (XON/XOFF) or hardware (RTS/CTS)")
+              "flow control: none, xonxoff or rtscts")
           .Flag("--flow"),
   };
   return fields;
