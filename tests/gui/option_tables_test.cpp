@@ -2,6 +2,7 @@
 // registered, with help; the engines' keys are listed for --param), the GUI (a field named by
 // the key) and the file header a run writes (the key is recorded and reads back the same).
 #include <QApplication>
+#include <QSettings>
 #include <QTest>
 #include <set>
 #include <sstream>
@@ -252,6 +253,50 @@ TEST_F(OptionTablesTest, RobotTablesAgreeWithTheCliTheRobotPanelAndTheProgramHea
   expected.limits.max_deg[1] = 10;
   expected.limits.max_speed_deg_s = {40, 41, 42, 80, 81, 82};
   EXPECT_EQ(robot::DescribePlannerSettings(back), robot::DescribePlannerSettings(expected));
+}
+
+TEST_F(OptionTablesTest, TheRobotPanelSavesItsFieldsUnderTheirTableKeys) {
+  TempDir dir;
+  const QString ini = QString::fromStdString(dir.file("settings.ini"));
+  robot::PlannerOptions edited;
+  edited.cutoff_hz = 2.25;
+  edited.deadband_deg = 1.5;
+  edited.min_interval_s = 0.4;
+  edited.max_interval_s = 1.0;
+  edited.max_gap_s = 0.75;
+  edited.clamp = true;
+  edited.mapping.mirror = true;
+  edited.mapping.j2 = {-1, -12.5};
+  edited.limits.min_deg[1] = -150;
+  edited.limits.max_speed_deg_s[5] = 60;
+  std::string saved;
+  {
+    gui::MainWindow w;
+    w.robotPanel()->setPlannerOptions(edited);
+    saved = robot::DescribePlannerSettings(w.robotPanel()->plannerOptions());
+    QSettings s(ini, QSettings::IniFormat);
+    w.robotPanel()->save(s);
+    s.beginGroup("robot");
+    int keys = 0;
+    auto expect_keys = [&](const auto& fields, const std::string& table) {
+      for (const auto& f : fields) {
+        const std::string key = table + "." + f.key;
+        if (!gui::RobotOptionField(&w, QString::fromStdString(key))) continue;
+        EXPECT_TRUE(s.contains(QString::fromStdString(key))) << key << " not saved";
+        ++keys;
+      }
+    };
+    expect_keys(robot::PlannerOptionFields(), "planner");
+    expect_keys(robot::MappingOptionFields(), "mapping");
+    expect_keys(robot::LimitsOptionFields(), "limits");
+    EXPECT_EQ(keys, 12);  // every plan field of the panel (NotInThePanel lists the others)
+    EXPECT_FALSE(s.contains("cutoff"));  // no second name for a setting
+  }
+  gui::MainWindow w;
+  QSettings s(ini, QSettings::IniFormat);
+  w.robotPanel()->load(s);
+  EXPECT_EQ(robot::DescribePlannerSettings(w.robotPanel()->plannerOptions()), saved);
+  EXPECT_NE(saved, robot::DescribePlannerSettings(robot::PlannerOptions()));
 }
 
 }  // namespace
