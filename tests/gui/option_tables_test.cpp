@@ -4,6 +4,7 @@
 #include <QApplication>
 #include <QSettings>
 #include <QTest>
+#include <QVariantList>
 #include <set>
 #include <sstream>
 
@@ -297,6 +298,31 @@ TEST_F(OptionTablesTest, TheRobotPanelSavesItsFieldsUnderTheirTableKeys) {
   w.robotPanel()->load(s);
   EXPECT_EQ(robot::DescribePlannerSettings(w.robotPanel()->plannerOptions()), saved);
   EXPECT_NE(saved, robot::DescribePlannerSettings(robot::PlannerOptions()));
+}
+
+TEST_F(OptionTablesTest, SettingsSavedUnderTheOldNamesStillLoad) {
+  TempDir dir;
+  const QString ini = QString::fromStdString(dir.file("old.ini"));
+  {
+    QSettings s(ini, QSettings::IniFormat);
+    s.beginGroup("robot");
+    s.setValue("cutoff", 1.75);
+    s.setValue("clamp", true);
+    s.setValue("j2/offset", -7.5);
+    s.setValue("limitsMin", QVariantList{-150, -190, -225, -266, -100, -266});
+    s.setValue("limitsMax", QVariantList{150, 10, 45, 266, 100, 266});
+    s.setValue("speedLimits", QVariantList{40, 40, 40, 80, 80, 80});
+  }
+  gui::MainWindow w;
+  QSettings s(ini, QSettings::IniFormat);
+  w.robotPanel()->load(s);
+  const robot::PlannerOptions o = w.robotPanel()->plannerOptions();
+  EXPECT_EQ(o.cutoff_hz, 1.75);
+  EXPECT_TRUE(o.clamp);
+  EXPECT_EQ(o.mapping.j2.offset_deg, -7.5);
+  EXPECT_EQ(o.limits.min_deg[0], -150);
+  EXPECT_EQ(o.limits.max_deg[1], 10);
+  EXPECT_EQ(o.limits.max_speed_deg_s[3], 80);
 }
 
 }  // namespace
