@@ -148,7 +148,7 @@ const std::vector<OptionField<JointLimits>>& LimitsOptionFields() {
           [](const std::string& text, L* o) {
             return ParseNumbers(text, kJoints, o->min_deg.data());
           },
-          "Lower limits", "each joint's lowest position, J1..J6 (--limits J<n>=MIN:MAX)")
+          "Lower limits", "each joint's lowest position, J1..J6")
           .Unit("deg")
           .Flag("--limits")
           .Main(),
@@ -158,7 +158,7 @@ const std::vector<OptionField<JointLimits>>& LimitsOptionFields() {
           [](const std::string& text, L* o) {
             return ParseNumbers(text, kJoints, o->max_deg.data());
           },
-          "Upper limits", "each joint's highest position, J1..J6 (--limits J<n>=MIN:MAX)")
+          "Upper limits", "each joint's highest position, J1..J6")
           .Unit("deg")
           .Flag("--limits")
           .Main(),
