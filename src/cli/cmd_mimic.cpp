@@ -115,7 +115,7 @@ std::optional<int> PickInput(const ArgParser& p, const std::vector<std::string>&
 // Parses and checks every flag into `m`. Returns the exit code when the command must end now.
 std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* m) {
   live::MimicOptions& o = m->o;
-  AnalysisFlags analysis_flags(&o.analysis);
+  AnalysisFlags analysis_flags;
   PlannerFlags planner_flags(&o.stream.planner, true);
   std::vector<std::string> videos;
   std::string camera, stream_url, profile_path;
@@ -136,10 +136,10 @@ std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* 
   planner_flags.RegisterLimits(p);
   p.Double("--stale-after", &o.stream.stale_after_s, "S",
            "hold the robot when no frame was measured for this long (default 0.2)");
+  PlannerFlags::BindKeys(p);
   if (auto code = p.Parse(args)) return code;
   if (auto code = PickInput(p, videos, camera, stream_url, realtime, &o.analysis)) return code;
-  if (auto code = analysis_flags.CheckEngine(p)) return code;
-  if (auto code = analysis_flags.Finish(p)) return code;
+  if (auto code = analysis_flags.Finish(p, &o.analysis)) return code;
   if (!m->dry_run && m->port.port.empty()) {
     return p.UsageError("--port is required (or --dry-run; 'send --list-ports' lists the ports)");
   }

@@ -64,6 +64,7 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   p.String("--mode", &mode, "stream|program",
            "stream DO MOVE lines, or upload a program and EXECUTE it (default: the profile's)");
   p.String("--program-name", &program_name, "NAME", "program name in program mode");
+  PlannerFlags::BindKeys(p);
   if (auto code = p.Parse(args)) return *code;
 
   if (output.empty()) return p.UsageError("-o/--output: the VAL program to write is required");

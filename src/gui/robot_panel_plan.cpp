@@ -16,6 +16,7 @@
 #include "arm_view_3d.h"
 #include "armmimic/core/atomic_file.h"
 #include "recent_files.h"
+#include "robot_option_keys.h"
 #include "robot_panel.h"
 #include "robot_preview.h"
 #include "ui_robot_panel.h"
@@ -43,6 +44,7 @@ void RobotPanel::wirePlanBox() {
   clamp_ = u.clamp;
   limits_ = u.limitsTable;
   report_ = u.planReport;
+  BindRobotOptionKeys(this);
   for (int j = 0; j < robot::kJoints; ++j) {
     for (int c = 0; c < 3; ++c) limits_->setItem(j, c, new QTableWidgetItem);
   }

@@ -7,6 +7,7 @@
 
 #include "armmimic/core/angles.h"
 #include "armmimic/core/text.h"
+#include "armmimic/robot/option_tables.h"
 
 namespace armmimic::robot {
 namespace {
@@ -22,24 +23,8 @@ Status PlannerOptions::Check() const {
   if (!s.ok()) return s;
   s = limits.Check();
   if (!s.ok()) return s;
-  if (!(cutoff_hz >= 0) || !std::isfinite(cutoff_hz))
-    return Status::Error("cutoff must be >= 0 Hz");
-  if (!(max_gap_s >= 0) || !std::isfinite(max_gap_s))
-    return Status::Error("max gap must be >= 0 s");
-  if (!(max_jump_deg_s > 0)) return Status::Error("max jump speed must be > 0 deg/s");
-  if (!(deadband_deg >= 0) || !std::isfinite(deadband_deg)) {
-    return Status::Error("deadband must be >= 0 deg");
-  }
-  if (!(min_interval_s >= 0) || !std::isfinite(min_interval_s)) {
-    return Status::Error("min interval must be >= 0 s");
-  }
-  if (!(max_interval_s > 0) || !std::isfinite(max_interval_s) || max_interval_s < min_interval_s) {
-    return Status::Error("max interval must be > 0 s and not below the min interval");
-  }
-  if (!(fallback_fps > 0) || !std::isfinite(fallback_fps)) {
-    return Status::Error("fallback fps must be > 0");
-  }
-  return Status::Ok();
+  // Every range and the relation min interval <= max interval, from the planner's table.
+  return CheckOptionFields(PlannerOptionFields(), "planner", *this);
 }
 
 std::vector<int> SelectKeyframes(const std::vector<double>& times_s,
@@ -155,6 +140,7 @@ std::vector<std::string> DescribePlan(const std::string& source, const AngleFile
           Num(report.stretch_s, 3) + " filled_rows=" + std::to_string(report.filled_rows) +
           " flagged_jumps=" + std::to_string(report.flagged_jumps) +
           " clamped_rows=" + std::to_string(report.clamped_rows),
+      DescribePlannerSettings(o),
   };
 }
 
