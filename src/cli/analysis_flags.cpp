@@ -1,5 +1,5 @@
-// The analysis flags of analyze and mimic (analysis_flags.h). Register is one call per flag and
-// runs past 80 lines: a flat list in --help order reads better than one split into groups.
+// The analysis flags of analyze and mimic (analysis_flags.h).
+// Length: Register is one call per flag, a flat list in --help order.
 #include "analysis_flags.h"
 
 #include <initializer_list>

@@ -1,6 +1,8 @@
 // Every option table against the three places a setting shows: the command line (its flag is
 // registered, with help; the engines' keys are listed for --param), the GUI (a field named by
 // the key) and the file header a run writes (the key is recorded and reads back the same).
+// Length: the robot tables' test walks the plan, mimic and send help and the VAL header in one
+// body, since the three share the planned program it reads back.
 #include <QApplication>
 #include <QSettings>
 #include <QTest>

@@ -1,6 +1,7 @@
 // The parameter table of the lk engine (Lucas-Kanade features, thesis chapter 6): one row per
 // option (option_table.h). The engines test checks it against its struct (same defaults, every
 // field listed, ranges that pass Check()).
+// Length: LkOptionFields is the table itself, one row per option.
 #include "armmimic/core/option_rows.h"
 #include "armmimic/engines/option_fields.h"
 
