@@ -1,4 +1,5 @@
 #include "analysis_flags.h"
+#include "flag_for_key.h"
 
 #include <map>
 #include <set>
@@ -171,7 +172,7 @@ std::optional<int> AnalysisFlags::Finish(const ArgParser& p) {
   // reference's markers do not show in 20..80 (other illumination).
   if (p.Given("--low") || p.Given("--high")) o_->engine.marker.auto_window = false;
   for (const std::string& assignment : params_) SetEngineOption(assignment, &o_->engine);
-  if (Status st = o_->Check(); !st) return p.UsageError(st.message());
+  if (Status st = o_->Check(); !st) return p.UsageError(Worded(st));
 
   return std::nullopt;
 }

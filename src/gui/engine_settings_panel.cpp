@@ -348,7 +348,8 @@ Status EngineSettingsPanel::autoCalibrate(const std::vector<std::string>& inputs
   PoseSide side = PoseSide::kAuto;
   const Status st =
       DetectArmJoints(inputs, o.start, PoseSide::kAuto, o.model_dir, o.engine.pose, &arm, &side);
-  if (!st) return Status::Error("Auto-calibrate: " + st.message());
+  if (!st) return Status::Error(st.key(), "Auto-calibrate: " + st.message());
+
   setJoint(1, arm.elbow);
   setJoint(2, arm.wrist);
   setShoulder(arm.shoulder);

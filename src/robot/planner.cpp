@@ -50,21 +50,23 @@ Status PlannerOptions::Check() const {
   s = limits.Check();
   if (!s.ok()) return s;
   if (!(cutoff_hz >= 0) || !std::isfinite(cutoff_hz))
-    return Status::Error("cutoff must be >= 0 Hz");
+    return Status::Error("planner.cutoff_hz", "cutoff must be >= 0 Hz");
   if (!(max_gap_s >= 0) || !std::isfinite(max_gap_s))
-    return Status::Error("max gap must be >= 0 s");
-  if (!(max_jump_deg_s > 0)) return Status::Error("max jump speed must be > 0 deg/s");
+    return Status::Error("planner.max_gap_s", "max gap must be >= 0 s");
+  if (!(max_jump_deg_s > 0))
+    return Status::Error("planner.max_jump_deg_s", "max jump speed must be > 0 deg/s");
   if (!(deadband_deg >= 0) || !std::isfinite(deadband_deg)) {
-    return Status::Error("deadband must be >= 0 deg");
+    return Status::Error("planner.deadband_deg", "deadband must be >= 0 deg");
   }
   if (!(min_interval_s >= 0) || !std::isfinite(min_interval_s)) {
-    return Status::Error("min interval must be >= 0 s");
+    return Status::Error("planner.min_interval_s", "min interval must be >= 0 s");
   }
   if (!(max_interval_s > 0) || !std::isfinite(max_interval_s) || max_interval_s < min_interval_s) {
-    return Status::Error("max interval must be > 0 s and not below the min interval");
+    return Status::Error("planner.max_interval_s",
+                         "max interval must be > 0 s and not below the min interval");
   }
   if (!(fallback_fps > 0) || !std::isfinite(fallback_fps)) {
-    return Status::Error("fallback fps must be > 0");
+    return Status::Error("planner.fallback_fps", "fallback fps must be > 0");
   }
   return Status::Ok();
 }
@@ -227,8 +229,9 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
   }
   report.sample_rate_hz = fs;
   if (cutoff_hz > 0 && !(cutoff_hz < 0.5 * fs)) {
-    return Status::Error("cutoff " + Num(cutoff_hz) + " Hz must be below half the frame rate (" +
-                         Num(fs, 3) + " fps)");
+    return Status::Error("planner.cutoff_hz", "cutoff " + Num(cutoff_hz) +
+                                                  " Hz must be below half the frame rate (" +
+                                                  Num(fs, 3) + " fps)");
   }
 
   // 1. Unwrap from the first measured posture and flag impossible jumps.

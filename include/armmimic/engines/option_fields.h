@@ -28,7 +28,7 @@ template <typename Options>
 struct OptionField {
   std::string key;    // the struct member's name ("max_corners"): settings key, widget name
   std::string label;  // short, for a form row
-  std::string help;   // one line; names the CLI flag where there is one
+  std::string help;   // one line, in the library's words (the shells add a flag or field)
   OptionKind kind = OptionKind::kDouble;
   OptionGroup group = OptionGroup::kAdvanced;
   double min = 0;  // inclusive; bool 0..1; enum 0..choices-1

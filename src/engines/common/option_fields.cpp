@@ -99,13 +99,13 @@ using P = PoseOptions;
 const std::vector<OptionField<BgsubOptions>>& BgsubOptionFields() {
   static const std::vector<OptionField<B>> fields = {
       Int<B>("threshold", &B::threshold, 45, 1, 254, "Threshold",
-             "--threshold: grey-level difference from the background (5.2.2, 5.2.4)")
+             "grey-level difference from the background (5.2.2, 5.2.4)")
           .Main(),
       Int<B>("background_frames", &B::background_frames, 45, 1, 100000, "Background frames",
-             "--background-frames: frames averaged into the background image (5.2.1)")
+             "frames averaged into the background image (5.2.1)")
           .Input(),
       Int<B>("standstill_frames", &B::standstill_frames, 60, 1, 100000, "Standstill frames",
-             "--standstill-frames: frames averaged into the standstill image (5.2.2)")
+             "frames averaged into the standstill image (5.2.2)")
           .Main(),
       Real<B>("straight_ratio", &B::straight_ratio, 0.30, 0.10, 0.95, 2, "Straight-arm ratio",
               "defect depth below this share of the semi-major axis: a straight arm")
@@ -120,7 +120,7 @@ const std::vector<OptionField<BgsubOptions>>& BgsubOptionFields() {
       Real<B>("shoulder_side", &B::shoulder_side, 1.0 / 6, 0, 0.5, 3, "Shoulder inset",
               "shoulder at this share of the body box width in from the moving arm's side"),
       Bool<B>("thesis_mode", &B::thesis_mode, false, "Thesis path only",
-              "--thesis: none of the improvements below")
+              "none of the improvements below")
           .Main(),
       Bool<B>("compensate_drift", &B::compensate_drift, true, "Compensate brightness drift",
               "subtract the global brightness drift before thresholding"),
@@ -163,7 +163,7 @@ const std::vector<OptionField<BgsubOptions>>& BgsubOptionFields() {
 const std::vector<OptionField<LkOptions>>& LkOptionFields() {
   static const std::vector<OptionField<L>> fields = {
       Int<L>("standstill_frames", &L::standstill_frames, 60, 1, 100000, "Standstill frames",
-             "--standstill-frames: frames averaged into the standstill image (6.1)")
+             "frames averaged into the standstill image (6.1)")
           .Main(),
       Int<L>("body_threshold", &L::body_threshold, 45, 0, 255, "Body threshold",
              "grey-level difference standstill vs background that makes the body box"),
@@ -178,10 +178,10 @@ const std::vector<OptionField<LkOptions>>& LkOptionFields() {
       Enum<L>("side", &L::side, LkArmSide::kAuto, {"auto", "left", "right"}, "Arm side",
               "side of the body box the moving arm is on, as seen on screen"),
       Real<L>("initial_upper_deg", &L::initial_upper_deg, -90, -180, 180, 1, "Initial upper arm",
-              "--initial-upper: upper-arm direction at the start, degrees")
+              "upper-arm direction at the start, degrees")
           .Main(),
       Real<L>("initial_fore_deg", &L::initial_fore_deg, -90, -180, 180, 1, "Initial forearm",
-              "--initial-fore: forearm direction at the start, degrees")
+              "forearm direction at the start, degrees")
           .Main(),
       Int<L>("max_corners", &L::max_corners, 300, 4, 10000, "Max. corners",
              "strongest Shi-Tomasi corners kept per detection (6.2.1)"),
@@ -206,7 +206,7 @@ const std::vector<OptionField<LkOptions>>& LkOptionFields() {
              "a feature still for more than this many frames is dropped")
           .Main(),
       Bool<L>("thesis_mode", &L::thesis_mode, false, "Thesis path only",
-              "--thesis: 2-means and summed increments only, none of the improvements")
+              "2-means and summed increments only, none of the improvements")
           .Main(),
       Bool<L>("use_bar", &L::use_bar, true, "Sleeve bars", "anchor each part on its sleeve colour"),
       Real<L>("bar_search_deg", &L::bar_search_deg, 30, 1, 90, 1, "Bar search",
@@ -263,12 +263,10 @@ const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields() {
              "median filter window, odd (4.2.1)")
           .Step(2)
           .Main(),
-      Int<M>("low", &M::low, 20, 0, 255, "Low threshold",
-             "--low: darkest marker grey level (4.2.2)")
+      Int<M>("low", &M::low, 20, 0, 255, "Low threshold", "darkest marker grey level (4.2.2)")
           .Below("high")
           .Main(),
-      Int<M>("high", &M::high, 80, 0, 255, "High threshold",
-             "--high: brightest marker grey level (4.2.2)")
+      Int<M>("high", &M::high, 80, 0, 255, "High threshold", "brightest marker grey level (4.2.2)")
           .Main(),
       Int<M>("flood_range", &M::flood_range, 10, 0, 255, "Flood range",
              "flood-fill value range (+/-) around the seed (4.2.3)")
@@ -289,10 +287,10 @@ const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields() {
               "when [low, high] misses the reference's markers, use the nearest window that "
               "shows them"),
       Bool<M>("thesis_mode", &M::thesis_mode, false, "Thesis path only",
-              "--thesis: three largest survivors, box centres, yaw = acos(n/N)")
+              "three largest survivors, box centres, yaw = acos(n/N)")
           .Main(),
       Real<M>("fov_deg", &M::fov_deg, 60, 0, 140, 1, "Camera field of view",
-              "--fov: the camera's horizontal field of view, degrees (0: a distant camera)")
+              "the camera's horizontal field of view, degrees (0: a distant camera)")
           .Main(),
       Real<M>("max_marker_turn_deg", &M::max_marker_turn_deg, 74, 1, 89, 1, "Max. marker turn",
               "a view is read only when a lower marker faces the camera within this, degrees"),
@@ -311,7 +309,7 @@ const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields() {
 const std::vector<OptionField<PoseOptions>>& PoseOptionFields() {
   static const std::vector<OptionField<P>> fields = {
       Enum<P>("side", &P::side, PoseSide::kAuto, {"auto", "left", "right"}, "Arm",
-              "--side: the person's own arm (auto: the better seen over the first second)")
+              "the person's own arm (auto: the better seen over the first second)")
           .Main(),
       Real<P>("min_score", &P::min_score, 0.4, 0, 1, 2, "Minimum keypoint score",
               "a shoulder, elbow or wrist scored lower is not seen: lost")
