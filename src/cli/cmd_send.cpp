@@ -78,7 +78,8 @@ Status AskUncertain(robot::SendSession& session, serial::SerialLink& link,
   Status s = session.UncertainQuery(&ask, &query);
   if (!s.ok() || !ask) return s;
   if (!serial::RunToEnd(link, {query}, session.program().source_name, Interrupted)) {
-    return Status::Error(link.protocol().error_message() + " (while asking WHERE)");
+    return Status::Error(link.protocol().error_key(),
+                         link.protocol().error_message() + " (while asking WHERE)");
   }
   std::string note;
   s = session.ResolveUncertain(link.protocol().last_replies(), &note);

@@ -345,7 +345,7 @@ Status AnalysisOptions::Check() const {
                              "the bgsub engine needs an arm-length image (thesis 5.2.3)");
       }
       if (has_bg == has_frames) {
-        return Status::Error("analysis.background",
+        return Status::Error("analysis.background_frames",
                              "the bgsub engine needs exactly one of a background image and a "
                              "number of background frames");
       }
@@ -370,7 +370,7 @@ Status AnalysisOptions::Check() const {
         }
       }
       if (!has_bg && !has_frames && !shoulder_px && !auto_calibrate) {
-        return Status::Error("analysis.background",
+        return Status::Error("analysis.shoulder",
                              "the lk engine needs a background image, background frames, a fixed "
                              "shoulder or auto-calibration");
       }

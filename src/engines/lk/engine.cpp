@@ -82,7 +82,7 @@ class LkEngine : public Engine {
       fore_length_px_ = cv::norm(w - e);
     }
     if (!shoulder_given_ && background_.empty()) {
-      return Status::Error("analysis.background",
+      return Status::Error("analysis.shoulder",
                            "lk: needs a background (an image or frames to average) or a fixed "
                            "shoulder");
     }

@@ -65,7 +65,7 @@ TEST(Analysis, CheckNamesTheSetting) {
   EXPECT_EQ(o.Check().key(), "analysis.arm_length");
   EXPECT_NE(o.Check().message().find("arm-length image"), std::string::npos);
   o.arm_length_path = "arm.png";
-  EXPECT_EQ(o.Check().key(), "analysis.background");
+  EXPECT_EQ(o.Check().key(), "analysis.background_frames");
   EXPECT_NE(o.Check().message().find("background frames"), std::string::npos);
   o.background_frames = 45;
   EXPECT_TRUE(o.Check().ok()) << o.Check().message();
@@ -81,7 +81,7 @@ TEST(Analysis, CheckNamesTheSetting) {
   AnalysisOptions lk;
   lk.inputs = {"x.avi"};
   lk.engine.kind = EngineKind::kLk;
-  EXPECT_EQ(lk.Check().key(), "analysis.background");
+  EXPECT_EQ(lk.Check().key(), "analysis.shoulder");
   EXPECT_NE(lk.Check().message().find("shoulder"), std::string::npos);
   lk.shoulder_px = cv::Point2d(10, 10);
   EXPECT_TRUE(lk.Check().ok());

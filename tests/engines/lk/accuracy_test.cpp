@@ -168,7 +168,7 @@ TEST(LkEngine, BeginNamesWhatIsMissingOrWrong) {
   context.frame_size = {320, 240};
   Status st = engine->Begin(context);
   EXPECT_FALSE(st.ok());
-  EXPECT_EQ(st.key(), "analysis.background") << st.message();
+  EXPECT_EQ(st.key(), "analysis.shoulder") << st.message();
   EXPECT_NE(st.message().find("shoulder"), std::string::npos) << st.message();
 
   context.background = cv::Mat(100, 100, CV_8UC3, cv::Scalar::all(0));
