@@ -3,6 +3,7 @@
 // The robot panel words the serial layer's refusals with its own labels.
 #include <QApplication>
 #include <QComboBox>
+#include <QGroupBox>
 #include <QLineEdit>
 #include <QTest>
 
@@ -63,6 +64,25 @@ TEST_F(FieldErrorTest, ABgsubRunWithoutAnArmLengthImageFramesThatField) {
   QTest::keyClicks(arm, "a");
   EXPECT_FALSE(gui::HasFieldError(arm));
   EXPECT_FALSE(arm->styleSheet().contains("#d03b2f"));
+}
+
+TEST_F(FieldErrorTest, AnLkRunWithNeitherBackgroundNorShoulderFramesTheShoulderBox) {
+  MainWindow w;
+  Open(w);
+  AnalysisOptions o;
+  o.engine.kind = EngineKind::kLk;
+  w.settingsPanel()->setOptions(o);  // no background, no shoulder
+  auto* box = w.settingsPanel()->findChild<QGroupBox*>("shoulderBox");
+  ASSERT_NE(box, nullptr);
+
+  EXPECT_FALSE(w.startAnalysis());
+  EXPECT_TRUE(gui::HasFieldError(box));
+  const QString log = w.log()->text();
+  EXPECT_TRUE(log.contains("Fixed shoulder: the lk engine needs a background image"))
+      << log.toStdString();
+  EXPECT_FALSE(log.contains("--shoulder")) << log.toStdString();
+  box->setChecked(true);  // ticking the box is the change that takes the frame away
+  EXPECT_FALSE(gui::HasFieldError(box));
 }
 
 TEST_F(FieldErrorTest, AnArmLengthImageOfTheWrongSizeFramesThatFieldAfterTheRun) {
