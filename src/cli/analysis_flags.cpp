@@ -1,6 +1,7 @@
 // The analysis flags of analyze and mimic (analysis_flags.h).
 // Length: Register is one call per flag, a flat list in --help order.
 #include "analysis_flags.h"
+#include "flag_for_key.h"
 
 #include <initializer_list>
 #include <map>
@@ -248,7 +249,7 @@ std::optional<int> AnalysisFlags::Finish(const ArgParser& p, AnalysisOptions* o)
   if (auto code = ParseEngine(p, &o->engine.kind)) return code;
   if (const std::string e = CheckFor(p, *o); !e.empty()) return p.UsageError(e);
   ApplyGiven(p, o);
-  if (Status st = o->Check(); !st) return p.UsageError(st.message());
+  if (Status st = o->Check(); !st) return p.UsageError(Worded(st));
   return std::nullopt;
 }
 

@@ -12,6 +12,7 @@
 #include "armmimic/engines/analysis.h"
 #include "armmimic/engines/run_record.h"
 #include "command.h"
+#include "flag_for_key.h"
 #include "interrupt.h"
 
 namespace armmimic::cli {
@@ -158,7 +159,7 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
     if (videos.empty()) return p.UsageError("--list " + a.list + ": names no video");
     o.inputs = {videos.front()};
   }
-  if (Status st = o.Check(); !st) return p.UsageError(st.message());
+  if (Status st = o.Check(); !st) return p.UsageError(Worded(st));
   BatchPlan plan;
   if (batch) {
     plan = PlanBatch(videos, a.output_dir, a.summary);

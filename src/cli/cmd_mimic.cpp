@@ -16,6 +16,7 @@
 #include "armmimic/robot/live_log.h"
 #include "armmimic/serial/serial_link.h"
 #include "command.h"
+#include "flag_for_key.h"
 #include "planner_flags.h"
 #include "port_flags.h"
 
@@ -143,7 +144,7 @@ std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* 
   if (!m->dry_run && m->port.port.empty()) {
     return p.UsageError("--port is required (or --dry-run; 'send --list-ports' lists the ports)");
   }
-  if (const Status s = m->port.Check(); !m->dry_run && !s.ok()) return p.UsageError(s.message());
+  if (const Status s = m->port.Check(); !m->dry_run && !s.ok()) return p.UsageError(Worded(s));
   if (!(o.stream.stale_after_s > 0)) return p.UsageError("--stale-after must be > 0");
   if (auto code = planner_flags.ParseTexts(p)) return code;
   o.stream.kind = o.analysis.engine.kind == EngineKind::kMarker ? robot::SourceKind::kMarker
@@ -151,7 +152,7 @@ std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* 
   if (auto code = planner_flags.Finish(p, o.stream.kind, false)) return code;
   if (!profile_path.empty()) {
     const Status s = robot::ReadProfile(profile_path, &o.stream.profile);
-    if (!s.ok()) return Fail(s.message());
+    if (!s.ok()) return Fail(Worded(s));
   }
   if (m->output.empty()) m->output = DefaultOutput();
   o.angles_path = m->output;
@@ -189,7 +190,7 @@ int RunMimic(const std::vector<std::string>& args, const GlobalOptions& global) 
   serial::SerialLink link(robot::LinkSettings::FromProfile(m.o.stream.profile));
   if (!m.dry_run) {
     const Status s = link.Open(m.port);
-    if (!s.ok()) return Fail(s.message());
+    if (!s.ok()) return Fail(Worded(s));
   }
   live::MimicRun run(m.dry_run ? nullptr : &link);
   run.SetDryWriter([](const robot::LinkLine& l) {
@@ -214,7 +215,7 @@ int RunMimic(const std::vector<std::string>& args, const GlobalOptions& global) 
     }
   });
   poll.start();
-  if (const Status s = run.Start(m.o); !s.ok()) return Fail(s.message());
+  if (const Status s = run.Start(m.o); !s.ok()) return Fail(Worded(s));
   if (!global.quiet) {
     std::cerr << "mimic: " << m.o.analysis.inputs[0] << " -> "
               << (m.dry_run ? std::string("dry run (no port)") : m.port.port) << "; angles "
@@ -223,7 +224,8 @@ int RunMimic(const std::vector<std::string>& args, const GlobalOptions& global) 
   app.exec();
   link.Close();
   Report(run, m, global);
-  if (!ok) return Fail(message.empty() ? "stopped" : message);
+  if (!ok)
+    return Fail(message.empty() ? "stopped" : Worded(Status::Error(run.failure_key(), message)));
   return kExitOk;
 }
 

@@ -12,6 +12,7 @@
 #include "armmimic/robot/profile.h"
 #include "armmimic/robot/val_program.h"
 #include "command.h"
+#include "flag_for_key.h"
 #include "interrupt.h"
 #include "planner_flags.h"
 
@@ -120,7 +121,7 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   robot::Trajectory trajectory;
   robot::PlanReport report;
   if (Status s = robot::PlanTrajectory(angles, o, &trajectory, &report); !s.ok()) {
-    if (s.message().rfind("cutoff", 0) == 0) return p.UsageError("--cutoff: " + s.message());
+    if (s.key() == "planner.cutoff_hz") return p.UsageError(Worded(s));
     std::cerr << "armmimic-cli plan: " << input[0] << ": refused: " << s.message() << "\n";
     return kExitFailure;
   }

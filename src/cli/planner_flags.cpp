@@ -1,4 +1,5 @@
 #include "planner_flags.h"
+#include "flag_for_key.h"
 
 #include <cctype>
 #include <vector>
@@ -133,30 +134,7 @@ std::optional<int> PlannerFlags::Finish(const ArgParser& p, robot::SourceKind ki
   if (map_[2].given) o_->mapping.j3 = map_[2].map;
   o_->mapping.j2_elevation = j2_source_ != "upper";
   o_->mapping.j3_flexion = j3_source_ != "bend";
-  if (Status s = o_->Check(); !s.ok()) {
-    const std::string& m = s.message();
-    std::string flag = "--limits";
-    if (m.find("mapping") != std::string::npos || m.find("hold") != std::string::npos) {
-      flag = "--map-j*/--hold";
-    } else if (m.find("speed limit") != std::string::npos) {
-      flag = "--speed-limit";
-    } else if (m.rfind("cutoff", 0) == 0) {
-      flag = "--cutoff";
-    } else if (m.rfind("max gap", 0) == 0) {
-      flag = "--max-gap-s";
-    } else if (m.rfind("max jump", 0) == 0) {
-      flag = "--max-jump";
-    } else if (m.rfind("deadband", 0) == 0) {
-      flag = "--deadband";
-    } else if (m.rfind("min interval", 0) == 0) {
-      flag = "--min-interval";
-    } else if (m.rfind("max interval", 0) == 0) {
-      flag = "--max-interval";
-    } else if (m.rfind("fallback", 0) == 0) {
-      flag = "--fallback-fps";
-    }
-    return p.UsageError(flag + ": " + m);
-  }
+  if (Status s = o_->Check(); !s.ok()) return p.UsageError(Worded(s));
 
   return std::nullopt;
 }

@@ -105,8 +105,9 @@ Status SampleTimes(const AngleFile& angles, const PlannerOptions& options, PlanR
   out->still_images = still_images;
   out->cutoff_hz = cutoff_hz;
   if (cutoff_hz > 0 && !(cutoff_hz < 0.5 * fs)) {
-    return Status::Error("cutoff " + Num(cutoff_hz) + " Hz must be below half the frame rate (" +
-                         Num(fs, 3) + " fps)");
+    return Status::Error("planner.cutoff_hz", "cutoff " + Num(cutoff_hz) +
+                                                  " Hz must be below half the frame rate (" +
+                                                  Num(fs, 3) + " fps)");
   }
   return Status::Ok();
 }

@@ -32,7 +32,7 @@ template <typename Options>
 struct OptionField {
   std::string key;    // the struct member's name ("max_corners"): settings key, widget name
   std::string label;  // short, for a form row
-  std::string help;   // one line
+  std::string help;   // one line, in the library's words (the shells add a flag or field)
   std::string unit;   // "deg", "s", "Hz", "px", "deg/s"; "" for counts, ratios and switches
   std::string flag;   // the command-line flag that sets it ("--cutoff"), "" where there is none
   OptionKind kind = OptionKind::kDouble;

@@ -15,15 +15,15 @@ using B = BgsubOptions;
 const std::vector<OptionField<BgsubOptions>>& BgsubOptionFields() {
   static const std::vector<OptionField<B>> fields = {
       Int<B>("threshold", &B::threshold, 45, 1, 254, "Threshold",
-             "--threshold: grey-level difference from the background (5.2.2, 5.2.4)")
+             "grey-level difference from the background (5.2.2, 5.2.4)")
           .Flag("--threshold")
           .Main(),
       Int<B>("background_frames", &B::background_frames, 45, 1, 100000, "Background frames",
-             "--background-frames: frames averaged into the background image (5.2.1)")
+             "frames averaged into the background image (5.2.1)")
           .Flag("--background-frames")
           .Input(),
       Int<B>("standstill_frames", &B::standstill_frames, 60, 1, 100000, "Standstill frames",
-             "--standstill-frames: frames averaged into the standstill image (5.2.2)")
+             "frames averaged into the standstill image (5.2.2)")
           .Flag("--standstill-frames")
           .Main(),
       Real<B>("straight_ratio", &B::straight_ratio, 0.30, 0.10, 0.95, 2, "Straight-arm ratio",
@@ -39,7 +39,7 @@ const std::vector<OptionField<BgsubOptions>>& BgsubOptionFields() {
       Real<B>("shoulder_side", &B::shoulder_side, 1.0 / 6, 0, 0.5, 3, "Shoulder inset",
               "shoulder at this share of the body box width in from the moving arm's side"),
       Bool<B>("thesis_mode", &B::thesis_mode, false, "Thesis path only",
-              "--thesis: none of the improvements below")
+              "none of the improvements below")
           .Flag("--thesis")
           .Main(),
       Bool<B>("compensate_drift", &B::compensate_drift, true, "Compensate brightness drift",

@@ -16,7 +16,7 @@ using L = LkOptions;
 const std::vector<OptionField<LkOptions>>& LkOptionFields() {
   static const std::vector<OptionField<L>> fields = {
       Int<L>("standstill_frames", &L::standstill_frames, 60, 1, 100000, "Standstill frames",
-             "--standstill-frames: frames averaged into the standstill image (6.1)")
+             "frames averaged into the standstill image (6.1)")
           .Flag("--standstill-frames")
           .Main(),
       Int<L>("body_threshold", &L::body_threshold, 45, 0, 255, "Body threshold",
@@ -32,11 +32,11 @@ const std::vector<OptionField<LkOptions>>& LkOptionFields() {
       Enum<L>("side", &L::side, LkArmSide::kAuto, {"auto", "left", "right"}, "Arm side",
               "side of the body box the moving arm is on, as seen on screen"),
       Real<L>("initial_upper_deg", &L::initial_upper_deg, -90, -180, 180, 1, "Initial upper arm",
-              "--initial-upper: upper-arm direction at the start, degrees")
+              "upper-arm direction at the start, degrees")
           .Flag("--initial-upper")
           .Main(),
       Real<L>("initial_fore_deg", &L::initial_fore_deg, -90, -180, 180, 1, "Initial forearm",
-              "--initial-fore: forearm direction at the start, degrees")
+              "forearm direction at the start, degrees")
           .Flag("--initial-fore")
           .Main(),
       Int<L>("max_corners", &L::max_corners, 300, 4, 10000, "Max. corners",
@@ -62,7 +62,7 @@ const std::vector<OptionField<LkOptions>>& LkOptionFields() {
              "a feature still for more than this many frames is dropped")
           .Main(),
       Bool<L>("thesis_mode", &L::thesis_mode, false, "Thesis path only",
-              "--thesis: 2-means and summed increments only, none of the improvements")
+              "2-means and summed increments only, none of the improvements")
           .Flag("--thesis")
           .Main(),
       Bool<L>("use_bar", &L::use_bar, true, "Sleeve bars", "anchor each part on its sleeve colour"),

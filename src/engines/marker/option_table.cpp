@@ -18,13 +18,11 @@ const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields() {
              "median filter window, odd (4.2.1)")
           .Step(2)
           .Main(),
-      Int<M>("low", &M::low, 20, 0, 255, "Low threshold",
-             "--low: darkest marker grey level (4.2.2)")
+      Int<M>("low", &M::low, 20, 0, 255, "Low threshold", "darkest marker grey level (4.2.2)")
           .Flag("--low")
           .Below("high")
           .Main(),
-      Int<M>("high", &M::high, 80, 0, 255, "High threshold",
-             "--high: brightest marker grey level (4.2.2)")
+      Int<M>("high", &M::high, 80, 0, 255, "High threshold", "brightest marker grey level (4.2.2)")
           .Flag("--high")
           .Main(),
       Int<M>("flood_range", &M::flood_range, 10, 0, 255, "Flood range",
@@ -46,11 +44,11 @@ const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields() {
               "when [low, high] misses the reference's markers, use the nearest window that "
               "shows them"),
       Bool<M>("thesis_mode", &M::thesis_mode, false, "Thesis path only",
-              "--thesis: three largest survivors, box centres, yaw = acos(n/N)")
+              "three largest survivors, box centres, yaw = acos(n/N)")
           .Flag("--thesis")
           .Main(),
       Real<M>("fov_deg", &M::fov_deg, 60, 0, 140, 1, "Camera field of view",
-              "--fov: the camera's horizontal field of view, degrees (0: a distant camera)")
+              "the camera's horizontal field of view, degrees (0: a distant camera)")
           .Flag("--fov")
           .Main(),
       Real<M>("max_marker_turn_deg", &M::max_marker_turn_deg, 74, 1, 89, 1, "Max. marker turn",

@@ -15,7 +15,7 @@ using P = PoseOptions;
 const std::vector<OptionField<PoseOptions>>& PoseOptionFields() {
   static const std::vector<OptionField<P>> fields = {
       Enum<P>("side", &P::side, PoseSide::kAuto, {"auto", "left", "right"}, "Arm",
-              "--side: the person's own arm (auto: the better seen over the first second)")
+              "the person's own arm (auto: the better seen over the first second)")
           .Flag("--side")
           .Main(),
       Real<P>("min_score", &P::min_score, 0.4, 0, 1, 2, "Minimum keypoint score",
