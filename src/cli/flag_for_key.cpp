@@ -1,12 +1,47 @@
-// One place for the CLI's key -> flag words, until the flags are registered from the option
-// tables and ArgParser can answer it from its own options.
+// The CLI's key -> flag words. A setting with a row in an option table takes the row's flag, so
+// each flag is written once, in its table; the list below holds only the inputs and scene
+// settings that have no table row.
 #include "flag_for_key.h"
 
 #include <map>
+#include <vector>
+
+#include "armmimic/engines/option_fields.h"
+#include "armmimic/robot/option_tables.h"
+#include "armmimic/serial/port_table.h"
 
 namespace armmimic::cli {
+namespace {
+
+// The flag of the row `key` ("planner.cutoff_hz") in the table named `table` ("planner"), or "".
+template <typename O>
+std::string TableFlag(const std::vector<OptionField<O>>& fields, const std::string& table,
+                      const std::string& key) {
+  if (key.rfind(table + ".", 0) != 0) return std::string();
+  const OptionField<O>* f = FindOptionField(fields, key.substr(table.size() + 1));
+  return f ? f->flag : std::string();
+}
+
+std::string FlagFromTables(const std::string& key) {
+  for (const std::string& flag : {
+           TableFlag(BgsubOptionFields(), "bgsub", key),
+           TableFlag(LkOptionFields(), "lk", key),
+           TableFlag(MarkerOptionFields(), "marker", key),
+           TableFlag(PoseOptionFields(), "pose", key),
+           TableFlag(robot::PlannerOptionFields(), "planner", key),
+           TableFlag(robot::MappingOptionFields(), "mapping", key),
+           TableFlag(robot::LimitsOptionFields(), "limits", key),
+           TableFlag(serial::PortOptionFields(), "port", key),
+       }) {
+    if (!flag.empty()) return flag;
+  }
+  return std::string();
+}
+
+}  // namespace
 
 std::string FlagForKey(const std::string& key) {
+  if (std::string flag = FlagFromTables(key); !flag.empty()) return flag;
   static const std::map<std::string, std::string> flags = {
       // The analysis inputs (AnalysisOptions).
       {"analysis.engine", "--engine"},
@@ -22,42 +57,7 @@ std::string FlagForKey(const std::string& key) {
       {"analysis.model", "--model"},
       {"analysis.auto_calibrate", "--auto-calibrate"},
       {"analysis.side", "--side"},
-      // Engine parameters with a flag of their own; the others go through --param.
-      {"bgsub.threshold", "--threshold"},
-      {"bgsub.background_frames", "--background-frames"},
-      {"bgsub.standstill_frames", "--standstill-frames"},
-      {"bgsub.thesis_mode", "--thesis"},
-      {"lk.standstill_frames", "--standstill-frames"},
-      {"lk.initial_upper_deg", "--initial-upper"},
-      {"lk.initial_fore_deg", "--initial-fore"},
-      {"lk.thesis_mode", "--thesis"},
-      {"marker.low", "--low"},
-      {"marker.high", "--high"},
-      {"marker.fov_deg", "--fov"},
-      {"marker.thesis_mode", "--thesis"},
-      {"pose.side", "--side"},
-      // Planner, mapping and limits (plan, mimic).
-      {"planner.cutoff_hz", "--cutoff"},
-      {"planner.max_gap_s", "--max-gap-s"},
-      {"planner.max_jump_deg_s", "--max-jump"},
-      {"planner.deadband_deg", "--deadband"},
-      {"planner.min_interval_s", "--min-interval"},
-      {"planner.max_interval_s", "--max-interval"},
-      {"planner.fallback_fps", "--fallback-fps"},
-      {"mapping.j1", "--map-j1"},
-      {"mapping.j2", "--map-j2"},
-      {"mapping.j3", "--map-j3"},
-      {"mapping.hold_deg", "--hold"},
-      {"limits.min_deg", "--limits"},
-      {"limits.max_deg", "--limits"},
-      {"limits.max_speed_deg_s", "--speed-limit"},
-      // The serial port and the send's starting point (send, mimic).
-      {"port.port", "--port"},
-      {"port.baud", "--baud"},
-      {"port.data_bits", "--data-bits"},
-      {"port.parity", "--parity"},
-      {"port.stop_bits", "--stop-bits"},
-      {"port.flow", "--flow"},
+      // The send's starting point and the emulator's link.
       {"send.mode", "--resume/--restart"},
       {"send.resume", "--resume"},
       {"send.resume_at_line", "--resume-at"},

@@ -1,3 +1,6 @@
+// SerialLink: the robot link over a QSerialPort (serial_link.h).
+// Length: SerialLink::Open checks the path, takes the lock, opens and configures the port in one
+// sequence whose every failure undoes the steps before it.
 #include "armmimic/serial/serial_link.h"
 
 #include <QSerialPortInfo>

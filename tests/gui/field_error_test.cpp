@@ -57,7 +57,9 @@ TEST_F(FieldErrorTest, ABgsubRunWithoutAnArmLengthImageFramesThatField) {
   EXPECT_FALSE(log.contains("--arm-length")) << log.toStdString();
   // No other field is framed.
   for (QWidget* field : w.settingsPanel()->findChildren<QWidget*>()) {
-    if (field != arm) EXPECT_FALSE(gui::HasFieldError(field)) << field->objectName().toStdString();
+    if (field != arm) {
+      EXPECT_FALSE(gui::HasFieldError(field)) << field->objectName().toStdString();
+    }
   }
 
   // Typing in the field takes the frame away.

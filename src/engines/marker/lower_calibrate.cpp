@@ -1,6 +1,8 @@
 // The lower part on the reference image (docs/marker.md, "Calibration"): the silhouette found
 // from scratch around the lower pair, the bands of rows that show only the surface, the markers'
 // grey ratio, angular radius, zero-yaw angles and height.
+// Length: CalibrateLowerPart is the calibration's steps in order, each a few lines over shared
+// measurements of the reference.
 #include <algorithm>
 #include <cmath>
 
