@@ -208,7 +208,6 @@ void AnalysisFlags::ApplyGiven(const ArgParser& p, AnalysisOptions* o) const {
   if (p.Given("--background-frames")) {
     o->background_frames = f.background_frames;
     o->background_path.clear();
-    o->engine.bgsub.background_frames = f.background_frames;
   }
   if (p.Given("--arm-length")) o->arm_length_path = f.arm_length_path;
   if (p.Given("--reference")) o->reference_path = f.reference_path;

@@ -10,6 +10,7 @@
 #include "args.h"
 #include "armmimic/core/same_file.h"
 #include "armmimic/engines/analysis.h"
+#include "armmimic/engines/removed_options.h"
 #include "armmimic/engines/run_record.h"
 #include "command.h"
 #include "flag_for_key.h"
@@ -132,11 +133,16 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
   }
   AnalysisOptions o;
   if (!a.params_from.empty()) {
-    if (Status st = ReadRunRecord(a.params_from, &o); !st) {
+    std::vector<std::string> ignored;
+    if (Status st = ReadRunRecord(a.params_from, &o, &ignored); !st) {
       std::cerr << "armmimic-cli analyze: --params-from " << st.message() << "\n";
       return kExitFailure;
     }
     const std::string& engine = a.analysis.engine_name();
+    if (!ignored.empty()) {
+      std::cerr << "armmimic-cli analyze: " << a.params_from << ": "
+                << DescribeIgnoredEngineOptions(ignored) << "\n";
+    }
     EngineKind given;
     if (p.Given("--engine") && ParseEngineKind(engine, &given) && given != o.engine.kind) {
       return p.UsageError("--engine " + engine + ": " + a.params_from + " records a " +

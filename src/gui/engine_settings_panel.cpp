@@ -257,9 +257,7 @@ AnalysisOptions EngineSettingsPanel::options() const {
   }
   if (bg_mode_->currentIndex() == kBgImage) o.background_path = background_->text().toStdString();
   if (bg_mode_->currentIndex() == kBgFrames) {
-    // As the CLI does: --background-frames K is also the bgsub background length.
     o.background_frames = bg_frames_->value();
-    o.engine.bgsub.background_frames = o.background_frames;
   }
   if (o.engine.kind == EngineKind::kBgsub) o.arm_length_path = arm_length_->text().toStdString();
   o.start = start_->value();

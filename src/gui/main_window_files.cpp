@@ -192,6 +192,7 @@ bool MainWindow::openSession(const QString& path) {
   }
   RecentFiles::rememberDir(path);
   log_->info(tr("Opened the session %1").arg(path));
+  if (!s.ignored.isEmpty()) log_->info(tr("%1: %2").arg(path, s.ignored));
   const QString angles = s.angle_text.isEmpty() ? QString() : job_->resultPath();
   if (s.inputs.isEmpty()) {
     showResults(results, angles);

@@ -9,6 +9,7 @@
 
 #include "armmimic/core/atomic_file.h"
 #include "armmimic/engines/option_fields.h"
+#include "armmimic/engines/removed_options.h"
 
 namespace armmimic::gui {
 namespace {
@@ -70,12 +71,18 @@ QJsonObject WriteAnalysis(const AnalysisOptions& o, const QDir& dir) {
   return a;
 }
 
-QString ReadAnalysis(const QJsonObject& a, const QDir& dir, AnalysisOptions* o) {
+// Reads the analysis entry into *o; the settings this version removed go to *ignored.
+QString ReadAnalysis(const QJsonObject& a, const QDir& dir, AnalysisOptions* o,
+                     std::vector<std::string>* ignored) {
   if (!ParseEngineKind(a.value("engine").toString().toStdString(), &o->engine.kind)) {
     return "analysis.engine (expected bgsub, lk or marker)";
   }
   const QJsonObject params = a.value("parameters").toObject();
   for (auto it = params.begin(); it != params.end(); ++it) {
+    if (FindRemovedEngineOption(it.key().toStdString())) {
+      ignored->push_back(it.key().toStdString());
+      continue;
+    }
     const Status st =
         SetEngineOption((it.key() + "=" + it.value().toString()).toStdString(), &o->engine);
     if (!st) return "analysis.parameters: " + QString::fromStdString(st.message());
@@ -142,8 +149,10 @@ QString ReadSession(const QString& path, Session* s) {
     out.inputs << QString::fromStdString(Absolute(dir, v));
   }
   out.frame = std::max(0, root.value("frame").toInt());
-  const QString bad = ReadAnalysis(root.value("analysis").toObject(), dir, &out.options);
+  std::vector<std::string> ignored;
+  const QString bad = ReadAnalysis(root.value("analysis").toObject(), dir, &out.options, &ignored);
   if (!bad.isEmpty()) return QString("%1: %2").arg(path, bad);
+  out.ignored = QString::fromStdString(DescribeIgnoredEngineOptions(ignored));
   out.angle_text = root.value("angles").toString();
   *s = out;
   return QString();

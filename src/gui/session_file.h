@@ -18,6 +18,9 @@ struct Session {
   AnalysisOptions options;  // everything but the inputs
   QString angle_text;       // the results as an angle file v1 ("" when there are none)
   int frame = 0;            // the frame shown
+  // Read only: one line naming the recorded settings this version removed, which were ignored
+  // ("" when none).
+  QString ignored;
 };
 
 // Writes `session` to `path` atomically. Returns "" or what went wrong, naming the file.

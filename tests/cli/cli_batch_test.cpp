@@ -44,9 +44,9 @@ TEST(CliParamsFrom, RepeatsTheRunRowForRowAndFlagsOverrideIt) {
   const std::string video = Scene() + "/scene.avi";
   std::vector<std::string> first = {"-q", "analyze", video, "-o", dir.file("old.tsv")};
   for (const std::string& f : BgsubFlags()) first.push_back(f);
-  for (const char* f : {"--threshold", "40", "--param", "bgsub.closing_size=3", "--param",
-                        "bgsub.reject_shadow=false", "--param", "bgsub.min_support=0.45", "--param",
-                        "bgsub.upper_arm_fraction=0.55"}) {
+  for (const char* f :
+       {"--threshold", "40", "--param", "bgsub.closing_size=3", "--param", "bgsub.confirm_frames=4",
+        "--param", "bgsub.min_support=0.45", "--param", "bgsub.upper_arm_fraction=0.55"}) {
     first.push_back(f);
   }
   test::CliResult r = test::RunCli(first);
@@ -81,7 +81,7 @@ TEST(CliParamsFrom, RepeatsTheRunRowForRowAndFlagsOverrideIt) {
   ASSERT_TRUE(ReadAngleFile(dir.file("over.tsv"), &over).ok());
   EXPECT_EQ(over.Meta("bgsub.threshold"), "50");
   EXPECT_EQ(over.Meta("bgsub.closing_size"), "5");
-  EXPECT_EQ(over.Meta("bgsub.reject_shadow"), "false");
+  EXPECT_EQ(over.Meta("bgsub.confirm_frames"), "4");
   EXPECT_EQ(over.Meta("bgsub.min_support"), "0.45");
   EXPECT_EQ(over.Meta("bgsub.upper_arm_fraction"), "0.55");
 }

@@ -123,8 +123,7 @@ TEST_F(EngineSettingsTest, EveryParameterIsEditableAndSurvivesSettings) {
                 EditAll(panel, EngineKind::kMarker, MarkerOptionFields(), &EngineOptions::marker) +
                 EditAll(panel, EngineKind::kPose, PoseOptionFields(), &EngineOptions::pose);
   EXPECT_EQ(n, static_cast<int>(BgsubOptionFields().size() + LkOptionFields().size() +
-                                MarkerOptionFields().size() + PoseOptionFields().size()) -
-                   1);  // bgsub background_frames is an input
+                                MarkerOptionFields().size() + PoseOptionFields().size()));
   const AnalysisOptions edited = panel.options();
   EXPECT_TRUE(edited.engine.bgsub.Check().ok()) << edited.engine.bgsub.Check().message();
   EXPECT_TRUE(edited.engine.lk.Check().ok()) << edited.engine.lk.Check().message();

@@ -15,7 +15,8 @@ namespace armmimic {
 
 // Fills `options` (engine, start, parameters; inputs left empty) from `file`'s header. A header
 // without a known engine is an error naming `source_name`. An ENGINE.KEY entry this version
-// does not know, or whose value it refuses, is skipped and described in `skipped`.
+// does not know, or whose value it refuses, is skipped and described in `skipped`; the settings
+// this version removed (removed_options.h) are skipped and described together in one entry.
 Status RecordedAnalysisOptions(const AngleFile& file, const std::string& source_name,
                                AnalysisOptions* options, std::vector<std::string>* skipped);
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "armmimic/core/angle_file.h"
 #include "armmimic/core/status.h"
@@ -20,10 +21,13 @@ AngleMeta RunRecordMeta(const AnalysisOptions& options);
 // Reads a recorded run from `meta` into `options`: the engine, each ENGINE.KEY setting over the
 // defaults (a file written before every setting was recorded lists only the changed ones), start
 // and the recorded inputs. options->inputs is left as it is. Messages begin with `source_name`
-// and name the key.
-Status RunFromMeta(const AngleMeta& meta, const std::string& source_name, AnalysisOptions* options);
+// and name the key. Settings this version removed (removed_options.h) are skipped: their keys
+// go to `ignored` (when given) for the caller to report once.
+Status RunFromMeta(const AngleMeta& meta, const std::string& source_name, AnalysisOptions* options,
+                   std::vector<std::string>* ignored = nullptr);
 
 // RunFromMeta on the header of the angle file at `path`.
-Status ReadRunRecord(const std::string& path, AnalysisOptions* options);
+Status ReadRunRecord(const std::string& path, AnalysisOptions* options,
+                     std::vector<std::string>* ignored = nullptr);
 
 }  // namespace armmimic

@@ -20,16 +20,6 @@ constexpr int kMinPartPixels = 12;
 
 double Dot(const cv::Point2d& a, const cv::Point2d& b) { return a.x * b.x + a.y * b.y; }
 
-// Squared distance from p to the segment ab (compared, never needed as a length).
-double SquaredDistanceToSegment(const cv::Point2d& p, const cv::Point2d& a, const cv::Point2d& b) {
-  const cv::Point2d ab = b - a;
-  const double len2 = Dot(ab, ab);
-  double t = len2 > 0 ? Dot(p - a, ab) / len2 : 0;
-  t = std::clamp(t, 0.0, 1.0);
-  const cv::Point2d q = a + ab * t;
-  return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y);
-}
-
 cv::Point2d Centre(const RegionMoments& m) { return {m.cx, m.cy}; }
 
 // The outline of the largest region of `mask` inside `box`, in mask coordinates.
@@ -50,24 +40,22 @@ std::vector<cv::Point> LargestContour(const cv::Mat& mask, const cv::Rect& box) 
   return std::move(contours[best]);
 }
 
+// Farthest projection of the points of `contour` (a region's outline) from `origin` along
+// `direction_deg`: how far the region reaches from `origin` in that direction.
+double ReachAlong(const std::vector<cv::Point>& contour, const cv::Point2d& origin,
+                  double direction_deg) {
+  const cv::Point2d v = DirectionVector(direction_deg);
+  double reach = 0;
+  for (const cv::Point& p : contour)
+    reach = std::max(reach, (p.x - origin.x) * v.x + (p.y - origin.y) * v.y);
+  return reach;
+}
+
 // Straight arm: one axis for both segments; the elbow is put half-way along the reach so the
 // overlay and the centres of the two halves are meaningful.
 void FinishStraight(const cv::Mat& mask, const cv::Rect& box, const cv::Point2d& shoulder,
-                    const BgsubOptions& options, ArmGeometry* g) {
-  cv::Point2d towards = Centre(g->whole);
-  if (!options.thesis_mode) {
-    // The hand end: the outline point farthest from the shoulder (the centre of mass can sit on
-    // the wrong side of a misplaced shoulder).
-    double best = -1;
-    for (const cv::Point& p : g->contour) {
-      const double d =
-          (p.x - shoulder.x) * (p.x - shoulder.x) + (p.y - shoulder.y) * (p.y - shoulder.y);
-      if (d > best) {
-        best = d;
-        towards = p;
-      }
-    }
-  }
+                    ArmGeometry* g) {
+  const cv::Point2d towards = Centre(g->whole);
   const double dir = ResolveDirection(g->axis_deg, shoulder, towards);
   g->upper_deg = dir;
   g->fore_deg = dir;
@@ -140,131 +128,8 @@ RegionMoments MomentAccumulator::Moments() const {
   return m;
 }
 
-double ReachAlong(const std::vector<cv::Point>& contour, const cv::Point2d& origin,
-                  double direction_deg) {
-  const cv::Point2d v = DirectionVector(direction_deg);
-  double reach = 0;
-  for (const cv::Point& p : contour)
-    reach = std::max(reach, (p.x - origin.x) * v.x + (p.y - origin.y) * v.y);
-  return reach;
-}
-
-double RayFit(const cv::Mat& mask, const cv::Point2d& origin, double d0, double d1,
-              double exclude_deg, double exclude_half_deg) {
-  constexpr int kRays = 360;
-  // The 1-degree ray directions, computed once (sin/cos were a tenth of the ray fit's time).
-  static const std::vector<cv::Point2d> kDirections = [] {
-    std::vector<cv::Point2d> v(kRays);
-    for (int k = 0; k < kRays; ++k) v[static_cast<std::size_t>(k)] = DirectionVector(k - 179.0);
-    return v;
-  }();
-  const int samples = std::max(2, static_cast<int>(d1 - d0));
-  int score[kRays];
-  int best = 0;
-  for (int k = 0; k < kRays; ++k) {
-    score[k] = 0;
-    const double deg = k - 179.0;
-    if (std::isfinite(exclude_deg) && std::fabs(AngleDiff(deg, exclude_deg)) < exclude_half_deg) {
-      continue;
-    }
-    const cv::Point2d v = kDirections[static_cast<std::size_t>(k)];
-    int covered = 0;
-    for (int i = 0; i < samples; ++i) {
-      const double t = d0 + (d1 - d0) * i / (samples - 1);
-      const int x = cvRound(origin.x + v.x * t), y = cvRound(origin.y + v.y * t);
-      if (static_cast<unsigned>(x) < static_cast<unsigned>(mask.cols) &&
-          static_cast<unsigned>(y) < static_cast<unsigned>(mask.rows) &&
-          mask.data[static_cast<std::size_t>(y) * mask.step[0] + static_cast<std::size_t>(x)]) {
-        ++covered;
-      }
-    }
-    score[k] = covered;
-    best = std::max(best, score[k]);
-  }
-  if (best * 2 < samples) return kNaN;
-  // The middle of the widest run of rays within 90 % of the best: the arm's axis, not its edge.
-  const int level = static_cast<int>(std::ceil(0.9 * best));
-  int run_start = -1, best_start = 0, best_len = 0;
-  for (int k = 0; k < 2 * kRays; ++k) {
-    const bool on = score[k % kRays] >= level;
-    if (on && run_start < 0) run_start = k;
-    if ((!on || k == 2 * kRays - 1) && run_start >= 0) {
-      const int len = std::min(k - run_start, kRays);
-      if (len > best_len) best_len = len, best_start = run_start;
-      run_start = -1;
-    }
-  }
-  return Wrap180(best_start + (best_len - 1) / 2.0 - 179.0);
-}
-
-// Improved bent/straight decision and segments by ray fit: the upper arm is the ray from the
-// shoulder best covered by the arm between 35 and 95 % of the upper arm's length; the elbow is at
-// that length; the forearm is the best ray from the elbow, not searched back along the upper arm.
-// A forearm folded onto the upper arm, which the hull cannot separate, stays apart, and a slight
-// bend the 30 % rule calls straight is seen. Returns false when no upper-arm ray is covered.
-static bool RayFitArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point2d& shoulder_px,
-                      const BgsubOptions& options, bool was_bent, bool rule_bent,
-                      double upper_len_px, double fore_len_px, ArmGeometry* g,
-                      double fixed_up = kNaN) {
-  const double up = std::isfinite(fixed_up) ? fixed_up
-                                            : RayFit(mask, shoulder_px, 0.35 * upper_len_px,
-                                                     0.95 * upper_len_px, kNaN, 0);
-  if (!std::isfinite(up)) return false;
-  const cv::Point2d e = shoulder_px + DirectionVector(up) * upper_len_px;
-  const double fo = RayFit(mask, e, 0.25 * fore_len_px, 0.8 * fore_len_px, up + 180, 25);
-  // A bend the 30 % rule missed must be clear: near the rest pose the visible part of a straight
-  // arm is a sliver whose ray is off the arm's axis.
-  const bool near_rest = std::fabs(AngleDiff(up, options.rest_deg)) < 25;
-  const double min_bend = rule_bent || !near_rest ? (was_bent ? 8.0 : 12.0) : 22.0;
-  if (!std::isfinite(fo) || std::fabs(AngleDiff(fo, up)) < min_bend) {
-    g->bent = false;
-    g->note = "straight arm (ray fit)";
-    FinishStraight(mask, box, shoulder_px, options, g);
-    return true;
-  }
-  const cv::Point2d w = e + DirectionVector(fo) * fore_len_px;
-  MomentAccumulator ua, fa;
-  Split(
-      mask, box,
-      [&](int x, int y) {
-        const cv::Point2d p(x, y);
-        return SquaredDistanceToSegment(p, shoulder_px, e) <= SquaredDistanceToSegment(p, e, w);
-      },
-      &ua, &fa);
-  g->bent = true;
-  g->elbow_px = e;
-  g->wrist_px = w;
-  g->upper_com_px = ua.count() > 0 ? Centre(ua.Moments()) : (shoulder_px + e) * 0.5;
-  g->fore_com_px = fa.count() > 0 ? Centre(fa.Moments()) : (e + w) * 0.5;
-  g->upper_deg = up;
-  g->fore_deg = fo;
-  g->reach_px = ReachAlong(g->contour, shoulder_px, up);
-  g->note = "bent arm (ray fit)";
-  return true;
-}
-
-void RefitWithUpper(const cv::Mat& mask, const cv::Rect& box, const cv::Point2d& shoulder_px,
-                    const BgsubOptions& options, bool was_bent, double upper_deg,
-                    double upper_len_px, double fore_len_px, ArmGeometry* g) {
-  const bool rule_bent =
-      g->defect_depth_px >
-      (options.straight_ratio + (was_bent ? -1 : 1) * options.bend_hysteresis) * g->axes.major;
-  RayFitArm(mask, box, shoulder_px, options, was_bent, rule_bent, upper_len_px, fore_len_px, g,
-            upper_deg);
-  if (!g->bent) {
-    // Straight: one direction for both, the person-mask one near the shoulder.
-    g->upper_deg = upper_deg;
-    g->fore_deg = upper_deg;
-    const cv::Point2d v = DirectionVector(upper_deg);
-    g->reach_px = ReachAlong(g->contour, shoulder_px, upper_deg);
-    g->wrist_px = shoulder_px + v * g->reach_px;
-    g->elbow_px = shoulder_px + v * (g->reach_px / 2);
-  }
-}
-
 ArmGeometry AnalyzeArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point2d& shoulder_px,
-                       const BgsubOptions& options, bool was_bent, double upper_len_px,
-                       double fore_len_px) {
+                       const BgsubOptions& options) {
   ArmGeometry g;
   // Contour and hull (thesis 5.2.5, Sklansky's scan of section 3.6).
   g.contour = LargestContour(mask, box);
@@ -287,16 +152,11 @@ ArmGeometry AnalyzeArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point
   g.found = true;
 
   // The 30 % rule (5.2.6): a defect shallower than 30 % of the semi-major axis is a straight arm.
-  double ratio = options.straight_ratio;
-  if (!options.thesis_mode) ratio += was_bent ? -options.bend_hysteresis : options.bend_hysteresis;
+  const double ratio = options.straight_ratio;
   g.bent = !defects.empty() && g.defect_depth_px > ratio * g.axes.major;
-  if (!options.thesis_mode && upper_len_px > 0 && fore_len_px > 0 &&
-      RayFitArm(mask, box, shoulder_px, options, was_bent, g.bent, upper_len_px, fore_len_px, &g)) {
-    return g;
-  }
   if (!g.bent) {
     g.note = "straight arm";
-    FinishStraight(mask, box, shoulder_px, options, &g);
+    FinishStraight(mask, box, shoulder_px, &g);
     return g;
   }
 
@@ -310,7 +170,7 @@ ArmGeometry AnalyzeArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point
           &a, &b)) {
     g.bent = false;
     g.note = "elbow split left an empty part: straight arm";
-    FinishStraight(mask, box, shoulder_px, options, &g);
+    FinishStraight(mask, box, shoulder_px, &g);
     return g;
   }
   // The part nearer the shoulder is the upper arm.
@@ -318,58 +178,16 @@ ArmGeometry AnalyzeArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point
     const RegionMoments m = acc.Moments();
     return std::hypot(m.cx - shoulder_px.x, m.cy - shoulder_px.y);
   };
-  RegionMoments upper = dist(a) <= dist(b) ? a.Moments() : b.Moments();
-  RegionMoments fore = dist(a) <= dist(b) ? b.Moments() : a.Moments();
-  cv::Point2d elbow = crease;
+  const RegionMoments upper = dist(a) <= dist(b) ? a.Moments() : b.Moments();
+  const RegionMoments fore = dist(a) <= dist(b) ? b.Moments() : a.Moments();
+  const cv::Point2d elbow = crease;
   g.note = "bent arm (thesis split)";
-
-  if (!options.thesis_mode) {
-    // The crease is on the inside of the elbow; the joint is half an arm's width further in,
-    // away from the hull edge the defect hangs from.
-    const cv::Point2d e0 = g.contour[static_cast<std::size_t>(d.start_index)];
-    const cv::Point2d e1 = g.contour[static_cast<std::size_t>(d.end_index)];
-    cv::Point2d edge = e1 - e0;
-    const double edge_len = std::hypot(edge.x, edge.y);
-    cv::Point2d wrist = FarthestFrom(mask, box, crease, g.contour, Centre(fore));
-    if (edge_len > 0) {
-      cv::Point2d n(-edge.y / edge_len, edge.x / edge_len);  // a normal of the hull edge
-      if (Dot(n, crease - e0) > 0) n = -n;                   // pointing from the crease outwards
-      const double length = std::hypot(crease.x - shoulder_px.x, crease.y - shoulder_px.y) +
-                            std::hypot(wrist.x - crease.x, wrist.y - crease.y);
-      const double half_width = length > 0 ? std::min(g.whole.m00 / (2 * length), d.depth_px) : 0;
-      elbow = crease - n * half_width;
-    }
-    // Two-line refinement: every pixel goes to the nearer of the segments shoulder-elbow and
-    // elbow-wrist. This keeps a sharply folded forearm apart from the upper arm, where the
-    // straight cut across the major axis slices through both.
-    for (int iter = 0; iter < 2; ++iter) {
-      MomentAccumulator ua, fa;
-      const cv::Point2d s = shoulder_px, e = elbow, w = wrist;
-      if (!Split(
-              mask, box,
-              [&](int x, int y) {
-                const cv::Point2d p(x, y);
-                return SquaredDistanceToSegment(p, s, e) <= SquaredDistanceToSegment(p, e, w);
-              },
-              &ua, &fa)) {
-        break;
-      }
-      upper = ua.Moments();
-      fore = fa.Moments();
-      wrist = FarthestFrom(mask, box, elbow, g.contour, Centre(fore));
-      g.note = "bent arm (two-line split)";
-    }
-    g.wrist_px = wrist;
-  }
-
   g.elbow_px = elbow;
   g.upper_com_px = Centre(upper);
   g.fore_com_px = Centre(fore);
   g.upper_deg = ResolveDirection(OrientationDeg(upper), shoulder_px, elbow);
   g.fore_deg = ResolveDirection(OrientationDeg(fore), elbow, g.fore_com_px);
-  if (options.thesis_mode) {
-    g.wrist_px = FarthestFrom(mask, box, elbow, g.contour, g.fore_com_px);
-  }
+  g.wrist_px = FarthestFrom(mask, box, elbow, g.contour, g.fore_com_px);
   g.reach_px = ReachAlong(g.contour, shoulder_px, g.upper_deg);
   return g;
 }

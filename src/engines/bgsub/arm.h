@@ -52,30 +52,9 @@ struct ArmGeometry {
   double reach_px = 0;   // farthest arm pixel from the shoulder along the arm's axis
 };
 
-// Analyses the arm region `mask` (CV_8UC1, 0/255, one region inside `box`). `was_bent` is the
-// previous frame's decision (hysteresis). Straight arms get one direction for both segments.
-// `upper_len_px`/`fore_len_px` (from the arm-length image; NaN when unknown) enable the improved
-// ray fit for bent arms.
+// Analyses the arm region `mask` (CV_8UC1, 0/255, one region inside `box`): the thesis' 30 %
+// rule decides straight or bent. Straight arms get one direction for both segments.
 ArmGeometry AnalyzeArm(const cv::Mat& mask, const cv::Rect& box, const cv::Point2d& shoulder_px,
-                       const BgsubOptions& options, bool was_bent, double upper_len_px = kNaN,
-                       double fore_len_px = kNaN);
-
-// Improved: redoes the bent/straight decision and the forearm of `g` (from AnalyzeArm) with the
-// upper arm's direction given (found elsewhere, e.g. in the person mask): the elbow at
-// `upper_len_px` along it, the forearm the best ray from there.
-void RefitWithUpper(const cv::Mat& mask, const cv::Rect& box, const cv::Point2d& shoulder_px,
-                    const BgsubOptions& options, bool was_bent, double upper_deg,
-                    double upper_len_px, double fore_len_px, ArmGeometry* g);
-
-// The direction from `origin` along which `mask` is covered best between distances d0 and d1
-// (1-degree rays; the middle of the widest near-best run). Rays within `exclude_half_deg` of
-// `exclude_deg` are skipped. NaN when no ray is covered for at least half its length.
-double RayFit(const cv::Mat& mask, const cv::Point2d& origin, double d0, double d1,
-              double exclude_deg, double exclude_half_deg);
-
-// Farthest projection of the points of `contour` (a region's outline) from `origin` along
-// `direction_deg`: how far the region reaches from `origin` in that direction.
-double ReachAlong(const std::vector<cv::Point>& contour, const cv::Point2d& origin,
-                  double direction_deg);
+                       const BgsubOptions& options);
 
 }  // namespace armmimic::bgsub

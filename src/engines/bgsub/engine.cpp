@@ -133,7 +133,7 @@ class BgsubEngine final : public Engine {
     }
     if (options_.thesis_mode) {
       bgsub::ToGray(frame.image(region_), &gray_);
-      MeasureThesis(frame, &m);
+      MeasureThesis(&m);
     } else {
       MeasureFit(frame, &m);
       gate_.Review(&m, m.phase == MeasurementPhase::kOk ? m.confidence : kNaN);
@@ -153,7 +153,7 @@ class BgsubEngine final : public Engine {
   void FinishStandstill() {
     if (options_.thesis_mode) {
       standstill_sum_.convertTo(scene_.standstill, CV_8UC1, 1.0 / standstill_count_);
-      bgsub::BuildScene(arm_length_gray_, arm_length_bgr_, options_, &buffers_, &scene_);
+      bgsub::BuildScene(arm_length_gray_, options_, &buffers_, &scene_);
       return;
     }
     pixels_.Finish(scene_.background_bgr, options_.threshold);
@@ -222,7 +222,7 @@ class BgsubEngine final : public Engine {
 
   // The thesis path (chapter 5): the largest region of the two-step difference, its hull and
   // deepest defect, the 30 % rule and the split.
-  void MeasureThesis(const Frame& frame, ArmMeasurement* m) {
+  void MeasureThesis(ArmMeasurement* m) {
     m->phase = MeasurementPhase::kLost;
     FillSceneOverlay(m);
     if (!scene_.note.empty() && !scene_.body_box && !scene_.fixed_shoulder) {
@@ -231,13 +231,11 @@ class BgsubEngine final : public Engine {
     }
     cv::Rect box;
     std::string note;
-    // Side unknown (no arm in the arm-length image): the largest moving region decides it.
-    const bool largest_only = scene_.side == 0 && !scene_.fixed_shoulder;
-    if (!bgsub::FindArmMask(gray_, frame.image(region_), scene_, options_, largest_only, &buffers_,
-                            &box, &note)) {
+    if (!bgsub::FindArmMask(gray_, scene_, options_, &buffers_, &box, &note)) {
       m->note = note;
       return;
     }
+    // Side unknown (no arm in the arm-length image): the moving region's place decides it.
     int side = scene_.side;
     if (side == 0 && scene_.body_box) {
       const RegionMoments rm = ComputeMoments(buffers_.arm, box);
@@ -249,7 +247,7 @@ class BgsubEngine final : public Engine {
 
       return;
     }
-    const bgsub::ArmGeometry g = bgsub::AnalyzeArm(buffers_.arm, box, *shoulder, options_, false);
+    const bgsub::ArmGeometry g = bgsub::AnalyzeArm(buffers_.arm, box, *shoulder, options_);
     if (!g.found) {
       m->note = g.note;
       return;

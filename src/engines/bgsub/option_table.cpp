@@ -18,10 +18,6 @@ const std::vector<OptionField<BgsubOptions>>& BgsubOptionFields() {
              "grey-level difference from the background (5.2.2, 5.2.4)")
           .Flag("--threshold")
           .Main(),
-      Int<B>("background_frames", &B::background_frames, 45, 1, 100000, "Background frames",
-             "frames averaged into the background image (5.2.1)")
-          .Flag("--background-frames")
-          .Input(),
       Int<B>("standstill_frames", &B::standstill_frames, 60, 1, 100000, "Standstill frames",
              "frames averaged into the standstill image (5.2.2)")
           .Flag("--standstill-frames")
@@ -42,34 +38,10 @@ const std::vector<OptionField<BgsubOptions>>& BgsubOptionFields() {
               "none of the improvements below")
           .Flag("--thesis")
           .Main(),
-      Bool<B>("compensate_drift", &B::compensate_drift, true, "Compensate brightness drift",
-              "subtract the global brightness drift before thresholding"),
-      Bool<B>("color_difference", &B::color_difference, true, "Colour difference",
-              "threshold the largest channel difference, not the grey one"),
-      Bool<B>("reject_shadow", &B::reject_shadow, true, "Reject shadows",
-              "drop pixels that are the background darkened with its hue kept"),
-      Bool<B>("reject_head", &B::reject_head, true, "Ignore the head",
-              "ignore movement above the shoulders, between them"),
-      Real<B>("near_shoulder", &B::near_shoulder, 0.5, 0.05, 10, 2, "Blob near shoulder",
-              "keep the blob nearest the shoulder, within this times the arm length"),
-      Bool<B>("two_line_split", &B::two_line_split, true, "Two-line split",
-              "refine the upper/fore split by the distance to the two segments"),
-      Bool<B>("extent_yaw", &B::extent_yaw, true, "Yaw from reach",
-              "yaw from the arm's reach along its axis, not the ellipse"),
-      Real<B>("bend_hysteresis", &B::bend_hysteresis, 0.05, 0, 0.09, 3, "Bend hysteresis",
-              "straight/bent switch at the straight-arm ratio -/+ this")
-          .Below("straight_ratio", true),
-      Bool<B>("shoulder_from_arm_length", &B::shoulder_from_arm_length, true,
-              "Shoulder from arm-length image",
-              "shoulder where the horizontal arm of the arm-length image meets the body"),
-      Bool<B>("rest_pose", &B::rest_pose, true, "Rest pose",
-              "an unmoved arm is at its standstill pose, not lost"),
       Real<B>("rest_deg", &B::rest_deg, -90, -180, 180, 1, "Rest direction",
               "the standstill pose's direction, degrees (arms hanging: -90)"),
       Real<B>("upper_arm_fraction", &B::upper_arm_fraction, 0.45, 0.11, 0.89, 2,
               "Upper-arm fraction", "upper arm / shoulder-to-fingertip reach"),
-      Bool<B>("upper_from_person", &B::upper_from_person, true, "Upper arm from person mask",
-              "an upper arm near rest is fitted in the person mask with the torso removed"),
       Real<B>("max_speed_deg_s", &B::max_speed_deg_s, 600, 10, 100000, 0, "Fastest arm turn",
               "a segment turning faster than this, degrees a second, is a wrong pick: lost"),
       Real<B>("min_support", &B::min_support, 0.5, 0, 1, 2, "Minimum support",

@@ -19,11 +19,6 @@ Status BgsubOptions::Check() const {
     return Status::Error("bgsub.threshold",
                          "the threshold must be between 1 and 254 (got " + Str(threshold) + ")");
   }
-  if (background_frames < 1) {
-    return Status::Error(
-        "bgsub.background_frames",
-        "the number of background frames must be at least 1 (got " + Str(background_frames) + ")");
-  }
   if (standstill_frames < 1) {
     return Status::Error(
         "bgsub.standstill_frames",
@@ -43,13 +38,6 @@ Status BgsubOptions::Check() const {
   if (!(shoulder_height >= 0 && shoulder_height <= 1) ||
       !(shoulder_side >= 0 && shoulder_side <= 0.5)) {
     return Status::Error("bgsub shoulder_height must be in [0, 1] and shoulder_side in [0, 0.5]");
-  }
-  if (!(near_shoulder > 0)) {
-    return Status::Error("bgsub near_shoulder must be positive (got " + Str(near_shoulder) + ")");
-  }
-  if (!(bend_hysteresis >= 0 && bend_hysteresis < straight_ratio)) {
-    return Status::Error("bgsub bend_hysteresis must be in [0, straight_ratio) (got " +
-                         Str(bend_hysteresis) + ")");
   }
   if (!(upper_arm_fraction > 0.1 && upper_arm_fraction < 0.9)) {
     return Status::Error("bgsub upper_arm_fraction must be in (0.1, 0.9) (got " +

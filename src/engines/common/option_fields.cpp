@@ -4,6 +4,7 @@
 #include "armmimic/engines/option_fields.h"
 
 #include "armmimic/core/text.h"
+#include "armmimic/engines/removed_options.h"
 
 namespace armmimic {
 namespace {
@@ -81,6 +82,9 @@ Status SetEngineOption(const std::string& assignment, EngineOptions* o) {
   const std::string engine = assignment.substr(0, dot);
   const std::string key = assignment.substr(dot + 1, eq - dot - 1);
   const std::string value = Trim(assignment.substr(eq + 1));
+  if (const RemovedEngineOption* r = FindRemovedEngineOption(engine + "." + key)) {
+    return RemovedEngineOptionError(*r);
+  }
   if (engine == "bgsub") return SetField(BgsubOptionFields(), engine, key, value, &o->bgsub);
   if (engine == "lk") return SetField(LkOptionFields(), engine, key, value, &o->lk);
   if (engine == "marker") return SetField(MarkerOptionFields(), engine, key, value, &o->marker);

@@ -3,6 +3,7 @@
 #include <cstdlib>
 
 #include "armmimic/engines/option_fields.h"
+#include "armmimic/engines/removed_options.h"
 
 namespace armmimic {
 
@@ -24,13 +25,20 @@ Status RecordedAnalysisOptions(const AngleFile& file, const std::string& source_
       skipped->push_back("start=" + start + ": not a frame number");
     }
   }
+  std::vector<std::string> removed;
   for (const auto& [key, value] : file.meta) {
     // Only ENGINE.KEY entries are parameters; "threshold=45" and the like describe the run.
     const auto dot = key.find('.');
     if (dot == std::string::npos || dot == 0) continue;
+    if (FindRemovedEngineOption(key)) {
+      removed.push_back(key);
+      continue;
+    }
     const Status st = SetEngineOption(key + "=" + value, &o.engine);
     if (!st && skipped) skipped->push_back(st.message());
   }
+  // The settings this version removed, in one entry.
+  if (!removed.empty() && skipped) skipped->push_back(DescribeIgnoredEngineOptions(removed));
   *options = o;
   return Status::Ok();
 }

@@ -5,6 +5,7 @@
 
 #include "armmimic/core/text.h"
 #include "armmimic/engines/option_fields.h"
+#include "armmimic/engines/removed_options.h"
 
 namespace armmimic {
 namespace {
@@ -60,7 +61,8 @@ AngleMeta RunRecordMeta(const AnalysisOptions& o) {
   return meta;
 }
 
-Status RunFromMeta(const AngleMeta& meta, const std::string& source_name, AnalysisOptions* o) {
+Status RunFromMeta(const AngleMeta& meta, const std::string& source_name, AnalysisOptions* o,
+                   std::vector<std::string>* ignored) {
   auto err = [&](const std::string& what) { return Status::Error(source_name + ": " + what); };
   std::string engine;
   for (const auto& [k, v] : meta) {
@@ -74,10 +76,15 @@ Status RunFromMeta(const AngleMeta& meta, const std::string& source_name, Analys
                " is not an engine this version knows (bgsub, lk, marker or pose)");
   }
   std::vector<double> n;
+  std::vector<std::string> removed;
   for (const auto& [k, v] : meta) {
     if (k.find('.') != std::string::npos) {
       if (k.rfind(engine + ".", 0) != 0) {
         return err(k + "=" + v + " is not a setting of the recorded engine " + engine);
+      }
+      if (FindRemovedEngineOption(k)) {
+        removed.push_back(k);
+        continue;
       }
       const Status st = SetEngineOption(k + "=" + v, &run.engine);
       if (!st) return err(st.message());
@@ -113,14 +120,16 @@ Status RunFromMeta(const AngleMeta& meta, const std::string& source_name, Analys
     // Other keys describe the result (fps, width, ...) or repeat a setting under its old name.
   }
   *o = run;
+  if (ignored) *ignored = std::move(removed);
   return Status::Ok();
 }
 
-Status ReadRunRecord(const std::string& path, AnalysisOptions* options) {
+Status ReadRunRecord(const std::string& path, AnalysisOptions* options,
+                     std::vector<std::string>* ignored) {
   AngleFile file;
   const Status st = ReadAngleFile(path, &file);
   if (!st) return st;
-  return RunFromMeta(file.meta, path, options);
+  return RunFromMeta(file.meta, path, options, ignored);
 }
 
 }  // namespace armmimic
