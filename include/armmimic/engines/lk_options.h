@@ -46,7 +46,7 @@ struct LkOptions {
 
   // --- improvements over the thesis (6.4); ignored in thesis_mode ---
   bool thesis_mode = false;          // true: 2-means and summed increments only, as the thesis
-  bool use_bar = true;               // anchor each part on its sleeve colour (lk_arm_bar.h)
+  bool use_bar = true;               // anchor each part on its sleeve colour (lk/arm_bar.h)
   double bar_search_deg = 30;        // searched around the features' estimate
   double bar_min_score = 0.4;        // weaker bars (part in front of the body) are not used
   bool refine_shoulder = true;       // refine a body-box shoulder from the sleeve's lines

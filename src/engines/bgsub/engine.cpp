@@ -176,7 +176,7 @@ class BgsubEngine final : public Engine {
     if (cal_.ok) m->shoulder_px = Offset(cal_.shoulder_px, o);
   }
 
-  // The default path: the two-segment fit to the per-pixel evidence (bgsub_fit.h).
+  // The default path: the two-segment fit to the per-pixel evidence (bgsub/fit.h).
   void MeasureFit(const Frame& frame, ArmMeasurement* m) {
     m->phase = MeasurementPhase::kLost;
     FillSceneOverlay(m);

@@ -1,4 +1,4 @@
-// The LK features as one cue of the model tracker (lk_model_tracker.cpp): corners on the upper
+// The LK features as one cue of the model tracker (lk/model_tracker.cpp): corners on the upper
 // arm, on the forearm and on the body around the shoulder, tracked frame to frame (thesis 6.2).
 // Each arm feature tells how far its part turned about its joint since the last frame; the body's
 // features tell how far the shoulder moved (a swaying body). The medians of these are the

@@ -1,5 +1,5 @@
 // The Lucas-Kanade engine (thesis chapter 6): the setup that finds the shoulder (6.1), then one
-// of the two trackers (lk_thesis_tracker.cpp, lk_anchored_tracker.cpp) frame by frame.
+// of the two trackers (lk/thesis_tracker.cpp, lk/anchored_tracker.cpp) frame by frame.
 //
 // Setup: with a background and no --shoulder, the first standstill_frames frames are averaged
 // (phase kSetup, no rows); the body box of standstill vs background gives the shoulder, and the

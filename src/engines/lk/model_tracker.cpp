@@ -1,7 +1,7 @@
 // The model tracker: the LK engine's default path when the arm's joints are known in the start
 // frame. From that frame it learns what the arm looks like (arm_appearance.h: its colour against
 // its surroundings, the segments' widths, the hand) and starts learning the scene without the
-// arm. Every later frame the features (lk_arm_flow.h) predict how the arm moved; the two-segment
+// arm. Every later frame the features (lk/arm_flow.h) predict how the arm moved; the two-segment
 // model (arm_model_fit.h) is then fitted around that prediction and around the last pose, and
 // over every pose the arm can take. The frame is written with a confidence: how well the best
 // pose explains the image compared with how well the arm usually does, and `lost` when that is

@@ -57,7 +57,7 @@ class Tracker {
 
 std::unique_ptr<Tracker> CreateThesisTracker(const LkOptions& options);
 std::unique_ptr<Tracker> CreateAnchoredTracker(const LkOptions& options);
-// The two-segment model tracker (lk_model_tracker.cpp): needs the joints in the start frame.
+// The two-segment model tracker (lk/model_tracker.cpp): needs the joints in the start frame.
 std::unique_ptr<Tracker> CreateModelTracker(const LkOptions& options);
 
 // Of `shoulders`, the one whose side moved first: the index whose half of the picture (split

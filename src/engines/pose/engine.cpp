@@ -3,9 +3,9 @@
 // (and any frame after the person was lost) runs on the whole image padded to a square, later
 // frames on a square around the previous keypoints; when the arm's scores drop in a crop, the
 // whole image is searched again at once. That body look is followed by a closer look at the
-// upper body (pose_looks.h), which places the joints. A row is lost when a joint's score is low,
+// upper body (pose/looks.h), which places the joints. A row is lost when a joint's score is low,
 // a segment is much shorter than its usual length (pointing at the camera) or the looks disagree
-// on its direction (pose_gate.h): never `ok` on a guess.
+// on its direction (pose/gate.h): never `ok` on a guess.
 #include "armmimic/engines/pose.h"
 #include "common/engine_internal.h"
 #include "pose/gate.h"

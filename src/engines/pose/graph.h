@@ -1,6 +1,6 @@
 // TfjsGraph: a TensorFlow.js graph model (model.json and its weight shards) read into plain
 // structs: the nodes with their ops, inputs and attributes, and every weight as float32 (float16
-// weights dequantised, int32 ones converted). Only reading happens here; pose_net.h builds the
+// weights dequantised, int32 ones converted). Only reading happens here; pose/net.h builds the
 // network from it.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The LK engine's sleeve measurements (lk_arm_bar.h) on drawn bars of known direction and width:
+// The LK engine's sleeve measurements (lk/arm_bar.h) on drawn bars of known direction and width:
 // the sleeve's axis is found from its edges whatever the joint's position, a width read too
 // narrow no longer tilts it, and a sleeve's length and width are read as drawn.
 #include "lk/arm_bar.h"

@@ -1,7 +1,7 @@
-// When a pose row is lost (pose_gate.cpp), from hand-made looks (no network): an unseen joint, a
+// When a pose row is lost (pose/gate.cpp), from hand-made looks (no network): an unseen joint, a
 // segment pointing at the camera, and looks (the arm look, the mirrored look) that disagree on a
-// segment's direction; and what an ok row carries. Also the looks it is fed (pose_looks.cpp's
-// PoseLooks) and the arm look's crop (pose_crop.cpp).
+// segment's direction; and what an ok row carries. Also the looks it is fed (pose/looks.cpp's
+// PoseLooks) and the arm look's crop (pose/crop.cpp).
 #include "pose/gate.h"
 
 #include <gtest/gtest.h>
