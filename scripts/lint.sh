@@ -55,6 +55,10 @@ TIDY_RE='^src/(core|engines|synth|robot|sim|serial|live|cli)/.*\.cpp$'
 
 # The candidate files, relative to the repository root.
 if [[ $mode == changed ]]; then
+  if [[ -n $base ]] && ! git rev-parse -q --verify "$base^{commit}" >/dev/null; then
+    echo "lint: --base $base: no such commit" >&2
+    exit 2
+  fi
   if [[ -z $base ]]; then base=$(grep -v '^#' .ci/lint-base | tr -d '[:space:]'); fi
   if ! git rev-parse -q --verify "$base^{commit}" >/dev/null; then
     echo "lint: base $base is not in this clone (a shallow clone?); checking every file" >&2
