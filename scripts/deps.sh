@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages armmimic needs, if any is missing. Safe to run again.
-#   scripts/deps.sh [--cli] [--with-extras] [--with-model]
+#   scripts/deps.sh [--cli] [--with-extras] [--with-lint] [--with-model]
 #   (none)         what the whole build needs: CLI, GUI, tests, benchmarks and the .deb
 #   --cli          only what armmimic-cli needs (scripts/demo.sh builds the CLI alone)
-#   --with-extras  the sanitizer, fuzzing and screenshot tools too
+#   --with-extras  the sanitizer, fuzzing and screenshot tools too, and the lint tools
+#   --with-lint    clang-format and clang-tidy (scripts/lint.sh)
 #   --with-model   an optional extra beyond Debian packages: fetch the pose engine's model (MoveNet Lightning, from the npm package
 #                  @vladmandic/human 3.3.6), check its SHA-256 and put it in .cache/armmimic
 #                  (or $ARMMIMIC_MODEL_DIR), where armmimic finds it without flags
@@ -12,14 +13,16 @@ cd "$(dirname "$0")/.."
 
 CLI_ONLY=0
 WITH_EXTRAS=0
+WITH_LINT=0
 WITH_MODEL=0
 for arg in "$@"; do
   case "$arg" in
     --cli) CLI_ONLY=1 ;;
     --with-extras) WITH_EXTRAS=1 ;;
+    --with-lint) WITH_LINT=1 ;;
     --with-model) WITH_MODEL=1 ;;
     *)
-      echo "scripts/deps.sh: unknown option $arg (--cli, --with-extras, --with-model)" >&2
+      echo "scripts/deps.sh: unknown option $arg (--cli, --with-extras, --with-lint, --with-model)" >&2
       exit 2
       ;;
   esac
@@ -86,10 +89,13 @@ PACKAGES=(
 )
 # Extra tools for the sanitizer/fuzz runs and the screenshots; installed with --with-extras.
 EXTRAS=(clang libclang-rt-14-dev xvfb xauth)
+# The format and tidy checks of scripts/lint.sh; installed with --with-lint or --with-extras.
+LINT=(clang-format clang-tidy)
 
 wanted=("${PACKAGES[@]}")
 if ((CLI_ONLY)); then wanted=("${CLI_PACKAGES[@]}"); fi
 if ((WITH_EXTRAS)); then wanted+=("${EXTRAS[@]}"); fi
+if ((WITH_EXTRAS || WITH_LINT)); then wanted+=("${LINT[@]}"); fi
 
 missing=()
 for p in "${wanted[@]}"; do

@@ -91,6 +91,7 @@ void DefineFlags(ArgParser& p, AnalyzeFlags& a) {
 std::vector<NamedPath> InputsOf(const AnalysisOptions& o, const AnalyzeFlags& a,
                                 const std::vector<std::string>& videos) {
   std::vector<NamedPath> in;
+  in.reserve(videos.size() + 6);  // the videos and at most the six files below
   for (const std::string& v : videos) in.push_back({"INPUT", v});
   for (const auto& [flag, path] :
        {std::pair<const char*, const std::string*>{"--background", &o.background_path},

@@ -50,8 +50,10 @@ int Fail(const std::string& message) {
 // mimic-20240131-142501.tsv in the current folder.
 std::string DefaultOutput() {
   const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
   char name[64];
-  std::strftime(name, sizeof(name), "mimic-%Y%m%d-%H%M%S.tsv", std::localtime(&now));
+  std::strftime(name, sizeof(name), "mimic-%Y%m%d-%H%M%S.tsv", &local);
   return name;
 }
 

@@ -249,7 +249,7 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
 
 Status ReadAngleFile(const std::string& path, AngleFile* out) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return Status::Error(path + ": cannot open (" + std::strerror(errno) + ")");
+  if (!in) return Status::Error(path + ": cannot open (" + ErrnoText(errno) + ")");
   return ParseAngleFile(in, path, out);
 }
 
@@ -294,7 +294,7 @@ Status AngleFileWriter::Open(const std::string& path, const AngleMeta& meta, boo
   impl_->signed_yaw_column = signed_yaw_column;
   const std::string header = HeaderText(meta, file_column, confidence_column, signed_yaw_column);
   if (std::fputs(header.c_str(), impl_->file.file()) < 0) {
-    return Status::Error(path + ": write failed (" + std::strerror(errno) + ")");
+    return Status::Error(path + ": write failed (" + ErrnoText(errno) + ")");
   }
   impl_->open = true;
   return Status::Ok();
@@ -310,7 +310,7 @@ Status AngleFileWriter::Write(const AngleRow& row) {
       FormatAngleRow(row, impl_->file_column, impl_->confidence_column, impl_->signed_yaw_column) +
       "\n";
   if (std::fputs(s.c_str(), impl_->file.file()) < 0) {
-    return Status::Error(impl_->path + ": write failed (" + std::strerror(errno) + ")");
+    return Status::Error(impl_->path + ": write failed (" + ErrnoText(errno) + ")");
   }
   ++impl_->rows;
   return Status::Ok();

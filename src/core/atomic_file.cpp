@@ -9,6 +9,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "armmimic/core/text.h"
+
 namespace armmimic {
 namespace {
 
@@ -45,7 +47,7 @@ Status AtomicFile::Open(const std::string& path) {
   std::vector<char> buf(templ.begin(), templ.end());
   buf.push_back('\0');
   const int fd = mkstemp(buf.data());
-  if (fd < 0) return Status::Error(path + ": cannot write (" + std::strerror(errno) + ")");
+  if (fd < 0) return Status::Error(path + ": cannot write (" + ErrnoText(errno) + ")");
   fchmod(fd, 0644);
   temp_path_ = buf.data();
   file_ = fdopen(fd, "wb");
@@ -53,7 +55,7 @@ Status AtomicFile::Open(const std::string& path) {
     ::close(fd);
     unlink(temp_path_.c_str());
     temp_path_.clear();
-    return Status::Error(path + ": cannot write (" + std::strerror(errno) + ")");
+    return Status::Error(path + ": cannot write (" + ErrnoText(errno) + ")");
   }
   return Status::Ok();
 }
@@ -68,13 +70,13 @@ Status AtomicFile::Commit() {
   if (!ok) {
     unlink(temp_path_.c_str());
     temp_path_.clear();
-    return Status::Error(path_ + ": write failed (" + std::strerror(err) + ")");
+    return Status::Error(path_ + ": write failed (" + ErrnoText(err) + ")");
   }
   if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
     const int rerr = errno;
     unlink(temp_path_.c_str());
     temp_path_.clear();
-    return Status::Error(path_ + ": cannot replace (" + std::strerror(rerr) + ")");
+    return Status::Error(path_ + ": cannot replace (" + ErrnoText(rerr) + ")");
   }
   temp_path_.clear();
   return Status::Ok();
@@ -96,7 +98,7 @@ Status WriteFileAtomically(const std::string& path, const std::string& bytes) {
   Status st = out.Open(path);
   if (!st) return st;
   if (!bytes.empty() && std::fwrite(bytes.data(), 1, bytes.size(), out.file()) != bytes.size()) {
-    return Status::Error(path + ": write failed (" + std::strerror(errno) + ")");
+    return Status::Error(path + ": write failed (" + ErrnoText(errno) + ")");
   }
   return out.Commit();
 }

@@ -13,6 +13,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "armmimic/core/atomic_file.h"
+#include "armmimic/core/text.h"
 
 namespace armmimic {
 namespace {
@@ -65,7 +66,7 @@ Status ReadImage(const std::string& path, cv::Mat* bgr) {
   if (path.empty()) return Status::Error("image path is empty");
   struct stat st {};
   if (stat(path.c_str(), &st) != 0) {
-    return Status::Error(path + ": cannot open image (" + std::strerror(errno) + ")");
+    return Status::Error(path + ": cannot open image (" + ErrnoText(errno) + ")");
   }
   if (S_ISDIR(st.st_mode)) return Status::Error(path + ": is a directory, not an image");
   if (st.st_size == 0) return Status::Error(path + ": empty file (0 bytes), not an image");

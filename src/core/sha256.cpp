@@ -7,6 +7,8 @@
 #include <fstream>
 #include <vector>
 
+#include "armmimic/core/text.h"
+
 namespace armmimic {
 namespace {
 
@@ -103,7 +105,7 @@ std::string Sha256Hex(const std::uint8_t* data, std::size_t size) {
 
 Status Sha256File(const std::string& path, std::string* hex) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return Status::Error(path + ": cannot open (" + std::strerror(errno) + ")");
+  if (!in) return Status::Error(path + ": cannot open (" + ErrnoText(errno) + ")");
   Sha256 s;
   std::vector<char> buf(1 << 16);
   while (in) {

@@ -118,4 +118,6 @@ std::string PercentDecode(const std::string& value) {
   return out;
 }
 
+std::string ErrnoText(int err) { return std::generic_category().message(err); }
+
 }  // namespace armmimic

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "armmimic/core/image_io.h"
+#include "armmimic/core/text.h"
 #include "video_source_impl.h"
 
 namespace armmimic {
@@ -43,12 +44,12 @@ bool IsVideoExtension(const std::string& ext) {
 Status CheckReadableFile(const std::string& path) {
   struct stat st {};
   if (stat(path.c_str(), &st) != 0) {
-    return Status::Error(path + ": " + (errno == ENOENT ? "no such file" : std::strerror(errno)));
+    return Status::Error(path + ": " + (errno == ENOENT ? "no such file" : ErrnoText(errno)));
   }
   if (S_ISDIR(st.st_mode)) return Status::Error(path + ": is a directory");
   if (!S_ISREG(st.st_mode)) return Status::Error(path + ": not a regular file");
   if (access(path.c_str(), R_OK) != 0) {
-    return Status::Error(path + ": cannot read (" + std::strerror(errno) + ")");
+    return Status::Error(path + ": cannot read (" + ErrnoText(errno) + ")");
   }
   if (st.st_size == 0) return Status::Error(path + ": empty file (0 bytes)");
   return Status::Ok();

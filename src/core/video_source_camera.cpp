@@ -42,7 +42,7 @@ class CameraSource : public VideoSource {
 #endif
       } else {
         // As for files: our message names the stream; FFmpeg's own log stays quiet.
-        if (!std::getenv("OPENCV_FFMPEG_DEBUG")) setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);
+        QuietFfmpegLog();
         opened = cap_.open(spec, cv::CAP_FFMPEG,
                            {cv::CAP_PROP_OPEN_TIMEOUT_MSEC, kOpenTimeoutMs,
                             cv::CAP_PROP_READ_TIMEOUT_MSEC, kReadTimeoutMs});

@@ -165,10 +165,7 @@ class VideoFileSource : public VideoSource {
 
  private:
   Status OpenCapture() {
-    // FFmpeg's own warnings ("overread 8", "No JPEG data found") would interleave with ours,
-    // which name the file and frame. OpenCV reads this once, before its first FFmpeg capture;
-    // a user who wants them sets OPENCV_FFMPEG_LOGLEVEL (or OPENCV_FFMPEG_DEBUG) themselves.
-    if (!std::getenv("OPENCV_FFMPEG_DEBUG")) setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);
+    QuietFfmpegLog();
     cap_.release();
     bool opened = false;
     try {

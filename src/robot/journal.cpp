@@ -8,6 +8,8 @@
 
 #include <unistd.h>
 
+#include "armmimic/core/text.h"
+
 namespace armmimic::robot {
 namespace {
 
@@ -110,7 +112,7 @@ Status SendJournal::Open(const std::string& path, const std::string& hash, int l
   path_ = path;
   file_ = std::fopen(path.c_str(), append ? "a" : "w");
   if (!file_) {
-    return Status::Error(path + ": cannot write the send journal: " + std::strerror(errno));
+    return Status::Error(path + ": cannot write the send journal: " + ErrnoText(errno));
   }
   if (append) return Append("# resumed");
   std::string name = source_name;
@@ -126,7 +128,7 @@ Status SendJournal::Append(const std::string& record) {
   if (!file_) return Status::Error(path_ + ": the send journal is not open");
   if (std::fprintf(file_, "%s\n", record.c_str()) < 0 || std::fflush(file_) != 0 ||
       fsync(fileno(file_)) != 0) {
-    return Status::Error(path_ + ": cannot write the send journal: " + std::strerror(errno));
+    return Status::Error(path_ + ": cannot write the send journal: " + ErrnoText(errno));
   }
   return Status::Ok();
 }

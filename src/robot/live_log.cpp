@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "armmimic/core/angle_file.h"
+#include "armmimic/core/text.h"
 
 namespace armmimic::robot {
 namespace {
@@ -31,7 +32,7 @@ LiveJournal::~LiveJournal() {
 Status LiveJournal::Open(const std::string& path, const std::string& header) {
   path_ = path;
   file_ = std::fopen(path.c_str(), "w");
-  if (!file_) return Status::Error(path + ": cannot write the journal: " + std::strerror(errno));
+  if (!file_) return Status::Error(path + ": cannot write the journal: " + ErrnoText(errno));
   Status s = Append("# armmimic mimic journal v1");
   if (s.ok()) s = Append("stream " + header);
   return s;
@@ -40,7 +41,7 @@ Status LiveJournal::Open(const std::string& path, const std::string& header) {
 Status LiveJournal::Append(const std::string& record) {
   if (!file_) return Status::Error(path_ + ": the journal is not open");
   if (std::fprintf(file_, "%s\n", record.c_str()) < 0 || std::fflush(file_) != 0) {
-    return Status::Error(path_ + ": cannot write the journal: " + std::strerror(errno));
+    return Status::Error(path_ + ": cannot write the journal: " + ErrnoText(errno));
   }
   return Status::Ok();
 }
@@ -69,7 +70,7 @@ Status LiveJournal::Close(const std::string& stop_reason, int last_ack_seq, int 
                                 : std::string("last-ack none"));
   }
   if (s.ok() && fsync(fileno(file_)) != 0) {
-    s = Status::Error(path_ + ": cannot sync the journal: " + std::strerror(errno));
+    s = Status::Error(path_ + ": cannot sync the journal: " + ErrnoText(errno));
   }
   std::fclose(file_);
   file_ = nullptr;
@@ -119,7 +120,7 @@ Status LatencyLog::Open(const std::string& path) {
   if (path.empty()) return Status::Ok();
   file_ = std::fopen(path.c_str(), "w");
   if (!file_) {
-    return Status::Error(path + ": cannot write the latency log: " + std::strerror(errno));
+    return Status::Error(path + ": cannot write the latency log: " + ErrnoText(errno));
   }
   std::fprintf(file_,
                "# armmimic mimic latency v1\n"

@@ -12,6 +12,8 @@
 #include <termios.h>
 #include <unistd.h>
 
+#include "armmimic/core/text.h"
+
 namespace armmimic::sim {
 
 PtyServer::PtyServer(EmulatorOptions options)
@@ -38,7 +40,7 @@ Status PtyServer::Start(const std::string& link_path, const std::string& log_pat
   if (!log_path.empty()) {
     log_file_ = std::fopen(log_path.c_str(), "w");
     if (!log_file_) {
-      return Status::Error(log_path + ": cannot write the move log: " + std::strerror(errno));
+      return Status::Error(log_path + ": cannot write the move log: " + ErrnoText(errno));
     }
     emulator_.SetMoveCallback([this](const LoggedMove& move) {
       std::fprintf(log_file_, "%s\n", FormatLogLine(move).c_str());
@@ -48,7 +50,7 @@ Status PtyServer::Start(const std::string& link_path, const std::string& log_pat
   int master = -1, slave = -1;
   char name[256] = {0};
   if (openpty(&master, &slave, name, nullptr, nullptr) != 0) {
-    return Status::Error(std::string("cannot open a pseudo-terminal: ") + std::strerror(errno));
+    return Status::Error(std::string("cannot open a pseudo-terminal: ") + ErrnoText(errno));
   }
   termios tio{};
   if (tcgetattr(slave, &tio) == 0) {
@@ -72,7 +74,7 @@ Status PtyServer::Start(const std::string& link_path, const std::string& log_pat
       unlink(link_path.c_str());
     }
     if (symlink(device_path_.c_str(), link_path.c_str()) != 0) {
-      const std::string err = std::strerror(errno);
+      const std::string err = ErrnoText(errno);
       Stop();
       return Status::Error("sim.link", link_path + ": cannot create the symlink: " + err);
     }

@@ -123,6 +123,7 @@ void PaintBody(Layer* layer, const std::vector<cv::Point2d>& polygon, double axi
   const cv::Rect box = Clip(x0 - 1, y0 - 1, x1 + 1, y1 + 1, layer->color.size());
   if (box.empty()) return;
   cv::Mat big(box.height << kShift, box.width << kShift, CV_8UC1, cv::Scalar(0));
+  pts.reserve(polygon.size());
   for (const auto& p : polygon) {
     pts.emplace_back(cvRound((p.x - box.x + 0.5) * (1 << kShift) - 0.5),
                      cvRound((p.y - box.y + 0.5) * (1 << kShift) - 0.5));

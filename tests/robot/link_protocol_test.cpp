@@ -63,7 +63,7 @@ TEST(LinkProtocol, EchoSplitAcrossManyReads) {
 }
 
 TEST(LinkProtocol, AcceptsCrLfCrAndLfLineEndsAndPromptOnItsOwnLine) {
-  for (const std::string& nl : {"\r\n", "\r", "\n", "\n\r", "\r\r\n"}) {
+  for (const std::string nl : {"\r\n", "\r", "\n", "\n\r", "\r\r\n"}) {
     Fixture f({"SPEED 50", "SPEED 60", "SPEED 70"});
     f.link.OnBytes("SPEED 50" + nl + "." + nl, 0.1);
     f.link.OnBytes(nl + "SPEED 60" + nl + nl + "." + nl, 0.2);

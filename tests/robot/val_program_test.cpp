@@ -53,7 +53,9 @@ TEST(ValProgram, StreamModeTextReadsBackAndPassesTheSafetyCheck) {
                       "DO MOVE #PPOINT(-160.00,-200.00,45.00,265.50,-99.50,-266.00)"),
             lines.end());
   for (const auto& l : lines) {
-    if (l[0] != ';') EXPECT_LE(l.size(), 80u) << l;
+    if (l[0] != ';') {
+      EXPECT_LE(l.size(), 80u) << l;
+    }
   }
 
   ValProgram p;

@@ -197,7 +197,9 @@ TEST(ArmScene, MotionsCoverTheirRangesSmoothly) {
       EXPECT_LE(t.bend_deg, 150 + 1e-9);
       EXPECT_GE(t.yaw_deg, 0);
       EXPECT_LE(t.yaw_deg, 70 + 1e-9);
-      if (t.yaw_deg > 0) EXPECT_DOUBLE_EQ(t.bend_deg, 0);
+      if (t.yaw_deg > 0) {
+        EXPECT_DOUBLE_EQ(t.bend_deg, 0);
+      }
       // Human speeds: a few degrees per frame at 30 fps.
       EXPECT_LT(std::fabs(AngleDiff(t.upper_deg, prev.upper_deg)), 8.0) << f;
       EXPECT_LT(std::fabs(t.bend_deg - prev.bend_deg), 8.0) << f;

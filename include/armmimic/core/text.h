@@ -32,4 +32,8 @@ std::string Trim(const std::string& text);
 std::string PercentEncode(const std::string& value);
 std::string PercentDecode(const std::string& value);
 
+// The system's text for an errno value ("No such file or directory"), the same as std::strerror
+// gives but safe to call from several threads at once (analyses run on worker threads).
+std::string ErrnoText(int err);
+
 }  // namespace armmimic

@@ -23,7 +23,7 @@ constexpr int kBodyPartShare = 25;
 
 double Quantile(std::vector<double> v, double q) {
   if (v.empty()) return kNaN;
-  auto at = v.begin() + static_cast<std::ptrdiff_t>(q * (v.size() - 1) + 0.5);
+  auto at = v.begin() + static_cast<std::ptrdiff_t>(std::lround(q * (v.size() - 1)));
   std::nth_element(v.begin(), at, v.end());
   return *at;
 }

@@ -191,8 +191,9 @@ std::vector<FitResult> FitAnywhere(const EvidenceMap& evidence, const ArmShape& 
     if (static_cast<int>(out.size()) >= count) break;
     ArmPose p;
     p.shoulder = shoulder;
-    p.upper_deg = Wrap180(-180 + kWideUpperStep * (k / nb + 1));
-    p.fore_deg = Wrap180(p.upper_deg - kMaxBendDeg + kWideBendStep * (k % nb));
+    const int upper_step = k / nb, bend_step = k % nb;  // the grid, row by row
+    p.upper_deg = Wrap180(-180 + kWideUpperStep * (upper_step + 1));
+    p.fore_deg = Wrap180(p.upper_deg - kMaxBendDeg + kWideBendStep * bend_step);
     out.push_back(FitNear(evidence, shape, p, refine));
   }
   std::sort(out.begin(), out.end(),

@@ -1,5 +1,7 @@
 #include "lk/flow.h"
 
+#include <cmath>
+
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
 
@@ -16,7 +18,7 @@ std::vector<cv::Point2f> DetectCorners(const cv::Mat& gray, const cv::Mat& mask,
   } else {
     allowed = mask.clone();
   }
-  const int radius = std::max(1, static_cast<int>(options.min_distance_px + 0.5));
+  const int radius = std::max(1, static_cast<int>(std::lround(options.min_distance_px)));
   for (const cv::Point2f& p : existing) {
     cv::circle(allowed, cv::Point(cvRound(p.x), cvRound(p.y)), radius, cv::Scalar(0), cv::FILLED);
   }

@@ -24,6 +24,7 @@ struct EdgeBand {
 };
 
 // What the reference taught about the lower part; fixed for the run.
+// NOLINTNEXTLINE(bugprone-reserved-identifier): __i0 is clang's own loop in the implicit copy
 struct LowerCalibration {
   EdgeBand bands[2];                           // above and below the markers
   double left_edge_px = 0, right_edge_px = 0;  // the reference's silhouette

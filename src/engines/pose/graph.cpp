@@ -9,6 +9,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "armmimic/core/text.h"
+
 namespace armmimic::internal {
 namespace {
 
@@ -102,7 +104,7 @@ Status ReadGroup(const cv::FileNode& group, const std::string& json_path, TfjsGr
   for (const cv::FileNode& p : group["paths"]) {
     const std::string shard = Dir(json_path) + static_cast<std::string>(p);
     std::ifstream in(shard, std::ios::binary);
-    if (!in) return Status::Error(shard + ": cannot open (" + std::strerror(errno) + ")");
+    if (!in) return Status::Error(shard + ": cannot open (" + ErrnoText(errno) + ")");
     bytes.append(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     shard_names += (shard_names.empty() ? "" : ", ") + shard;
   }
