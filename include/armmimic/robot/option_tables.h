@@ -27,6 +27,7 @@ template <typename O>
 std::vector<std::pair<std::string, std::string>> OptionTableValues(
     const std::vector<OptionField<O>>& fields, const std::string& table, const O& o) {
   std::vector<std::pair<std::string, std::string>> out;
+  out.reserve(fields.size());
   for (const auto& f : fields) out.emplace_back(table + "." + f.key, OptionExactText(f, o));
   return out;
 }
