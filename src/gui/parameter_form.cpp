@@ -56,7 +56,6 @@ ParameterForm::ParameterForm(EngineKind engine, std::vector<OptionField<EngineOp
   advanced_form->setRowWrapPolicy(QFormLayout::WrapLongRows);
   int advanced_count = 0;
   for (OptionField<EngineOptions>& f : rows) {
-    if (f.group == OptionGroup::kInput) continue;
     const QString label = QString::fromStdString(f.label);
     QString tip = QString::fromStdString(f.help);
     QWidget* editor = nullptr;

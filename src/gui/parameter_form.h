@@ -51,7 +51,6 @@ class ParameterForm : public QWidget {
   Q_OBJECT
  public:
   // `engine` names the widgets ("lk.max_corners") and the settings keys ("lk/max_corners").
-  // Rows of OptionGroup::kInput are left out: the analysis inputs set them.
   ParameterForm(EngineKind engine, std::vector<OptionField<EngineOptions>> rows,
                 QWidget* parent = nullptr);
 

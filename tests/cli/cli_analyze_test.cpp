@@ -153,7 +153,7 @@ TEST(CliAnalyze, UsageErrorsNameTheFlag) {
        "--param lk.max_corners=100 is not used by --engine bgsub"},
       {{"analyze", video, "-o", "a.tsv", "--engine", "marker", "--reference", arm, "--param",
         "marker.low=90"},
-       "--low: the lowest marker grey level 90 is above the highest 80"},
+       "--low: low threshold 90 is above the high threshold 80"},
       {{"background", video}, "-o"},
       {{"background", video, "-o", dir + "/bg.png", "--frames", "0"}, "--frames"},
   };

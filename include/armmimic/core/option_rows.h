@@ -21,7 +21,6 @@ template <typename O>
 struct Row {
   OptionField<O> f;
   Row& Main() { return Group(OptionGroup::kMain); }
-  Row& Input() { return Group(OptionGroup::kInput); }
   Row& Group(OptionGroup g) {
     f.group = g;
     return *this;
@@ -44,10 +43,17 @@ struct Row {
     f.min_exclusive = true;
     return *this;
   }
-  // Check() wants this field <= (strict: <) the field `key`.
+  // Check() wants this field <= (strict: <) the field `key`; a breach is keyed by `key`.
   Row& Below(const char* key, bool strict = false) {
     f.below = key;
     f.strictly_below = strict;
+    return *this;
+  }
+  // As Below, but a breach is keyed by this field and names both values ("low threshold 90 is
+  // above the high threshold 80"): for a lower bound people set while the upper one stays.
+  Row& BelowKeyedHere(const char* key, bool strict = false) {
+    Below(key, strict);
+    f.below_keys_self = true;
     return *this;
   }
   operator OptionField<O>() const { return f; }  // NOLINT: rows convert into the table

@@ -24,9 +24,8 @@ namespace armmimic {
 // written by the row's parse and format functions.
 enum class OptionKind { kInt, kDouble, kBool, kEnum, kText };
 
-// kMain: shown first; kAdvanced: in a folded "Advanced" section; kInput: set from the analysis
-// inputs (e.g. the background frames), so not edited as a parameter of its own.
-enum class OptionGroup { kMain, kAdvanced, kInput };
+// kMain: shown first; kAdvanced: in a folded "Advanced" section.
+enum class OptionGroup { kMain, kAdvanced };
 
 template <typename Options>
 struct OptionField {
@@ -44,8 +43,11 @@ struct OptionField {
   int decimals = 0;          // kDouble: digits shown
   double step = 1;           // editor step (2 for odd-only windows)
   // Relations Check() enforces between two fields: this one must be <= (or <) field `below`.
+  // A breach is keyed by the `below` field, or by this one with below_keys_self (where this is
+  // the setting people change: marker.low against marker.high).
   std::string below;
   bool strictly_below = false;
+  bool below_keys_self = false;
   std::vector<std::string> choices;  // kEnum: value names in enum order (value = index)
   // Values cross as double: ints are rounded, bools are 0/1, enums are the choice index.
   std::function<double(const Options&)> get;
@@ -172,8 +174,9 @@ Status SetOptionText(const OptionField<O>& f, const std::string& name, const std
 std::string OptionNoun(const std::string& label);
 
 // The range checks of a settings struct: every numeric field of `fields` in its range, and the
-// relations between fields. Errors carry the key "<table>.<key>" and say what the setting must
-// be, in the table's words ("cutoff must be >= 0 Hz").
+// relations between fields (rules of another shape stay in the struct's Check(), after these).
+// Errors carry the key "<table>.<key>" and say what the setting must be, in the table's words
+// ("cutoff must be >= 0 Hz").
 template <typename O>
 Status CheckOptionFields(const std::vector<OptionField<O>>& fields, const std::string& table,
                          const O& o) {
@@ -197,6 +200,12 @@ Status CheckOptionFields(const std::vector<OptionField<O>>& fields, const std::s
     const double v = f.get(o);
     const double u = upper->get(o);
     if (f.strictly_below ? v < u : v <= u) continue;
+    if (f.below_keys_self) {
+      return Status::Error(table + "." + f.key,
+                           OptionNoun(f.label) + " " + OptionValueText(f, v) +
+                               (f.strictly_below ? " is not below the " : " is above the ") +
+                               OptionNoun(upper->label) + " " + OptionValueText(*upper, u));
+    }
     return Status::Error(
         table + "." + upper->key,
         OptionNoun(upper->label) +

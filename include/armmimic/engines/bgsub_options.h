@@ -28,7 +28,7 @@ struct BgsubOptions {
   double min_support = 0.5;      // share of the fitted arm lying on the person mask, at least
   int confirm_frames = 3;        // agreeing frames before a new pick is trusted
 
-  Status Check() const;  // messages name the CLI flag where there is one
+  Status Check() const;  // the table's ranges (option_fields.h); errors carry "bgsub.KEY"
 };
 
 }  // namespace armmimic

@@ -73,7 +73,7 @@ struct LkOptions {
   // follow something else (the sleeve's cap rising with the arm). 0 keeps it at the click.
   double shoulder_sway = 0.05;
 
-  Status Check() const;
+  Status Check() const;  // the table's ranges and an odd window; errors carry "lk.KEY"
 };
 
 const char* LkArmSideName(LkArmSide side);  // "auto", "left", "right"

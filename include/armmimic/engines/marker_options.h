@@ -35,7 +35,7 @@ struct MarkerOptions {
   double max_upper_turn_deg = 60;
   // How far (relative to e) the upper marker's centroid may lie from the model's.
   double upper_tolerance = 0.06;
-  Status Check() const;  // messages name the flag (--low, --high, ...)
+  Status Check() const;  // the table's ranges and an odd median; errors carry "marker.KEY"
 };
 
 }  // namespace armmimic

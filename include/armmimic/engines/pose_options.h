@@ -31,7 +31,7 @@ struct PoseOptions {
   // Also look at the mirror image of the closer look's crop: the two are averaged, and their
   // disagreement counts like the others'. One more inference per frame.
   bool flip = false;
-  Status Check() const;
+  Status Check() const;  // the table's ranges, arm_crop 0 or >= 1; errors carry "pose.KEY"
 };
 
 const char* PoseSideName(PoseSide side);  // "auto", "left", "right"

@@ -31,11 +31,11 @@ const std::vector<OptionField<LkOptions>>& LkOptionFields() {
               "Anchored shoulder inset", "the anchored path's body-box shoulder inset"),
       Enum<L>("side", &L::side, LkArmSide::kAuto, {"auto", "left", "right"}, "Arm side",
               "side of the body box the moving arm is on, as seen on screen"),
-      Real<L>("initial_upper_deg", &L::initial_upper_deg, -90, -180, 180, 1, "Initial upper arm",
+      Real<L>("initial_upper_deg", &L::initial_upper_deg, -90, -360, 360, 1, "Initial upper arm",
               "upper-arm direction at the start, degrees")
           .Flag("--initial-upper")
           .Main(),
-      Real<L>("initial_fore_deg", &L::initial_fore_deg, -90, -180, 180, 1, "Initial forearm",
+      Real<L>("initial_fore_deg", &L::initial_fore_deg, -90, -360, 360, 1, "Initial forearm",
               "forearm direction at the start, degrees")
           .Flag("--initial-fore")
           .Main(),

@@ -14,49 +14,6 @@
 
 namespace armmimic {
 
-Status MarkerOptions::Check() const {
-  if (median_size < 1 || median_size % 2 == 0 || median_size > 31) {
-    return Status::Error("marker.median_size", "the median window must be odd, 1..31 (got " +
-                                                   std::to_string(median_size) + ")");
-  }
-  if (low < 0 || low > 255) {
-    return Status::Error("marker.low", "the lowest marker grey level must be in [0, 255]");
-  }
-  if (high < 0 || high > 255) {
-    return Status::Error("marker.high", "the highest marker grey level must be in [0, 255]");
-  }
-  if (low > high) {
-    return Status::Error("marker.low", "the lowest marker grey level " + std::to_string(low) +
-                                           " is above the highest " + std::to_string(high));
-  }
-  if (flood_range < 0 || flood_range > 255) {
-    return Status::Error("marker.flood_range", "the flood range must be in [0, 255]");
-  }
-  if (min_area < 1 || max_area < min_area) {
-    return Status::Error(min_area < 1 ? "marker.min_area" : "marker.max_area",
-                         "the marker areas need 1 <= min_area <= max_area");
-  }
-  if (!(min_aspect > 0 && max_aspect >= min_aspect)) {
-    return Status::Error(min_aspect > 0 ? "marker.max_aspect" : "marker.min_aspect",
-                         "the marker aspects need 0 < min_aspect <= max_aspect");
-  }
-  if (!(min_fill >= 0 && min_fill <= 1)) {
-    return Status::Error("marker.min_fill", "the marker fill must be in [0, 1]");
-  }
-  if (!(fov_deg >= 0 && fov_deg <= 140)) {
-    return Status::Error("marker.fov_deg", "the field of view must be in [0, 140] degrees");
-  }
-  if (!(max_marker_turn_deg > 0 && max_marker_turn_deg < 90)) {
-    return Status::Error("marker option max_marker_turn_deg must be in (0, 90)");
-  }
-  if (!(agreement_sigmas > 0)) return Status::Error("marker option agreement_sigmas must be > 0");
-  if (!(max_upper_turn_deg > 0 && max_upper_turn_deg < 90)) {
-    return Status::Error("marker option max_upper_turn_deg must be in (0, 90)");
-  }
-  if (!(upper_tolerance > 0)) return Status::Error("marker option upper_tolerance must be > 0");
-  return Status::Ok();
-}
-
 namespace internal {
 namespace {
 

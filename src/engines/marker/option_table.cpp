@@ -1,6 +1,9 @@
 // The parameter table of the marker engine (the marked joint, thesis chapter 4): one row per option
-// (option_table.h). The engines test checks it against its struct (same defaults, every field
-// listed, ranges that pass Check()).
+// (option_table.h), and MarkerOptions::Check(), which is the table's ranges and relations plus the
+// odd median window. The engines test checks the table against its struct (same defaults, every
+// field listed, ranges that pass Check(), a value outside a range refused with its key).
+#include <string>
+
 #include "armmimic/core/option_rows.h"
 #include "armmimic/engines/option_fields.h"
 
@@ -20,7 +23,7 @@ const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields() {
           .Main(),
       Int<M>("low", &M::low, 20, 0, 255, "Low threshold", "darkest marker grey level (4.2.2)")
           .Flag("--low")
-          .Below("high")
+          .BelowKeyedHere("high")
           .Main(),
       Int<M>("high", &M::high, 80, 0, 255, "High threshold", "brightest marker grey level (4.2.2)")
           .Flag("--high")
@@ -63,6 +66,15 @@ const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields() {
               "how far (relative to e) the upper marker may lie from where the model puts it"),
   };
   return fields;
+}
+
+Status MarkerOptions::Check() const {
+  if (Status st = CheckOptionFields(MarkerOptionFields(), "marker", *this); !st) return st;
+  if (median_size % 2 == 0) {  // cv::medianBlur takes odd windows only
+    return Status::Error("marker.median_size",
+                         "median window must be odd (got " + std::to_string(median_size) + ")");
+  }
+  return Status::Ok();
 }
 
 }  // namespace armmimic

@@ -1,6 +1,8 @@
+// The pose side names and PoseOptions::Check(): the ranges of the pose table (option_table.cpp)
+// and the one rule a range cannot say (no arm look between 0 and 1).
 #include "armmimic/engines/pose_options.h"
 
-#include <cmath>
+#include "armmimic/engines/option_fields.h"
 
 namespace armmimic {
 
@@ -27,17 +29,9 @@ bool ParsePoseSide(const std::string& name, PoseSide* out) {
 }
 
 Status PoseOptions::Check() const {
-  auto in = [](double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; };
-  if (!in(min_score, 0, 1)) return Status::Error("pose option min_score must be in [0, 1]");
-  if (!in(min_length_ratio, 0, 1)) {
-    return Status::Error("pose option min_length_ratio must be in [0, 1]");
-  }
-  if (!in(crop_score, 0, 1)) return Status::Error("pose option crop_score must be in [0, 1]");
-  if (!in(arm_crop, 0, 4) || (arm_crop > 0 && arm_crop < 1)) {
-    return Status::Error("pose option arm_crop must be 0 (one look) or in [1, 4]");
-  }
-  if (!in(max_disagreement_deg, 1, 180)) {
-    return Status::Error("pose option max_disagreement_deg must be in [1, 180]");
+  if (Status st = CheckOptionFields(PoseOptionFields(), "pose", *this); !st) return st;
+  if (arm_crop > 0 && arm_crop < 1) {  // a look smaller than the upper body's extent
+    return Status::Error("pose.arm_crop", "arm look size must be 0 (one look) or in [1, 4]");
   }
   return Status::Ok();
 }

@@ -1,9 +1,11 @@
 // The engines' parameter tables (option_fields.h) against their structs: every member listed
-// once, the documented defaults equal the struct's, and every range end passes Check().
+// once, the documented defaults equal the struct's, every range end passes Check(), and a value
+// just outside a range is refused by Check() with the row's key.
 #include "armmimic/engines/option_fields.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 #include <utility>
 
@@ -92,6 +94,66 @@ void CheckTable(const std::vector<OptionField<O>>& fields, const char* name) {
   }
 }
 
+// Check() is the table: a value just outside either end of a row's range is refused, keyed by
+// that row ("<table>.<key>"), and the message says what the setting must be.
+template <typename O>
+void CheckRefusesOutsideEachRange(const std::vector<OptionField<O>>& fields, const char* table) {
+  SCOPED_TRACE(table);
+  ASSERT_TRUE(O().Check().ok()) << O().Check().message();
+  int refused = 0;
+  for (const auto& f : fields) {
+    if (f.kind != OptionKind::kInt && f.kind != OptionKind::kDouble) continue;
+    const bool whole = f.kind == OptionKind::kInt;
+    std::vector<double> outside = {f.min_exclusive ? f.min
+                                   : whole         ? f.min - 1
+                                                   : std::nextafter(f.min, -HUGE_VAL)};
+    if (!std::isinf(f.max)) outside.push_back(whole ? f.max + 1 : std::nextafter(f.max, HUGE_VAL));
+    if (!whole) outside.push_back(std::nan(""));
+    for (const double v : outside) {
+      SCOPED_TRACE(f.key + " = " + std::to_string(v));
+      O o;
+      f.set(o, v);
+      const Status st = o.Check();
+      ASSERT_FALSE(st.ok());
+      EXPECT_EQ(st.key(), std::string(table) + "." + f.key);
+      EXPECT_NE(st.message().find(OptionNoun(f.label) + " must be"), std::string::npos)
+          << st.message();
+      ++refused;
+    }
+  }
+  EXPECT_GT(refused, 0);
+}
+
+TEST(OptionFieldsTest, ChecksRefuseAValueOutsideEachRangeWithItsKey) {
+  CheckRefusesOutsideEachRange(BgsubOptionFields(), "bgsub");
+  CheckRefusesOutsideEachRange(LkOptionFields(), "lk");
+  CheckRefusesOutsideEachRange(MarkerOptionFields(), "marker");
+  CheckRefusesOutsideEachRange(PoseOptionFields(), "pose");
+  EngineOptions e;
+  for (const EngineKind kind : AllEngineKinds()) {
+    e.kind = kind;
+    EXPECT_TRUE(e.Check().ok()) << EngineName(kind);
+  }
+  e.kind = EngineKind::kLk;
+  e.lk.max_corners = 3;
+  EXPECT_EQ(e.Check().key(), "lk.max_corners");
+}
+
+TEST(OptionFieldsTest, ChecksKeepTheRulesNoRangeSays) {
+  LkOptions lk;
+  lk.window_px = 16;  // in [5, 101], but even
+  EXPECT_EQ(lk.Check().key(), "lk.window_px");
+  EXPECT_NE(lk.Check().message().find("odd"), std::string::npos) << lk.Check().message();
+  MarkerOptions marker;
+  marker.median_size = 4;
+  EXPECT_EQ(marker.Check().key(), "marker.median_size");
+  PoseOptions pose;
+  pose.arm_crop = 0.5;  // in [0, 4], but neither 0 (one look) nor a look of at least 1
+  EXPECT_EQ(pose.Check().key(), "pose.arm_crop");
+  pose.arm_crop = 0;
+  EXPECT_TRUE(pose.Check().ok());
+}
+
 TEST(OptionFieldsTest, BgsubTableMatchesItsStruct) {
   CheckTable(BgsubOptionFields(), "BgsubOptions");
 }
@@ -108,7 +170,14 @@ TEST(OptionFieldsTest, ChecksRefuseWhatTheRelationsForbid) {
   // The relations the tables declare are the ones Check() enforces.
   MarkerOptions m;
   FindOptionField(MarkerOptionFields(), "low")->set(m, 90);  // above high = 80
-  EXPECT_FALSE(m.Check().ok());
+  EXPECT_EQ(m.Check().key(), "marker.low");  // the lower bound people set: its own key
+  EXPECT_EQ(m.Check().message(), "low threshold 90 is above the high threshold 80");
+  m = MarkerOptions();
+  m.min_area = 300;  // above max_area = 200
+  EXPECT_EQ(m.Check().key(), "marker.max_area");
+  m = MarkerOptions();
+  m.max_aspect = 0.1;  // below min_aspect = 0.2
+  EXPECT_EQ(m.Check().key(), "marker.max_aspect");
 }
 
 TEST(OptionFieldsTest, IntFieldsRoundAndEnumsTakeTheChoiceIndex) {

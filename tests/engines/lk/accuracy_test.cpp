@@ -207,10 +207,12 @@ TEST(LkOptions, CheckNamesTheOption) {
   LkOptions o;
   EXPECT_TRUE(o.Check().ok());
   o.window_px = 14;
-  EXPECT_NE(o.Check().message().find("window_px"), std::string::npos);
+  EXPECT_EQ(o.Check().key(), "lk.window_px");
+  EXPECT_NE(o.Check().message().find("LK window must be odd"), std::string::npos);
   o = LkOptions();
   o.quality_level = 0;
-  EXPECT_NE(o.Check().message().find("quality_level"), std::string::npos);
+  EXPECT_EQ(o.Check().key(), "lk.quality_level");
+  EXPECT_NE(o.Check().message().find("corner quality must be in"), std::string::npos);
 }
 
 }  // namespace
