@@ -50,7 +50,7 @@ Status CheckReadableFile(const std::string& path) {
   if (S_ISDIR(st.st_mode)) return Status::Error(path + ": is a folder");
   if (!S_ISREG(st.st_mode)) return Status::Error(path + ": not a regular file");
   if (access(path.c_str(), R_OK) != 0) {
-    return Status::Error(path + ": cannot read (" + FileErrorText(errno) + ")");
+    return Status::Error(path + ": cannot read (" + std::strerror(errno) + ")");
   }
   if (st.st_size == 0) return Status::Error(path + ": empty file (0 bytes)");
   return Status::Ok();
