@@ -15,10 +15,12 @@
 #include <cstring>
 #include <filesystem>
 #include <future>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "armmimic/core/angle_file.h"
 #include "armmimic/core/output_file.h"
 #include "test_util.h"
 
@@ -119,6 +121,38 @@ TEST(OutputFile, AFifoWithAReaderGetsTheBytesAndStaysAFifo) {
   EXPECT_EQ(reader.get(), bytes);
   EXPECT_EQ(KindOf(fifo), static_cast<mode_t>(S_IFIFO));
   EXPECT_EQ(Entries(dir.path()), std::vector<std::string>{"pipe"});
+}
+
+// An angle file cut short cannot have its header rewritten in a FIFO: its last line marks it,
+// and the reader takes that as complete=no.
+TEST(OutputFile, AnAngleFileEndedEarlyInAFifoIsMarkedIncompleteByItsLastLine) {
+  test::TempDir dir;
+  const std::string fifo = dir.file("pipe");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  auto reader = std::async(std::launch::async, [&] {
+    const int fd = ::open(fifo.c_str(), O_RDONLY);
+    if (fd < 0) return std::string("open failed");
+    std::string got = ReadAll(fd);
+    ::close(fd);
+    return got;
+  });
+  AngleFileWriter writer;
+  ASSERT_TRUE(writer.Open(fifo, {{"engine", "lk"}}, false).ok());
+  AngleRow row;
+  row.frame = 7;
+  row.status = RowStatus::kOk;
+  row.upper_deg = -90;
+  row.fore_deg = -80;
+  ASSERT_TRUE(writer.Write(row).ok());
+  ASSERT_TRUE(writer.Commit(false).ok());
+  const std::string got = reader.get();
+  EXPECT_TRUE(Contains(got, std::string("\n") + kIncompleteMark + "\n")) << got;
+  AngleFile file;
+  std::istringstream in(got);
+  ASSERT_TRUE(ParseAngleFile(in, "pipe", &file).ok()) << got;
+  EXPECT_FALSE(file.complete);
+  ASSERT_EQ(file.rows.size(), 1u);
+  EXPECT_EQ(file.rows[0].frame, 7);
 }
 
 TEST(OutputFile, AFifoNobodyReadsIsRefusedAfterAShortWait) {

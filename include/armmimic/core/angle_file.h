@@ -90,7 +90,8 @@ class AngleFileWriter {
   Status Open(const std::string& path, const AngleMeta& meta, bool file_column,
               bool confidence_column = false, bool signed_yaw_column = false);
   Status Write(const AngleRow& row);
-  // complete=false rewrites the header with complete=no (rows so far are kept).
+  // complete=false rewrites the header with complete=no (rows so far are kept); in a device or
+  // FIFO, which cannot be rewound, a last line kIncompleteMark says so instead.
   Status Commit(bool complete = true);
   int rows_written() const;
 
