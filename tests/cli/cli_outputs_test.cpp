@@ -229,6 +229,28 @@ TEST(CliOutputs, PermissionDeniedSaysSo) {
   EXPECT_TRUE(Contains(r.err, dir.file("a.tsv") + ": cannot write (permission denied)")) << r.err;
 }
 
+// An input that is a folder is called one, not "read error" or "no column header".
+TEST(CliOutputs, AFolderGivenAsAnInputFileIsCalledAFolder) {
+  test::TempDir dir;
+  fs::create_directory(dir.file("list"));
+  fs::create_directory(dir.file("old.tsv"));
+  const std::string video = Scene() + "/scene.avi";
+  const test::CliResult list =
+      test::RunCli({"--no-progress", "analyze", "--list", dir.file("list"), "--output-dir",
+                    dir.file("out"), "--engine", "lk", "--shoulder", "80,40"});
+  EXPECT_EQ(list.exit_code, 1) << list.err;
+  EXPECT_TRUE(Contains(list.err, "--list " + dir.file("list") + ": is a folder")) << list.err;
+  const test::CliResult params = test::RunCli(
+      {"analyze", video, "-o", dir.file("a.tsv"), "--params-from", dir.file("old.tsv")});
+  EXPECT_EQ(params.exit_code, 1) << params.err;
+  EXPECT_TRUE(Contains(params.err, dir.file("old.tsv") + ": is a folder")) << params.err;
+  const test::CliResult plan = test::RunCli({"plan", dir.file("old.tsv"), "-o", dir.file("p.val")});
+  EXPECT_EQ(plan.exit_code, 1) << plan.err;
+  EXPECT_TRUE(Contains(plan.err, dir.file("old.tsv") + ": is a folder")) << plan.err;
+  EXPECT_FALSE(fs::exists(dir.file("a.tsv")));
+  EXPECT_FALSE(fs::exists(dir.file("p.val")));
+}
+
 // SIGKILL leaves the temporary beside the output (nothing can remove it then); the next run to
 // the same output removes it, and keeps a file of the user's with a similar name.
 TEST(CliOutputs, AKilledRunsTemporaryIsRemovedByTheNextRunAndNothingElse) {
