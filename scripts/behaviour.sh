@@ -62,8 +62,8 @@ run() {
     fi
   done
   local m="$s/m1"
-  "$cli" -q analyze "$m"/images -o "$out/m1.marker.tsv" --engine marker --reference "$m/reference.png"
-  "$cli" -q analyze "$m"/images -o "$out/m1.marker-thesis.tsv" --engine marker --thesis \
+  "$cli" -q analyze "$m"/views -o "$out/m1.marker.tsv" --engine marker --reference "$m/reference.png"
+  "$cli" -q analyze "$m"/views -o "$out/m1.marker-thesis.tsv" --engine marker --thesis \
     --reference "$m/reference.png"
   echo "behaviour: $(ls "$out"/*.tsv | wc -l) angle files in $out"
 }

@@ -27,7 +27,11 @@ own `--help` texts by `scripts/gen-cli-doc.sh`.
   robot error, a refused plan, an interrupt); 2 usage error (unknown or malformed flag, missing
   argument, an output that is one of the inputs, a folder or a socket).
 - Every message names the file, line or flag it is about, e.g.
-  `armmimic-cli analyze: --threshold: 'abc' is not a whole number`.
+  `armmimic-cli analyze: --threshold: 'abc' is not a whole number`. The library's errors carry
+  the key of the setting they are about (`analysis.arm_length`), never a flag; the CLI puts the
+  flag that sets it first: `armmimic-cli analyze: --arm-length: the bgsub engine needs an
+  arm-length image (thesis 5.2.3)`. An engine parameter without a flag of its own is named as
+  `--param` sets it (`--param lk.window_px: ...`).
 - **Global options**, accepted before or after the subcommand: `-q` (quiet: only errors),
   `--progress` / `--no-progress` (default: a progress bar when stderr is a terminal),
   `--version`.

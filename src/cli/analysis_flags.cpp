@@ -1,7 +1,12 @@
+// The analysis flags of analyze and mimic (analysis_flags.h).
+// Length: Register is one call per flag, a flat list in --help order.
 #include "analysis_flags.h"
+#include "flag_for_key.h"
 
+#include <initializer_list>
 #include <map>
 #include <set>
+#include <utility>
 
 #include "armmimic/engines/option_fields.h"
 
@@ -47,14 +52,29 @@ std::string AnalysisFlags::ParamList() {
   return out;
 }
 
+namespace {
+
+// Binds every row of an engine table that names a flag to that flag: "bgsub.threshold" ->
+// --threshold.
+template <typename O>
+void BindEngineKeys(ArgParser& p, const std::vector<OptionField<O>>& fields,
+                    const std::string& engine) {
+  for (const auto& f : fields) {
+    if (!f.flag.empty()) p.BindKey(engine + "." + f.key, f.flag);
+  }
+}
+
+}  // namespace
+
 void AnalysisFlags::Register(ArgParser& p) {
+  AnalysisOptions& f = f_;
   p.String("--engine", &engine_name_, "NAME", "bgsub, lk, marker or pose (required)");
-  p.String("--background", &o_->background_path, "BG.png", "bgsub/lk: the empty scene image");
-  p.Int("--background-frames", &o_->background_frames, "K",
+  p.String("--background", &f.background_path, "BG.png", "bgsub/lk: the empty scene image");
+  p.Int("--background-frames", &f.background_frames, "K",
         "bgsub/lk: estimate the background from frames [0, K) of the video", 1, 1000000);
-  p.String("--arm-length", &o_->arm_length_path, "ARM.png",
+  p.String("--arm-length", &f.arm_length_path, "ARM.png",
            "bgsub: straight horizontal arm at zero yaw (gives b)");
-  p.Int("--start", &o_->start, "F",
+  p.Int("--start", &f.start, "F",
         "bgsub/lk: first standstill frame; pose: first frame (default 0; a camera or stream "
         "drops F frames)",
         0);
@@ -62,117 +82,174 @@ void AnalysisFlags::Register(ArgParser& p) {
         100000);
   p.Int("--threshold", &threshold_, "T", "bgsub: grey-level difference threshold (default 45)", 1,
         254);
+  auto point = [](std::optional<cv::Point2d>* out) {
+    return [out](const std::string& v) {
+      cv::Point2d pt;
+      const std::string e = ParsePointArg(v, &pt);
+      if (e.empty()) *out = pt;
+      return e;
+    };
+  };
   p.Custom("--shoulder", "X,Y", "bgsub/lk: fixed shoulder position in pixels",
-           [&](const std::string& v) {
-             const std::string e = ParsePointArg(v, &shoulder_);
-             if (e.empty()) o_->shoulder_px = shoulder_;
-             return e;
-           });
+           point(&f.shoulder_px));
   p.Custom("--elbow", "X,Y", "lk: the elbow in frame F (with --shoulder and --wrist)",
-           [&](const std::string& v) {
-             const std::string e = ParsePointArg(v, &elbow_);
-             if (e.empty()) o_->elbow_px = elbow_;
-             return e;
-           });
+           point(&f.elbow_px));
   p.Custom("--wrist", "X,Y", "lk: the wrist in frame F (with --shoulder and --elbow)",
-           [&](const std::string& v) {
-             const std::string e = ParsePointArg(v, &wrist_);
-             if (e.empty()) o_->wrist_px = wrist_;
-             return e;
-           });
-  p.Custom("--roi", "X,Y,W,H", "bgsub/lk: analyse only this rectangle", [&](const std::string& v) {
-    const std::string e = ParseRectArg(v, &roi_);
-    if (e.empty()) o_->roi = roi_;
+           point(&f.wrist_px));
+  p.Custom("--roi", "X,Y,W,H", "bgsub/lk: analyse only this rectangle", [&f](const std::string& v) {
+    cv::Rect roi;
+    const std::string e = ParseRectArg(v, &roi);
+    if (e.empty()) f.roi = roi;
     return e;
   });
-  p.Double("--initial-upper", &o_->engine.lk.initial_upper_deg, "DEG",
+  p.Double("--initial-upper", &f.engine.lk.initial_upper_deg, "DEG",
            "lk: upper-arm direction at the start (default -90)");
-  p.Double("--initial-fore", &o_->engine.lk.initial_fore_deg, "DEG",
+  p.Double("--initial-fore", &f.engine.lk.initial_fore_deg, "DEG",
            "lk: forearm direction at the start (default -90)");
-  p.String("--reference", &o_->reference_path, "REF.png",
+  p.String("--reference", &f.reference_path, "REF.png",
            "marker: the joint at zero yaw and zero bend");
-  p.Int("--low", &o_->engine.marker.low, "L",
-        "marker: lower grey level of the markers (default 20)", 0, 255);
-  p.Int("--high", &o_->engine.marker.high, "H",
+  p.Int("--low", &f.engine.marker.low, "L", "marker: lower grey level of the markers (default 20)",
+        0, 255);
+  p.Int("--high", &f.engine.marker.high, "H",
         "marker: upper grey level of the markers (default 80)", 0, 255);
-  p.Double("--fov", &o_->engine.marker.fov_deg, "D",
+  p.Double("--fov", &f.engine.marker.fov_deg, "D",
            "marker: the camera's horizontal field of view, degrees (default 60; 0: a distant "
            "camera)");
   p.String("--side", &side_name_, "left|right",
            "pose, lk --auto-calibrate: the person's own arm (default: the better seen)");
-  p.String("--model", &o_->model_dir, "DIR",
+  p.String("--model", &f.model_dir, "DIR",
            "pose, lk --auto-calibrate: the folder holding movenet-lightning.json and .bin");
-  p.Flag("--auto-calibrate", &o_->auto_calibrate,
+  p.Flag("--auto-calibrate", &f.auto_calibrate,
          "lk: the shoulder, elbow and wrist in frame F from the pose network");
   p.Flag("--thesis", &thesis_, "run the thesis method only, without the improvements");
   p.Custom("--param", "ENGINE.KEY=VALUE",
            "any engine parameter listed above; repeatable, applied after the other flags",
-           [&](const std::string& v) {
+           [this](const std::string& v) {
              EngineOptions probe;
              const Status st = SetEngineOption(v, &probe);
              if (st) params_.push_back(v);
              return st ? std::string() : st.message();
            });
+  for (const auto& [key, flag] : std::initializer_list<std::pair<const char*, const char*>>{
+           {"analysis.engine", "--engine"},
+           {"analysis.background", "--background"},
+           {"analysis.background_frames", "--background-frames"},
+           {"analysis.arm_length", "--arm-length"},
+           {"analysis.reference", "--reference"},
+           {"analysis.start", "--start"},
+           {"analysis.shoulder", "--shoulder"},
+           {"analysis.elbow", "--elbow"},
+           {"analysis.wrist", "--wrist"},
+           {"analysis.roi", "--roi"},
+           {"analysis.model", "--model"},
+           {"analysis.auto_calibrate", "--auto-calibrate"},
+           {"analysis.calibrate_side", "--side"}}) {
+    p.BindKey(key, flag);
+  }
+  BindEngineKeys(p, BgsubOptionFields(), "bgsub");
+  BindEngineKeys(p, LkOptionFields(), "lk");
+  BindEngineKeys(p, MarkerOptionFields(), "marker");
+  BindEngineKeys(p, PoseOptionFields(), "pose");
 }
 
-std::optional<int> AnalysisFlags::CheckEngine(const ArgParser& p) const {
-  if (engine_name_.empty()) return p.UsageError("missing --engine (bgsub, lk, marker or pose)");
-  if (!ParseEngineKind(engine_name_, &o_->engine.kind)) {
+std::optional<int> AnalysisFlags::ParseEngine(const ArgParser& p, EngineKind* kind) const {
+  if (!engine_name_.empty() && !ParseEngineKind(engine_name_, kind)) {
     return p.UsageError("--engine: unknown engine '" + engine_name_ +
                         "' (bgsub, lk, marker or pose)");
   }
   return std::nullopt;
 }
 
-std::optional<int> AnalysisFlags::Finish(const ArgParser& p) {
+std::string AnalysisFlags::CheckStartingDirections(const ArgParser& p) const {
+  if (p.Given("--elbow") && (p.Given("--initial-upper") || p.Given("--initial-fore"))) {
+    return std::string(p.Given("--initial-upper") ? "--initial-upper" : "--initial-fore") +
+           " cannot be given with --elbow and --wrist: the clicked joints give the starting "
+           "directions";
+  }
+  return "";
+}
+
+std::string AnalysisFlags::CheckFor(const ArgParser& p, const AnalysisOptions& o) const {
+  const std::string engine = EngineName(o.engine.kind);
   for (const auto& [flag, engines] : EngineFlags()) {
-    if (p.Given(flag) && !engines.count(o_->engine.kind)) {
-      return p.UsageError(flag + " is not used by --engine " + engine_name_);
+    if (p.Given(flag) && !engines.count(o.engine.kind)) {
+      return flag + " is not used by --engine " + engine;
     }
   }
   for (const std::string& assignment : params_) {
-    if (assignment.rfind(engine_name_ + ".", 0) != 0) {
-      return p.UsageError("--param " + assignment + " is not used by --engine " + engine_name_);
+    if (assignment.rfind(engine + ".", 0) != 0) {
+      return "--param " + assignment + " is not used by --engine " + engine;
     }
   }
-  if (p.Given("--side")) {
-    PoseSide side = PoseSide::kAuto;
-    if (!ParsePoseSide(side_name_, &side)) {
-      return p.UsageError("--side '" + side_name_ + "': expected left or right (the person's own)");
-    }
-    o_->engine.pose.side = side;
-    o_->calibrate_side = side;
+  PoseSide side = PoseSide::kAuto;
+  if (p.Given("--side") && !ParsePoseSide(side_name_, &side)) {
+    return "--side '" + side_name_ + "': expected left or right (the person's own)";
   }
-  if (o_->engine.kind != EngineKind::kPose && !o_->auto_calibrate &&
+  const bool auto_calibrate = o.auto_calibrate || f_.auto_calibrate;
+  if (o.engine.kind != EngineKind::kPose && !auto_calibrate &&
       (p.Given("--side") || p.Given("--model"))) {
-    return p.UsageError(std::string(p.Given("--side") ? "--side" : "--model") +
-                        " is used by --engine " + engine_name_ + " only with --auto-calibrate");
+    return std::string(p.Given("--side") ? "--side" : "--model") + " is used by --engine " +
+           engine + " only with --auto-calibrate";
   }
-  if (o_->engine.kind == EngineKind::kLk && (p.Given("--shoulder") || o_->auto_calibrate) &&
+  if (o.engine.kind == EngineKind::kLk && (p.Given("--shoulder") || auto_calibrate) &&
       p.Given("--standstill-frames")) {
-    return p.UsageError(
-        "--standstill-frames is not used by --engine lk with --shoulder: frame F is the starting "
-        "posture and gets a row");
+    return "--standstill-frames is not used by --engine lk with --shoulder: frame F is the "
+           "starting posture and gets a row";
   }
-  if (p.Given("--elbow") && (p.Given("--initial-upper") || p.Given("--initial-fore"))) {
-    return p.UsageError(
-        std::string(p.Given("--initial-upper") ? "--initial-upper" : "--initial-fore") +
-        " cannot be given with --elbow and --wrist: the clicked joints give the "
-        "starting directions");
+  return CheckStartingDirections(p);
+}
+
+void AnalysisFlags::ApplyGiven(const ArgParser& p, AnalysisOptions* o) const {
+  const AnalysisOptions& f = f_;
+  if (p.Given("--background")) {
+    o->background_path = f.background_path;
+    o->background_frames = 0;
   }
-  o_->engine.bgsub.standstill_frames = standstill_;
-  o_->engine.lk.standstill_frames = standstill_;
-  o_->engine.bgsub.threshold = threshold_;
-  if (o_->background_frames > 0) o_->engine.bgsub.background_frames = o_->background_frames;
-  o_->engine.bgsub.thesis_mode = thesis_;
-  o_->engine.lk.thesis_mode = thesis_;
-  o_->engine.marker.thesis_mode = thesis_;
+  if (p.Given("--background-frames")) {
+    o->background_frames = f.background_frames;
+    o->background_path.clear();
+    o->engine.bgsub.background_frames = f.background_frames;
+  }
+  if (p.Given("--arm-length")) o->arm_length_path = f.arm_length_path;
+  if (p.Given("--reference")) o->reference_path = f.reference_path;
+  if (p.Given("--start")) o->start = f.start;
+  if (p.Given("--shoulder")) o->shoulder_px = f.shoulder_px;
+  if (p.Given("--elbow")) o->elbow_px = f.elbow_px;
+  if (p.Given("--wrist")) o->wrist_px = f.wrist_px;
+  if (p.Given("--roi")) o->roi = f.roi;
+  if (p.Given("--model")) o->model_dir = f.model_dir;
+  if (f.auto_calibrate) o->auto_calibrate = true;
+  if (p.Given("--side")) {
+    ParsePoseSide(side_name_, &o->engine.pose.side);  // checked in CheckFor
+    o->calibrate_side = o->engine.pose.side;
+  }
+  if (p.Given("--standstill-frames")) {
+    o->engine.bgsub.standstill_frames = standstill_;
+    o->engine.lk.standstill_frames = standstill_;
+  }
+  if (p.Given("--threshold")) o->engine.bgsub.threshold = threshold_;
+  if (p.Given("--initial-upper")) o->engine.lk.initial_upper_deg = f.engine.lk.initial_upper_deg;
+  if (p.Given("--initial-fore")) o->engine.lk.initial_fore_deg = f.engine.lk.initial_fore_deg;
   // An explicit grey window is used as given; otherwise the marker engine may shift it when the
   // reference's markers do not show in 20..80 (other illumination).
-  if (p.Given("--low") || p.Given("--high")) o_->engine.marker.auto_window = false;
-  for (const std::string& assignment : params_) SetEngineOption(assignment, &o_->engine);
-  if (Status st = o_->Check(); !st) return p.UsageError(st.message());
+  if (p.Given("--low")) o->engine.marker.low = f.engine.marker.low;
+  if (p.Given("--high")) o->engine.marker.high = f.engine.marker.high;
+  if (p.Given("--low") || p.Given("--high")) o->engine.marker.auto_window = false;
+  if (p.Given("--fov")) o->engine.marker.fov_deg = f.engine.marker.fov_deg;
+  if (thesis_) {
+    o->engine.bgsub.thesis_mode = true;
+    o->engine.lk.thesis_mode = true;
+    o->engine.marker.thesis_mode = true;
+  }
+  for (const std::string& assignment : params_) SetEngineOption(assignment, &o->engine);
+}
 
+std::optional<int> AnalysisFlags::Finish(const ArgParser& p, AnalysisOptions* o) const {
+  if (engine_name_.empty()) return p.UsageError("missing --engine (bgsub, lk, marker or pose)");
+  if (auto code = ParseEngine(p, &o->engine.kind)) return code;
+  if (const std::string e = CheckFor(p, *o); !e.empty()) return p.UsageError(e);
+  ApplyGiven(p, o);
+  if (Status st = o->Check(); !st) return p.UsageError(Worded(st));
   return std::nullopt;
 }
 

@@ -1,6 +1,8 @@
-// AnalysisFlags: the engine and calibration flags `analyze` and `mimic` share (--engine,
-// --background, --shoulder, ..., --param), parsed into one AnalysisOptions with the same checks
-// and the same messages, so both commands analyse a video the same way.
+// AnalysisFlags: the one list of engine and calibration flags that `analyze` (one video or a
+// batch) and `mimic` share (--engine, --background, --shoulder, ..., --param). The flag values
+// are kept apart from the options they apply to, so `analyze --params-from` can lay only the
+// flags given over a recorded run; both commands check and apply them the same way, with the
+// same messages. Each flag is bound to the key of the setting it sets (ArgParser::FlagForKey).
 #pragma once
 
 #include <map>
@@ -9,8 +11,6 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/core/types.hpp>
-
 #include "args.h"
 #include "armmimic/engines/analysis.h"
 
@@ -18,16 +18,26 @@ namespace armmimic::cli {
 
 class AnalysisFlags {
  public:
-  explicit AnalysisFlags(AnalysisOptions* options)
-      : o_(options), threshold_(options->engine.bgsub.threshold) {}
-
   // Adds --engine and every engine flag to `p` (not the inputs or -o).
   void Register(ArgParser& p);
-  // After Parse: the engine given and known. Returns the exit code of a usage error.
-  std::optional<int> CheckEngine(const ArgParser& p) const;
-  // Then: every flag fits the engine, and the options are filled in and checked.
-  std::optional<int> Finish(const ArgParser& p);
+
   const std::string& engine_name() const { return engine_name_; }
+  // The values of the flags (the inputs they name: --background, --model, ...).
+  const AnalysisOptions& values() const { return f_; }
+
+  // After Parse: the engine named by --engine into *kind (left alone when none was given);
+  // the exit code of a usage error when the name is unknown.
+  std::optional<int> ParseEngine(const ArgParser& p, EngineKind* kind) const;
+  // --elbow with --initial-upper/--initial-fore: the usage error text, or "".
+  std::string CheckStartingDirections(const ArgParser& p) const;
+  // Every flag given fits `o`'s engine (and `o`'s own calibration, e.g. a recorded
+  // --auto-calibrate): the usage error text, or "".
+  std::string CheckFor(const ArgParser& p, const AnalysisOptions& o) const;
+  // Lays the flags given over `o` (the defaults, or a recorded run), --param last.
+  void ApplyGiven(const ArgParser& p, AnalysisOptions* o) const;
+  // All of the above for options starting from the defaults (mimic): --engine required, then
+  // the checks, the flags applied and o->Check(). The exit code of a usage error.
+  std::optional<int> Finish(const ArgParser& p, AnalysisOptions* o) const;
 
   // The --param keys with their defaults, indented, for a help text.
   static std::string ParamList();
@@ -35,15 +45,12 @@ class AnalysisFlags {
   static const std::map<std::string, std::set<EngineKind>>& EngineFlags();
 
  private:
-  AnalysisOptions* o_;
+  AnalysisOptions f_;
   std::vector<std::string> params_;
-  std::string engine_name_;
+  std::string engine_name_, side_name_;
   int standstill_ = 60;
-  int threshold_;
+  int threshold_ = BgsubOptions().threshold;
   bool thesis_ = false;
-  cv::Point2d shoulder_, elbow_, wrist_;
-  cv::Rect roi_;
-  std::string side_name_;
 };
 
 }  // namespace armmimic::cli

@@ -1,4 +1,5 @@
 #include "analyze_run.h"
+#include "flag_for_key.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -104,7 +105,7 @@ std::string SummaryText(const std::vector<SummaryRow>& rows) {
 int AnalyzeOne(const AnalysisOptions& o, const std::string& output, const GlobalOptions& global) {
   const Outcome r = Run(o, output, "analyze", global);
   if (!r.status) {
-    std::cerr << "armmimic-cli analyze: " << r.status.message() << "\n";
+    std::cerr << "armmimic-cli analyze: " << Worded(r.status) << "\n";
     return kExitFailure;
   }
   if (r.summary.cancelled) {
@@ -154,9 +155,9 @@ int AnalyzeBatch(const AnalysisOptions& options, const BatchPlan& plan,
     row.summary = r.summary;
     if (!r.status) {
       row.status = "failed";
-      row.error = r.status.message();
+      row.error = Worded(r.status);
       ++failed;
-      std::cerr << "armmimic-cli analyze: " << label << " " << r.status.message() << "\n";
+      std::cerr << "armmimic-cli analyze: " << label << " " << Worded(r.status) << "\n";
     } else if (r.summary.cancelled) {
       row.status = "interrupted";
       row.error = InterruptGuard::Message() +

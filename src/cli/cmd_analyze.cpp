@@ -10,9 +10,9 @@
 #include "args.h"
 #include "armmimic/core/output_file.h"
 #include "armmimic/engines/analysis.h"
-#include "armmimic/engines/option_fields.h"
 #include "armmimic/engines/run_record.h"
 #include "command.h"
+#include "flag_for_key.h"
 #include "interrupt.h"
 
 namespace armmimic::cli {
@@ -21,12 +21,9 @@ namespace {
 // Everything the command line gives; engine settings are applied over the recorded run (with
 // --params-from) or the defaults only where their flag was given.
 struct AnalyzeFlags {
-  AnalysisOptions f;  // flag values (inputs, images, points, engine fields with their own flag)
-  std::vector<std::string> params;
-  std::string output, output_dir, list, summary, params_from, engine_name, side_name;
-  int standstill = 60;
-  int threshold = BgsubOptions().threshold;
-  bool thesis = false;
+  AnalysisFlags analysis;  // the engine and calibration flags, shared with mimic
+  std::vector<std::string> inputs;
+  std::string output, output_dir, list, summary, params_from;
 };
 
 constexpr const char* kSynopsis =
@@ -78,8 +75,7 @@ constexpr const char* kDescription =
     "(exit 1); a batch then writes its summary and starts no further video.\n";
 
 void DefineFlags(ArgParser& p, AnalyzeFlags& a) {
-  AnalysisOptions& f = a.f;
-  p.Positionals(&f.inputs, "INPUT", 0, -1);
+  p.Positionals(&a.inputs, "INPUT", 0, -1);
   p.String("-o,--output", &a.output, "ANGLES.tsv", "the angle file to write");
   p.String("--output-dir", &a.output_dir, "DIR",
            "batch: one angle file per video in DIR (created if missing)");
@@ -87,114 +83,7 @@ void DefineFlags(ArgParser& p, AnalyzeFlags& a) {
   p.String("--summary", &a.summary, "FILE", "batch: the summary table (default DIR/summary.tsv)");
   p.String("--params-from", &a.params_from, "OLD.tsv",
            "repeat the run recorded in OLD.tsv's header (engine, settings, input images)");
-  p.String("--engine", &a.engine_name, "NAME", "bgsub, lk, marker or pose (required)");
-  p.String("--background", &f.background_path, "BG.png", "bgsub/lk: the empty scene image");
-  p.Int("--background-frames", &f.background_frames, "K",
-        "bgsub/lk: estimate the background from frames [0, K) of the video", 1, 1000000);
-  p.String("--arm-length", &f.arm_length_path, "ARM.png",
-           "bgsub: straight horizontal arm at zero yaw (gives b)");
-  p.Int("--start", &f.start, "F",
-        "bgsub/lk: first standstill frame; pose: first frame (default 0; a camera or stream "
-        "drops F frames)",
-        0);
-  p.Int("--standstill-frames", &a.standstill, "N", "bgsub/lk: standstill length (default 60)", 1,
-        100000);
-  p.Int("--threshold", &a.threshold, "T", "bgsub: grey-level difference threshold (default 45)", 1,
-        254);
-  auto point = [](std::optional<cv::Point2d>* out) {
-    return [out](const std::string& v) {
-      cv::Point2d pt;
-      const std::string e = ParsePointArg(v, &pt);
-      if (e.empty()) *out = pt;
-      return e;
-    };
-  };
-  p.Custom("--shoulder", "X,Y", "bgsub/lk: fixed shoulder position in pixels",
-           point(&f.shoulder_px));
-  p.Custom("--elbow", "X,Y", "lk: the elbow in frame F (with --shoulder and --wrist)",
-           point(&f.elbow_px));
-  p.Custom("--wrist", "X,Y", "lk: the wrist in frame F (with --shoulder and --elbow)",
-           point(&f.wrist_px));
-  p.Custom("--roi", "X,Y,W,H", "bgsub/lk: analyse only this rectangle", [&f](const std::string& v) {
-    cv::Rect roi;
-    const std::string e = ParseRectArg(v, &roi);
-    if (e.empty()) f.roi = roi;
-    return e;
-  });
-  p.Double("--initial-upper", &f.engine.lk.initial_upper_deg, "DEG",
-           "lk: upper-arm direction at the start (default -90)");
-  p.Double("--initial-fore", &f.engine.lk.initial_fore_deg, "DEG",
-           "lk: forearm direction at the start (default -90)");
-  p.String("--reference", &f.reference_path, "REF.png",
-           "marker: the joint at zero yaw and zero bend");
-  p.Int("--low", &f.engine.marker.low, "L", "marker: lower grey level of the markers (default 20)",
-        0, 255);
-  p.Int("--high", &f.engine.marker.high, "H",
-        "marker: upper grey level of the markers (default 80)", 0, 255);
-  p.Double("--fov", &f.engine.marker.fov_deg, "D",
-           "marker: the camera's horizontal field of view, degrees (default 60; 0: a distant "
-           "camera)");
-  p.String("--side", &a.side_name, "left|right",
-           "pose, lk --auto-calibrate: the person's own arm (default: the better seen)");
-  p.String("--model", &f.model_dir, "DIR",
-           "pose, lk --auto-calibrate: the folder holding movenet-lightning.json and .bin");
-  p.Flag("--auto-calibrate", &f.auto_calibrate,
-         "lk: the shoulder, elbow and wrist in frame F from the pose network");
-  p.Flag("--thesis", &a.thesis, "run the thesis method only, without the improvements");
-  p.Custom("--param", "ENGINE.KEY=VALUE",
-           "any engine parameter listed below; repeatable, applied after the other flags",
-           [&a](const std::string& v) {
-             EngineOptions probe;
-             const Status st = SetEngineOption(v, &probe);
-             if (st) a.params.push_back(v);
-             return st ? std::string() : st.message();
-           });
-}
-
-// Copies the flags that were given over `o` (the defaults, or the run read with --params-from).
-void ApplyGivenFlags(const ArgParser& p, const AnalyzeFlags& a, AnalysisOptions* o) {
-  const AnalysisOptions& f = a.f;
-  if (p.Given("--background")) {
-    o->background_path = f.background_path;
-    o->background_frames = 0;
-  }
-  if (p.Given("--background-frames")) {
-    o->background_frames = f.background_frames;
-    o->background_path.clear();
-    o->engine.bgsub.background_frames = f.background_frames;
-  }
-  if (p.Given("--arm-length")) o->arm_length_path = f.arm_length_path;
-  if (p.Given("--reference")) o->reference_path = f.reference_path;
-  if (p.Given("--start")) o->start = f.start;
-  if (p.Given("--shoulder")) o->shoulder_px = f.shoulder_px;
-  if (p.Given("--elbow")) o->elbow_px = f.elbow_px;
-  if (p.Given("--wrist")) o->wrist_px = f.wrist_px;
-  if (p.Given("--roi")) o->roi = f.roi;
-  if (p.Given("--model")) o->model_dir = f.model_dir;
-  if (f.auto_calibrate) o->auto_calibrate = true;
-  if (p.Given("--side")) {
-    ParsePoseSide(a.side_name, &o->engine.pose.side);  // checked in CheckEngine
-    o->calibrate_side = o->engine.pose.side;
-  }
-  if (p.Given("--standstill-frames")) {
-    o->engine.bgsub.standstill_frames = a.standstill;
-    o->engine.lk.standstill_frames = a.standstill;
-  }
-  if (p.Given("--threshold")) o->engine.bgsub.threshold = a.threshold;
-  if (p.Given("--initial-upper")) o->engine.lk.initial_upper_deg = f.engine.lk.initial_upper_deg;
-  if (p.Given("--initial-fore")) o->engine.lk.initial_fore_deg = f.engine.lk.initial_fore_deg;
-  // An explicit grey window is used as given; otherwise the marker engine may shift it when the
-  // reference's markers do not show in 20..80 (other illumination).
-  if (p.Given("--low")) o->engine.marker.low = f.engine.marker.low;
-  if (p.Given("--high")) o->engine.marker.high = f.engine.marker.high;
-  if (p.Given("--low") || p.Given("--high")) o->engine.marker.auto_window = false;
-  if (p.Given("--fov")) o->engine.marker.fov_deg = f.engine.marker.fov_deg;
-  if (a.thesis) {
-    o->engine.bgsub.thesis_mode = true;
-    o->engine.lk.thesis_mode = true;
-    o->engine.marker.thesis_mode = true;
-  }
-  for (const std::string& assignment : a.params) SetEngineOption(assignment, &o->engine);
+  a.analysis.Register(p);
 }
 
 // Every file the run reads, named by its flag.
@@ -221,45 +110,9 @@ std::string CheckFlags(const ArgParser& p, const AnalyzeFlags& a) {
   if (!batch && !a.list.empty()) return "--list needs --output-dir DIR (where the files go)";
   if (!batch && !a.summary.empty()) return "--summary needs --output-dir DIR";
   if (!batch && a.output.empty()) return "missing -o ANGLES.tsv (the angle file to write)";
-  if (a.f.inputs.empty() && a.list.empty()) return "missing INPUT (a video, images or a folder)";
-  if (!a.list.empty() && !a.f.inputs.empty()) return "give the videos either as INPUT or in --list";
-  if (p.Given("--elbow") && (p.Given("--initial-upper") || p.Given("--initial-fore"))) {
-    return std::string(p.Given("--initial-upper") ? "--initial-upper" : "--initial-fore") +
-           " cannot be given with --elbow and --wrist: the clicked joints give the starting "
-           "directions";
-  }
-  return "";
-}
-
-// The engine and the flags that suit it; returns the usage error text or "".
-std::string CheckEngine(const ArgParser& p, const AnalyzeFlags& a, const AnalysisOptions& o) {
-  const std::string engine = EngineName(o.engine.kind);
-  for (const auto& [flag, engines] : AnalysisFlags::EngineFlags()) {
-    if (p.Given(flag) && !engines.count(o.engine.kind)) {
-      return flag + " is not used by --engine " + engine;
-    }
-  }
-  for (const std::string& assignment : a.params) {
-    if (assignment.rfind(engine + ".", 0) != 0) {
-      return "--param " + assignment + " is not used by --engine " + engine;
-    }
-  }
-  PoseSide side = PoseSide::kAuto;
-  if (p.Given("--side") && !ParsePoseSide(a.side_name, &side)) {
-    return "--side '" + a.side_name + "': expected left or right (the person's own)";
-  }
-  const bool auto_calibrate = o.auto_calibrate || a.f.auto_calibrate;
-  if (o.engine.kind != EngineKind::kPose && !auto_calibrate &&
-      (p.Given("--side") || p.Given("--model"))) {
-    return std::string(p.Given("--side") ? "--side" : "--model") + " is used by --engine " +
-           engine + " only with --auto-calibrate";
-  }
-  if (o.engine.kind == EngineKind::kLk && (p.Given("--shoulder") || auto_calibrate) &&
-      p.Given("--standstill-frames")) {
-    return "--standstill-frames is not used by --engine lk with --shoulder: frame F is the "
-           "starting posture and gets a row";
-  }
-  return "";
+  if (a.inputs.empty() && a.list.empty()) return "missing INPUT (a video, images or a folder)";
+  if (!a.list.empty() && !a.inputs.empty()) return "give the videos either as INPUT or in --list";
+  return a.analysis.CheckStartingDirections(p);
 }
 
 int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global) {
@@ -273,7 +126,7 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
   if (!batch) outputs.push_back({"-o", a.output});
   if (!a.summary.empty()) outputs.push_back({"--summary", a.summary});
   // Nothing is read before the outputs are known not to be inputs.
-  if (Status st = CheckOutputs(InputsOf(a.f, a, a.f.inputs), outputs); !st) {
+  if (Status st = CheckOutputs(InputsOf(a.analysis.values(), a, a.inputs), outputs); !st) {
     return p.UsageError(st.message());
   }
   AnalysisOptions o;
@@ -282,23 +135,21 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
       std::cerr << "armmimic-cli analyze: --params-from " << st.message() << "\n";
       return kExitFailure;
     }
+    const std::string& engine = a.analysis.engine_name();
     EngineKind given;
-    if (p.Given("--engine") && ParseEngineKind(a.engine_name, &given) && given != o.engine.kind) {
-      return p.UsageError("--engine " + a.engine_name + ": " + a.params_from + " records a " +
+    if (p.Given("--engine") && ParseEngineKind(engine, &given) && given != o.engine.kind) {
+      return p.UsageError("--engine " + engine + ": " + a.params_from + " records a " +
                           EngineName(o.engine.kind) + " run; drop --engine or --params-from");
     }
-  } else if (a.engine_name.empty()) {
+  } else if (a.analysis.engine_name().empty()) {
     return p.UsageError("missing --engine (bgsub, lk, marker or pose)");
   }
-  if (!a.engine_name.empty() && !ParseEngineKind(a.engine_name, &o.engine.kind)) {
-    return p.UsageError("--engine: unknown engine '" + a.engine_name +
-                        "' (bgsub, lk, marker or pose)");
-  }
-  if (const std::string e = CheckEngine(p, a, o); !e.empty()) return p.UsageError(e);
-  ApplyGivenFlags(p, a, &o);
-  o.inputs = a.f.inputs;
+  if (auto code = a.analysis.ParseEngine(p, &o.engine.kind)) return *code;
+  if (const std::string e = a.analysis.CheckFor(p, o); !e.empty()) return p.UsageError(e);
+  a.analysis.ApplyGiven(p, &o);
+  o.inputs = a.inputs;
 
-  std::vector<std::string> videos = a.f.inputs;
+  std::vector<std::string> videos = a.inputs;
   if (!a.list.empty()) {
     if (Status st = ReadVideoList(a.list, &videos); !st) {
       std::cerr << "armmimic-cli analyze: " << st.message() << "\n";
@@ -307,7 +158,7 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
     if (videos.empty()) return p.UsageError("--list " + a.list + ": names no video");
     o.inputs = {videos.front()};
   }
-  if (Status st = o.Check(); !st) return p.UsageError(st.message());
+  if (Status st = o.Check(); !st) return p.UsageError(Worded(st));
   BatchPlan plan;
   if (batch) {
     plan = PlanBatch(videos, a.output_dir, a.summary);

@@ -9,6 +9,7 @@
 #include "armmimic/engines/analysis.h"
 #include "armmimic/engines/bgsub_options.h"
 #include "command.h"
+#include "flag_for_key.h"
 #include "interrupt.h"
 #include "progress.h"
 
@@ -52,7 +53,7 @@ int RunBackground(const std::vector<std::string>& args, const GlobalOptions& glo
   }
   if (st) st = WriteImageAtomically(output, background);
   if (!st) {
-    std::cerr << "armmimic-cli background: " << st.message() << "\n";
+    std::cerr << "armmimic-cli background: " << Worded(st) << "\n";
     return kExitFailure;
   }
   if (!global.quiet) {

@@ -17,6 +17,7 @@
 #include "armmimic/robot/live_log.h"
 #include "armmimic/serial/serial_link.h"
 #include "command.h"
+#include "flag_for_key.h"
 #include "planner_flags.h"
 #include "port_flags.h"
 
@@ -116,7 +117,7 @@ std::optional<int> PickInput(const ArgParser& p, const std::vector<std::string>&
 // Parses and checks every flag into `m`. Returns the exit code when the command must end now.
 std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* m) {
   live::MimicOptions& o = m->o;
-  AnalysisFlags analysis_flags(&o.analysis);
+  AnalysisFlags analysis_flags;
   PlannerFlags planner_flags(&o.stream.planner, true);
   std::vector<std::string> videos;
   std::string camera, stream_url, profile_path;
@@ -137,14 +138,14 @@ std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* 
   planner_flags.RegisterLimits(p);
   p.Double("--stale-after", &o.stream.stale_after_s, "S",
            "hold the robot when no frame was measured for this long (default 0.2)");
+  PlannerFlags::BindKeys(p);
   if (auto code = p.Parse(args)) return code;
   if (auto code = PickInput(p, videos, camera, stream_url, realtime, &o.analysis)) return code;
-  if (auto code = analysis_flags.CheckEngine(p)) return code;
-  if (auto code = analysis_flags.Finish(p)) return code;
+  if (auto code = analysis_flags.Finish(p, &o.analysis)) return code;
   if (!m->dry_run && m->port.port.empty()) {
     return p.UsageError("--port is required (or --dry-run; 'send --list-ports' lists the ports)");
   }
-  if (const Status s = m->port.Check(); !m->dry_run && !s.ok()) return p.UsageError(s.message());
+  if (const Status s = m->port.Check(); !m->dry_run && !s.ok()) return p.UsageError(Worded(s));
   if (!(o.stream.stale_after_s > 0)) return p.UsageError("--stale-after must be > 0");
   if (auto code = planner_flags.ParseTexts(p)) return code;
   o.stream.kind = o.analysis.engine.kind == EngineKind::kMarker ? robot::SourceKind::kMarker
@@ -164,7 +165,7 @@ std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* 
   }
   if (!profile_path.empty()) {
     const Status s = robot::ReadProfile(profile_path, &o.stream.profile);
-    if (!s.ok()) return Fail(s.message());
+    if (!s.ok()) return Fail(Worded(s));
   }
   if (const Status s = o.stream.Check(); !s.ok()) return p.UsageError("--profile: " + s.message());
   return std::nullopt;
@@ -196,7 +197,7 @@ int RunMimic(const std::vector<std::string>& args, const GlobalOptions& global) 
   serial::SerialLink link(robot::LinkSettings::FromProfile(m.o.stream.profile));
   if (!m.dry_run) {
     const Status s = link.Open(m.port);
-    if (!s.ok()) return Fail(s.message());
+    if (!s.ok()) return Fail(Worded(s));
   }
   live::MimicRun run(m.dry_run ? nullptr : &link);
   run.SetDryWriter([](const robot::LinkLine& l) {
@@ -221,7 +222,7 @@ int RunMimic(const std::vector<std::string>& args, const GlobalOptions& global) 
     }
   });
   poll.start();
-  if (const Status s = run.Start(m.o); !s.ok()) return Fail(s.message());
+  if (const Status s = run.Start(m.o); !s.ok()) return Fail(Worded(s));
   if (!global.quiet) {
     std::cerr << "mimic: " << m.o.analysis.inputs[0] << " -> "
               << (m.dry_run ? std::string("dry run (no port)") : m.port.port) << "; angles "
@@ -230,7 +231,8 @@ int RunMimic(const std::vector<std::string>& args, const GlobalOptions& global) 
   app.exec();
   link.Close();
   Report(run, m, global);
-  if (!ok) return Fail(message.empty() ? "stopped" : message);
+  if (!ok)
+    return Fail(message.empty() ? "stopped" : Worded(Status::Error(run.failure_key(), message)));
   return kExitOk;
 }
 

@@ -1,4 +1,6 @@
 // armmimic-cli plan ANGLES.tsv -o PROGRAM.val: angle series -> PUMA joint keyframes -> VAL text.
+// Length: RunPlan is the subcommand's flag table, its checks and the run, read top to bottom in
+// --help order.
 #include <cmath>
 #include <iostream>
 
@@ -9,6 +11,7 @@
 #include "armmimic/robot/profile.h"
 #include "armmimic/robot/val_program.h"
 #include "command.h"
+#include "flag_for_key.h"
 #include "interrupt.h"
 #include "planner_flags.h"
 
@@ -61,6 +64,7 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   p.String("--mode", &mode, "stream|program",
            "stream DO MOVE lines, or upload a program and EXECUTE it (default: the profile's)");
   p.String("--program-name", &program_name, "NAME", "program name in program mode");
+  PlannerFlags::BindKeys(p);
   if (auto code = p.Parse(args)) return *code;
 
   if (output.empty()) return p.UsageError("-o/--output: the VAL program to write is required");
@@ -116,7 +120,7 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   robot::Trajectory trajectory;
   robot::PlanReport report;
   if (Status s = robot::PlanTrajectory(angles, o, &trajectory, &report); !s.ok()) {
-    if (s.message().rfind("cutoff", 0) == 0) return p.UsageError("--cutoff: " + s.message());
+    if (s.key() == "planner.cutoff_hz") return p.UsageError(Worded(s));
     std::cerr << "armmimic-cli plan: " << input[0] << ": refused: " << s.message() << "\n";
     return kExitFailure;
   }

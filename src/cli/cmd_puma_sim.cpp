@@ -7,6 +7,7 @@
 #include "armmimic/core/output_file.h"
 #include "armmimic/sim/pty_server.h"
 #include "command.h"
+#include "flag_for_key.h"
 #include "interrupt.h"
 
 namespace armmimic::cli {
@@ -61,7 +62,7 @@ int RunPumaSim(const std::vector<std::string>& args, const GlobalOptions& global
   sim::PtyServer server(options);
   const Status s = server.Start(link_path, log_path);
   if (!s.ok()) {
-    std::cerr << "armmimic-cli puma-sim: " << s.message() << "\n";
+    std::cerr << "armmimic-cli puma-sim: " << Worded(s) << "\n";
     return kExitFailure;
   }
   std::cout << server.device_path() << std::endl;

@@ -20,7 +20,9 @@
 #include "armmimic/serial/link_runner.h"
 #include "armmimic/serial/serial_link.h"
 #include "command.h"
+#include "flag_for_key.h"
 #include "interrupt.h"
+#include "planner_flags.h"
 #include "port_flags.h"
 #include "progress.h"
 
@@ -77,7 +79,8 @@ Status AskUncertain(robot::SendSession& session, serial::SerialLink& link,
   Status s = session.UncertainQuery(&ask, &query);
   if (!s.ok() || !ask) return s;
   if (!serial::RunToEnd(link, {query}, session.program().source_name, Interrupted)) {
-    return Status::Error(link.protocol().error_message() + " (while asking WHERE)");
+    return Status::Error(link.protocol().error_key(),
+                         link.protocol().error_message() + " (while asking WHERE)");
   }
   std::string note;
   s = session.ResolveUncertain(link.protocol().last_replies(), &note);
@@ -133,6 +136,7 @@ std::optional<int> ParseSend(const std::vector<std::string>& args, SendOptions* 
            [&](const std::string& v) { return robot::ParseLimitsOverride(v, &o->limits); });
   p.Custom("--speed-limit", "DEG_S", "joint speed limits, one value or six",
            [&](const std::string& v) { return robot::ParseSpeedLimits(v, &o->limits); });
+  PlannerFlags::BindKeys(p);
   if (auto code = p.Parse(args)) return code;
   if (o->list_ports) return ListPorts();
   if (o->inputs.empty()) return p.UsageError("missing the angle file or VAL program to send");
@@ -146,7 +150,7 @@ std::optional<int> ParseSend(const std::vector<std::string>& args, SendOptions* 
   }
   {
     const Status s = o->port.Check();
-    if (!o->dry_run && !s.ok()) return p.UsageError(s.message());
+    if (!o->dry_run && !s.ok()) return p.UsageError(Worded(s));
     const Status l = o->limits.Check();
     if (!l.ok()) return p.UsageError("--limits: " + l.message());
   }
@@ -198,13 +202,13 @@ int StreamToPort(const SendOptions& o, const robot::ControllerProfile& profile,
   serial::SerialLink link(robot::LinkSettings::FromProfile(profile));
   {
     const Status s = link.Open(o.port);
-    if (!s.ok()) return Fail(s.message());
+    if (!s.ok()) return Fail(Worded(s));
   }
 
-  if (const Status s = AskUncertain(session, link, global); !s.ok()) return Fail(s.message());
+  if (const Status s = AskUncertain(session, link, global); !s.ok()) return Fail(Worded(s));
   {
     const Status s = session.Attach(&link.protocol());
-    if (!s.ok()) return Fail(s.message());
+    if (!s.ok()) return Fail(Worded(s));
   }
 
   const std::vector<robot::LinkLine> to_send = session.lines();
@@ -216,7 +220,7 @@ int StreamToPort(const SendOptions& o, const robot::ControllerProfile& profile,
   {
     const Status s = session.Finish(link.protocol());
     if (!s.ok() && link.protocol().state() != robot::LinkState::kDone) {
-      std::cerr << "armmimic-cli send: " << s.message() << "\n";
+      std::cerr << "armmimic-cli send: " << Worded(s) << "\n";
       if (session.MotionWasInFlight(link.protocol())) {
         std::cerr << "armmimic-cli send: the journal " << session.journal_path()
                   << " records how far it got; 'armmimic-cli send " << input << " --port "
@@ -225,7 +229,7 @@ int StreamToPort(const SendOptions& o, const robot::ControllerProfile& profile,
       }
       return kExitFailure;
     }
-    if (!s.ok()) return Fail(s.message());
+    if (!s.ok()) return Fail(Worded(s));
   }
   if (!global.quiet && link.protocol().noise_lines() > 0) {
     std::cerr << "send: " << link.protocol().noise_lines()
@@ -244,7 +248,7 @@ int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
   if (auto code = ParseSend(args, &o)) return *code;
   robot::ControllerProfile profile;
   robot::SendSession session;
-  if (const Status s = PrepareSend(o, &profile, &session); !s.ok()) return Fail(s.message());
+  if (const Status s = PrepareSend(o, &profile, &session); !s.ok()) return Fail(Worded(s));
   if (session.nothing_to_do()) {
     if (!global.quiet) std::cout << o.inputs[0] << ": already sent completely; nothing to resume\n";
     return kExitOk;

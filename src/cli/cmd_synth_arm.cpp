@@ -1,9 +1,11 @@
 // armmimic-cli synth arm OUTDIR: an arm scene (thesis protocol) with its ground truth.
+// Length: RunSynthArm is the subcommand's flag table and its checks, one list in --help order.
 #include <iostream>
 
 #include "args.h"
 #include "armmimic/synth/arm_scene.h"
 #include "armmimic/synth/random_arm_scene.h"
+#include "flag_for_key.h"
 #include "interrupt.h"
 #include "progress.h"
 #include "synth_commands.h"
@@ -41,7 +43,7 @@ int WriteRandom(const synth::RandomArmSceneOptions& o, const std::string& outdir
     return kExitFailure;
   }
   if (!st.ok()) {
-    std::cerr << "armmimic-cli synth arm: " << st.message() << "\n";
+    std::cerr << "armmimic-cli synth arm: " << Worded(st) << "\n";
     return kExitFailure;
   }
   if (!global.quiet) {
@@ -138,36 +140,13 @@ int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& globa
     ro.seed = o.seed;
     ro.tier = tier;
     ro.size = o.size;
-    if (Status st = ro.Check(); !st.ok()) return p.UsageError("--size: " + st.message());
+    if (Status st = ro.Check(); !st.ok()) return p.UsageError(Worded(st));
     return WriteRandom(ro, outdir[0], global);
   }
   for (char& c : codec) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   if (codec == "AVC1" || codec == "X264") codec = "H264";
   o.codec = codec;
-  if (Status st = o.Check(); !st.ok()) {
-    // Name the flag the bad value came from.
-    const std::string& m = st.message();
-    std::string flag = "--size";
-    if (m.rfind("fps", 0) == 0)
-      flag = "--fps";
-    else if (m.rfind("background", 0) == 0)
-      flag = "--background-frames";
-    else if (m.rfind("standstill", 0) == 0)
-      flag = "--standstill-frames";
-    else if (m.rfind("motion", 0) == 0)
-      flag = "--frames";
-    else if (m.rfind("noise", 0) == 0)
-      flag = "--noise";
-    else if (m.rfind("codec", 0) == 0)
-      flag = "--codec";
-    else if (m.rfind("quality", 0) == 0)
-      flag = "--quality";
-    else if (m.rfind("clothing", 0) == 0)
-      flag = "--contrast";
-    else if (m.rfind("lighting", 0) == 0)
-      flag = "--drift";
-    return p.UsageError(flag + ": " + m);
-  }
+  if (Status st = o.Check(); !st.ok()) return p.UsageError(Worded(st));
 
   InterruptGuard guard;
   ProgressBar bar("synth arm", o.frame_count(), global.ShowProgress());
@@ -180,7 +159,7 @@ int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& globa
     return kExitFailure;
   }
   if (!st.ok()) {
-    std::cerr << "armmimic-cli synth arm: " << st.message() << "\n";
+    std::cerr << "armmimic-cli synth arm: " << Worded(st) << "\n";
     return kExitFailure;
   }
   if (!global.quiet) {

@@ -4,6 +4,7 @@
 
 #include "args.h"
 #include "armmimic/synth/marker_scene.h"
+#include "flag_for_key.h"
 #include "interrupt.h"
 #include "progress.h"
 #include "synth_commands.h"
@@ -56,7 +57,7 @@ int RunSynthMarker(const std::vector<std::string>& args, const GlobalOptions& gl
   p.Double("--fov", &o.camera.fov_deg, "D",
            "the perspective camera's horizontal field of view, degrees (default 60)");
   if (auto code = p.Parse(args)) return *code;
-  if (Status st = o.Check(); !st.ok()) return p.UsageError(st.message());
+  if (Status st = o.Check(); !st.ok()) return p.UsageError(Worded(st));
 
   InterruptGuard guard;
   ProgressBar bar("synth marker", o.views, global.ShowProgress());
@@ -69,7 +70,7 @@ int RunSynthMarker(const std::vector<std::string>& args, const GlobalOptions& gl
     return kExitFailure;
   }
   if (!st.ok()) {
-    std::cerr << "armmimic-cli synth marker: " << st.message() << "\n";
+    std::cerr << "armmimic-cli synth marker: " << Worded(st) << "\n";
     return kExitFailure;
   }
   if (!global.quiet) {

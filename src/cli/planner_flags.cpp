@@ -1,8 +1,28 @@
 #include "planner_flags.h"
+#include "flag_for_key.h"
 
+#include <cctype>
 #include <vector>
 
+#include "armmimic/robot/option_tables.h"
+
 namespace armmimic::cli {
+namespace {
+
+template <typename O>
+void BindTable(ArgParser& p, const std::vector<OptionField<O>>& fields, const std::string& table) {
+  for (const auto& f : fields) {
+    if (!f.flag.empty() && !p.HelpOf(f.flag).empty()) p.BindKey(table + "." + f.key, f.flag);
+  }
+}
+
+}  // namespace
+
+void PlannerFlags::BindKeys(ArgParser& p) {
+  BindTable(p, robot::PlannerOptionFields(), "planner");
+  BindTable(p, robot::MappingOptionFields(), "mapping");
+  BindTable(p, robot::LimitsOptionFields(), "limits");
+}
 
 void PlannerFlags::RegisterMapping(ArgParser& p, const std::function<void()>& more) {
   for (int j = 0; j < 3; ++j) {
@@ -27,29 +47,29 @@ void PlannerFlags::RegisterMapping(ArgParser& p, const std::function<void()>& mo
 }
 
 void PlannerFlags::RegisterFilter(ArgParser& p, const std::function<void()>& more) {
-  if (live_) {
-    p.Double("--cutoff", &o_->cutoff_hz, "HZ",
-             "causal low-pass cutoff; lags sqrt(2)/(2 pi HZ) s; 0 = no filter (default 3)");
-    p.Double("--max-gap-s", &o_->max_gap_s, "S",
-             "after a longer run of lost frames the filter restarts (default 0.5)");
-  } else {
-    p.Double("--cutoff", &o_->cutoff_hz, "HZ",
-             "zero-phase low-pass cutoff; 0 = no filter (default 3)");
-    p.Double("--max-gap-s", &o_->max_gap_s, "S",
-             "longest run of lost frames filled in; longer refuses (default 0.5)");
-  }
+  NumberFlag(p, "cutoff_hz", "causal low-pass cutoff; lags sqrt(2)/(2 pi HZ) s; 0 = no filter");
+  NumberFlag(p, "max_gap_s", "after a longer run of lost frames the filter restarts");
   if (more) more();
-  p.Double("--max-jump", &o_->max_jump_deg_s, "DEG/S",
-           "faster changes are impossible and flagged as lost (default 1000)");
-  p.Double("--deadband", &o_->deadband_deg, "DEG",
-           live_ ? "a new command when a joint moved more than this (default 2)"
-                 : "a new keyframe when a joint moved more than this (default 2)");
-  p.Double("--min-interval", &o_->min_interval_s, "S",
-           live_ ? "no two commands closer than this (default 0.2: at most 5 moves/s)"
-                 : "no two motion keyframes closer than this (default 0.2: at most 5 moves/s)");
-  p.Double("--max-interval", &o_->max_interval_s, "S",
-           live_ ? "a command at least this often while the target changes (default 1)"
-                 : "a keyframe at least this often (default 1)");
+  NumberFlag(p, "max_jump_deg_s", nullptr);
+  NumberFlag(p, "deadband_deg", "a new command when a joint moved more than this");
+  NumberFlag(p, "min_interval_s", "no two commands closer than this; 0.2 s: at most 5 moves/s");
+  NumberFlag(p, "max_interval_s", "a command at least this often while the target changes");
+}
+
+void PlannerFlags::NumberFlag(ArgParser& p, const char* key, const char* live_help) {
+  const OptionField<robot::PlannerOptions>& f = *FindOptionField(robot::PlannerOptionFields(), key);
+  std::string metavar;
+  for (char c : f.unit) metavar += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const std::string help = std::string(live_ && live_help ? live_help : f.help.c_str()) +
+                           " (default " + OptionDefaultText(f) + ")";
+  robot::PlannerOptions* o = o_;
+  // Parsed as any number: the range is checked with the others in Finish (PlannerOptions::Check).
+  p.Custom(f.flag, metavar, help, [o, &f](const std::string& v) {
+    double d = 0;
+    if (!ParseDoubleArg(v, &d)) return "'" + v + "' is not a number (use '.' decimals)";
+    f.set(*o, d);
+    return std::string();
+  });
 }
 
 void PlannerFlags::RegisterLimits(ArgParser& p) {
@@ -114,30 +134,7 @@ std::optional<int> PlannerFlags::Finish(const ArgParser& p, robot::SourceKind ki
   if (map_[2].given) o_->mapping.j3 = map_[2].map;
   o_->mapping.j2_elevation = j2_source_ != "upper";
   o_->mapping.j3_flexion = j3_source_ != "bend";
-  if (Status s = o_->Check(); !s.ok()) {
-    const std::string& m = s.message();
-    std::string flag = "--limits";
-    if (m.find("mapping") != std::string::npos || m.find("hold") != std::string::npos) {
-      flag = "--map-j*/--hold";
-    } else if (m.find("speed limit") != std::string::npos) {
-      flag = "--speed-limit";
-    } else if (m.rfind("cutoff", 0) == 0) {
-      flag = "--cutoff";
-    } else if (m.rfind("max gap", 0) == 0) {
-      flag = "--max-gap-s";
-    } else if (m.rfind("max jump", 0) == 0) {
-      flag = "--max-jump";
-    } else if (m.rfind("deadband", 0) == 0) {
-      flag = "--deadband";
-    } else if (m.rfind("min interval", 0) == 0) {
-      flag = "--min-interval";
-    } else if (m.rfind("max interval", 0) == 0) {
-      flag = "--max-interval";
-    } else if (m.rfind("fallback", 0) == 0) {
-      flag = "--fallback-fps";
-    }
-    return p.UsageError(flag + ": " + m);
-  }
+  if (Status s = o_->Check(); !s.ok()) return p.UsageError(Worded(s));
 
   return std::nullopt;
 }

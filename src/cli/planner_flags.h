@@ -20,10 +20,15 @@ class PlannerFlags {
   // --map-j1..3, --hold, --mirror, then `more` (plan's --source), then --j2-source, --j3-source.
   void RegisterMapping(ArgParser& p, const std::function<void()>& more = {});
   // --cutoff, --max-gap-s, then `more` (plan's --gap), then --max-jump, --deadband,
-  // --min-interval, --max-interval.
+  // --min-interval, --max-interval: each from its row of the planner's table (flag, unit as
+  // the metavar, help and default; mimic's causal planner words the help its own way).
   void RegisterFilter(ArgParser& p, const std::function<void()>& more = {});
   // --limits, --speed-limit, --clamp.
   void RegisterLimits(ArgParser& p);
+
+  // Binds every planner, mapping and limits key whose flag `p` has to that flag
+  // (ArgParser::FlagForKey); call once every flag is registered.
+  static void BindKeys(ArgParser& p);
 
   // After Parse: the texts of --limits, --speed-limit, --hold, --j2/j3-source. Exit code of a
   // usage error, naming the flag.
@@ -36,6 +41,10 @@ class PlannerFlags {
     bool given = false;
     robot::JointMap map;
   };
+  // Registers the flag of the planner table's number row `key`; `live_help` replaces the row's
+  // help for the causal planner.
+  void NumberFlag(ArgParser& p, const char* key, const char* live_help);
+
   robot::PlannerOptions* o_;
   bool live_;
   MapFlag map_[3];

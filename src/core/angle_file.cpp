@@ -1,3 +1,6 @@
+// Angle file v1: formatting, the line-by-line reader with its checks, and the atomic writer.
+// Length: ParseAngleFile is one pass over the lines whose checks share the header's column
+// positions.
 #include "armmimic/core/angle_file.h"
 #include "armmimic/core/text.h"
 

@@ -1,5 +1,6 @@
 // Connected components by flood fill (thesis section 3.5), 4-connected. A scanline fill: each
 // pixel is tested a few times and labelled once, runs are filled with tight row loops.
+// Length: FloodFillComponents is one scanline fill whose inner loops share the seed stack.
 #include <algorithm>
 #include <cstdint>
 #include <cstring>

@@ -24,7 +24,8 @@ void AnalysisWorker::analyze(const AnalysisOptions& options, const QString& outp
   };
   AnalysisSummary summary;
   const Status st = AnalyzeToFile(options, output_path.toStdString(), cb, &summary);
-  emit analysisFinished(st ? QString() : QString::fromStdString(st.message()), summary);
+  emit analysisFinished(st ? QString() : QString::fromStdString(st.message()),
+                        QString::fromStdString(st.key()), summary);
 }
 
 void AnalysisWorker::estimateBackground(const QStringList& inputs, int start, int count,
@@ -62,12 +63,12 @@ AnalysisJob::AnalysisJob(QObject* parent) : QObject(parent), worker_(new Analysi
   connect(worker_, &AnalysisWorker::measured, this, &AnalysisJob::measured);
   connect(worker_, &AnalysisWorker::liveFrame, this, &AnalysisJob::liveFrame);
   connect(worker_, &AnalysisWorker::analysisFinished, this,
-          [this](const QString& error, const AnalysisSummary& summary) {
+          [this](const QString& error, const QString& key, const AnalysisSummary& summary) {
             running_ = false;
             summary_ = summary;
             if (!error.isEmpty()) {
               result_path_.clear();
-              emit failed(error);
+              emit failed(error, key);
               emit finished(false, false);
               return;
             }
@@ -137,7 +138,7 @@ bool AnalysisJob::start(const AnalysisOptions& options, bool live) {
   if (running_) return false;
   const Status st = options.Check();
   if (!st) {
-    emit failed(QString::fromStdString(st.message()));
+    emit failed(QString::fromStdString(st.message()), QString::fromStdString(st.key()));
     return false;
   }
   if (!session_.isValid()) {

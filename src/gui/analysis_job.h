@@ -31,7 +31,9 @@ class AnalysisWorker : public QObject {
   void progress(int done, int total);
   void measured(const armmimic::ArmMeasurement& m);
   void liveFrame(int index, const QImage& image, double time_s);
-  void analysisFinished(const QString& error, const armmimic::AnalysisSummary& summary);
+  // `error_key`: the setting the error is about (Status::key()), or "".
+  void analysisFinished(const QString& error, const QString& error_key,
+                        const armmimic::AnalysisSummary& summary);
   void backgroundFinished(const QString& error, const QString& output_path);
 
  private:
@@ -76,7 +78,9 @@ class AnalysisJob : public QObject {
   void liveFrame(int index, const QImage& image, double time_s);
   void finished(bool ok, bool cancelled);
   void backgroundReady(const QString& path);
-  void failed(const QString& message);
+  // `key`: the setting the message is about (Status::key()), or "" (EngineSettingsPanel::showError
+  // words it for the panel).
+  void failed(const QString& message, const QString& key = QString());
 
  private:
   QThread thread_;

@@ -1,3 +1,7 @@
+// The angle plot: the analysis' curves over frames (Qt Charts), its ranges, ticks, layers and
+// the cursor. Mouse and wheel interaction: angle_plot_interaction.cpp.
+// Length: one chart widget's drawing, each part short, kept together as the chart's state is
+// shared.
 #include "angle_plot.h"
 
 #include <algorithm>

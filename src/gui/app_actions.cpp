@@ -1,3 +1,7 @@
+// The application's actions (menus, toolbar, shortcuts) and the overlay toggles, with their
+// saved settings.
+// Length: the constructor is the list of every action with its text, key and name, read as one
+// table.
 #include "app_actions.h"
 
 #include <QAction>

@@ -144,7 +144,8 @@ QWidget* EngineSettingsPanel::makeInputs() {
   arm_length_ = fileRow(box, "armLengthPath", &arm_length_row_);
   reference_ = fileRow(box, "referencePath", &reference_row_);
   start_ = Spin(0, 10000000, 0, tr("--start: first standstill frame"), "startFrame");
-  shoulder_box_ = new QGroupBox(tr("Fixed shoulder (--shoulder)"));
+  shoulder_box_ = new QGroupBox(tr("Fixed shoulder"));
+  shoulder_box_->setToolTip(tr("--shoulder: the shoulder in pixels, instead of the standstill's"));
   shoulder_box_->setCheckable(true);
   shoulder_box_->setChecked(false);
   shoulder_box_->setObjectName("shoulderBox");
@@ -156,7 +157,8 @@ QWidget* EngineSettingsPanel::makeInputs() {
   sl->addWidget(new QLabel("y"));
   sl->addWidget(shoulder_y_, 1);
   // The elbow and wrist of the start frame (lk): clicked, typed or from Auto-calibrate.
-  elbow_wrist_box_ = new QGroupBox(tr("Elbow and wrist (--elbow, --wrist)"));
+  elbow_wrist_box_ = new QGroupBox(tr("Elbow and wrist"));
+  elbow_wrist_box_->setToolTip(tr("--elbow, --wrist: the joints in the start frame (lk)"));
   elbow_wrist_box_->setCheckable(true);
   elbow_wrist_box_->setChecked(false);
   elbow_wrist_box_->setObjectName("elbowWristBox");
@@ -178,7 +180,8 @@ QWidget* EngineSettingsPanel::makeInputs() {
   auto_calibrate_->setToolTip(
       tr("--auto-calibrate: the shoulder, elbow and wrist in the start frame from the pose "
          "network (the better-seen arm)"));
-  roi_box_ = new QGroupBox(tr("Region of interest (--roi)"));
+  roi_box_ = new QGroupBox(tr("Region of interest"));
+  roi_box_->setToolTip(tr("--roi: analyse only this rectangle"));
   roi_box_->setCheckable(true);
   roi_box_->setChecked(false);
   roi_box_->setObjectName("roiBox");
@@ -348,7 +351,8 @@ Status EngineSettingsPanel::autoCalibrate(const std::vector<std::string>& inputs
   PoseSide side = PoseSide::kAuto;
   const Status st =
       DetectArmJoints(inputs, o.start, PoseSide::kAuto, o.model_dir, o.engine.pose, &arm, &side);
-  if (!st) return Status::Error("Auto-calibrate: " + st.message());
+  if (!st) return Status::Error(st.key(), "Auto-calibrate: " + st.message());
+
   setJoint(1, arm.elbow);
   setJoint(2, arm.wrist);
   setShoulder(arm.shoulder);

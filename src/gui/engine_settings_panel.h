@@ -54,6 +54,14 @@ class EngineSettingsPanel : public QWidget {
   // The button that puts every parameter of an engine back to its default.
   QToolButton* resetButton(EngineKind engine) const;
 
+  // The field the setting `key` is edited in ("analysis.arm_length": the arm-length image,
+  // "lk.window_px": that parameter's editor), or nullptr.
+  QWidget* fieldForKey(const QString& key) const;
+  // An error in the panel's words: frames and focuses the field of `key` (opening its engine's
+  // page and "Advanced" section) and returns "<field label>: <message>"; the message alone when
+  // `key` names no field here (engine_settings_errors.cpp).
+  QString showError(const QString& key, const QString& message);
+
  signals:
   void changed();
   void roiChanged(const std::optional<cv::Rect>& roi);

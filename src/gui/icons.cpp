@@ -1,3 +1,5 @@
+// The toolbar's icons, drawn as vector glyphs in the palette's colours (no image files).
+// Length: GlyphEngine::paint is one switch with a short drawing per icon.
 #include "icons.h"
 
 #include <QApplication>

@@ -1,3 +1,5 @@
+// The main window: docks, menus and the wiring between the panels; each task is its own widget.
+// Length: wireActions connects every menu action to its handler in one list.
 #include "main_window.h"
 
 #include <cmath>
@@ -195,7 +197,8 @@ void MainWindow::wireActions() {
     if (st) {
       log_->info(tr("Auto-calibrated the arm's joints from the pose network"));
     } else {
-      log_->error(QString::fromStdString(st.message()));
+      log_->error(settings_->showError(QString::fromStdString(st.key()),
+                                       QString::fromStdString(st.message())));
     }
   });
   connect(settings_, &EngineSettingsPanel::roiChanged, this,
@@ -226,7 +229,9 @@ void MainWindow::wireAnalysis() {
     if (!throttle_.isActive()) throttle_.start();
   });
   connect(job_, &AnalysisJob::liveFrame, this, &MainWindow::showFrame);
-  connect(job_, &AnalysisJob::failed, log_, &LogView::error);
+  connect(job_, &AnalysisJob::failed, this, [this](const QString& message, const QString& key) {
+    log_->error(settings_->showError(key, message));
+  });
   connect(job_, &AnalysisJob::backgroundReady, this, [this](const QString& path) {
     settings_->setBackgroundImage(path);
     log_->info(tr("Background saved to %1 and selected for the analysis").arg(path));

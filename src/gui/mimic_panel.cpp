@@ -1,3 +1,5 @@
+// The Mimic panel: live camera or video to the robot, its settings summary, start and stop.
+// Length: the constructor builds and wires the panel's form in one list, in the order it is shown.
 #include "mimic_panel.h"
 
 #include <QCheckBox>

@@ -1,3 +1,6 @@
+// The video overlay: the engine's shapes (contour, hull, parts, joints) and its texts.
+// Length: PaintOverlayShapes draws each optional layer in turn, sharing the painter's unit and
+// pens.
 #include "overlay.h"
 
 #include "armmimic/engines/pose.h"

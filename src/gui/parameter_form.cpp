@@ -1,3 +1,7 @@
+// An engine's parameter form, built from its option table: one editor per row, basic and
+// advanced groups, defaults and saved settings.
+// Length: the constructor builds one editor per table row in one loop whose cases share the
+// layouts.
 #include "parameter_form.h"
 
 #include <QCheckBox>
@@ -94,7 +98,10 @@ ParameterForm::ParameterForm(EngineKind engine, std::vector<OptionField<EngineOp
         tip += tr("\nDefault: %1").arg(QString::fromStdString(f.choices[int(f.default_value)]));
         break;
       }
+      case OptionKind::kText:
+        break;
     }
+    if (!editor) continue;  // a text row: the engines' tables have none
     editor->setObjectName(engine_ + "." + QString::fromStdString(f.key));
     editor->setToolTip(tip);
     editor->setFocusPolicy(Qt::StrongFocus);
@@ -150,6 +157,8 @@ double ParameterForm::shown(const Bound& b) const {
       return static_cast<QCheckBox*>(b.widget)->isChecked() ? 1 : 0;
     case OptionKind::kEnum:
       return static_cast<QComboBox*>(b.widget)->currentIndex();
+    case OptionKind::kText:
+      break;
   }
   return 0;
 }
@@ -167,6 +176,8 @@ void ParameterForm::show(const Bound& b, double value) {
       break;
     case OptionKind::kEnum:
       static_cast<QComboBox*>(b.widget)->setCurrentIndex(int(std::lround(value)));
+      break;
+    case OptionKind::kText:
       break;
   }
 }
@@ -212,6 +223,8 @@ void ParameterForm::save(QSettings& s, const EngineOptions& o) const {
         break;
       case OptionKind::kEnum:
         s.setValue(settingsKey(b), QString::fromStdString(b.field.choices[int(v)]));
+        break;
+      case OptionKind::kText:
         break;
     }
   }

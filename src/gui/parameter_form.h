@@ -1,7 +1,7 @@
 // ParameterForm: one engine's parameters as a form, built from the engine's parameter table
-// (armmimic/engines/option_fields.h): the main rows, then a folded "Advanced" section with every
-// other field. It reads and writes the EngineOptions struct the CLI fills, and saves the same
-// fields in QSettings.
+// (armmimic/engines/option_fields.h; text rows are not shown): the main rows, then a folded
+// "Advanced" section with every other field. It reads and writes the EngineOptions struct the CLI
+// fills, and saves the same fields in QSettings.
 #pragma once
 
 #include <QWidget>
@@ -27,10 +27,13 @@ std::vector<OptionField<EngineOptions>> LiftOptionFields(const std::vector<Optio
     e.key = f.key;
     e.label = f.label;
     e.help = f.help;
+    e.unit = f.unit;
+    e.flag = f.flag;
     e.kind = f.kind;
     e.group = f.group;
     e.min = f.min;
     e.max = f.max;
+    e.min_exclusive = f.min_exclusive;
     e.default_value = f.default_value;
     e.decimals = f.decimals;
     e.step = f.step;

@@ -1,5 +1,7 @@
 #include "robot_link.h"
 
+#include "robot_words.h"
+
 namespace armmimic::gui {
 
 RobotLink::RobotLink(QObject* parent)
@@ -25,7 +27,7 @@ bool RobotLink::connectPort(const serial::PortSettings& port) {
   disconnectPort();
   const Status st = link_->Open(port);
   if (!st) {
-    emit error(QString::fromStdString(st.message()));
+    emit error(RobotPanelWords(st));
     return false;
   }
   port_ = port;
@@ -60,7 +62,7 @@ bool RobotLink::prepare(const robot::ValProgram& program, const robot::Controlle
                                      input.empty() ? program.source_name : input, start);
   if (!st) {
     session_.reset();
-    if (error) *error = QString::fromStdString(st.message());
+    if (error) *error = RobotPanelWords(st);
     return false;
   }
   session_ = std::move(session);
@@ -86,7 +88,7 @@ bool RobotLink::startPrepared() {
   robot::LinkLine query;
   const Status st = session_->UncertainQuery(&ask, &query);
   if (!st) {
-    emit error(QString::fromStdString(st.message()));
+    emit error(RobotPanelWords(st));
     return false;
   }
   link_->SetLinkSettings(robot::LinkSettings::FromProfile(profile_));
@@ -104,7 +106,7 @@ bool RobotLink::startPrepared() {
 void RobotLink::streamLines() {
   const Status st = session_->Attach(&link_->protocol());
   if (!st) {
-    endSend(false, QString::fromStdString(st.message()));
+    endSend(false, RobotPanelWords(st));
     return;
   }
   phase_ = Phase::kSending;
@@ -117,13 +119,14 @@ void RobotLink::onFinished(bool ok) {
   const QString source = QString::fromStdString(session_->program().source_name);
   if (phase_ == Phase::kAskingWhere) {
     if (!ok) {
-      endSend(false, QString::fromStdString(p.error_message()) + tr(" (while asking WHERE)"));
+      endSend(false,
+              RobotPanelWords(p.error_key(), p.error_message()) + tr(" (while asking WHERE)"));
       return;
     }
     std::string found;
     const Status st = session_->ResolveUncertain(p.last_replies(), &found);
     if (!st) {
-      endSend(false, QString::fromStdString(st.message()));
+      endSend(false, RobotPanelWords(st));
       return;
     }
     emit note(QString::fromStdString(found));
@@ -144,7 +147,7 @@ void RobotLink::onFinished(bool ok) {
                                    .arg(source)
                                    .arg(p.acknowledged())
                                    .arg(p.total())
-                             : QString::fromStdString(st.message());
+                             : RobotPanelWords(st);
   if (journaled_ && p.acknowledged() < p.total()) {
     message += tr(". The journal %1 records how far it got: Resume continues after the last "
                   "acknowledged line%2")

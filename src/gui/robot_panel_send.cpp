@@ -12,6 +12,7 @@
 #include "controller_settings.h"
 #include "robot_link.h"
 #include "robot_panel.h"
+#include "robot_words.h"
 #include "send_questions.h"
 
 namespace armmimic::gui {
@@ -37,7 +38,7 @@ bool RobotPanel::checkResumable(const robot::ValProgram& program, const std::str
   robot::UnfinishedSend u;
   const Status st = robot::FindUnfinishedSend(program, input, &u);
   if (!st) {
-    emit errorOccurred(tr("Resume: %1").arg(QString::fromStdString(st.message())));
+    emit errorOccurred(tr("Resume: %1").arg(RobotPanelWords(st)));
     return false;
   }
   const QString journal = QString::fromStdString(u.journal_path);
@@ -86,7 +87,7 @@ bool RobotPanel::startSend(robot::SendStart::Mode mode, bool confirmed) {
   robot::ValProgram program;
   std::string input;
   if (const Status st = programToSend(profile, &program, &input); !st) {
-    emit errorOccurred(QString::fromStdString(st.message()));
+    emit errorOccurred(RobotPanelWords(st));
     return false;
   }
   robot::SendStart start;
@@ -94,7 +95,7 @@ bool RobotPanel::startSend(robot::SendStart::Mode mode, bool confirmed) {
   if (mode == robot::SendStart::Mode::kFresh) {
     robot::UnfinishedSend unfinished;
     if (const Status st = robot::FindUnfinishedSend(program, input, &unfinished); !st) {
-      emit errorOccurred(QString::fromStdString(st.message()));
+      emit errorOccurred(RobotPanelWords(st));
       return false;
     }
     if (unfinished.found && confirmed) {

@@ -1,40 +1,60 @@
 // The robot panel's saved settings: the plan's mapping, filter and limits, the port and the
-// Controller tab's fields (QSettings group "robot").
+// Controller tab's fields (QSettings group "robot"). The plan settings are saved under the keys
+// of their option table rows; the names earlier versions used are still read.
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QSettings>
 #include <QVariantList>
+#include <string>
+#include <utility>
+#include <vector>
 
+#include "armmimic/robot/option_tables.h"
 #include "controller_settings.h"
+#include "robot_option_keys.h"
 #include "robot_panel.h"
 
 namespace armmimic::gui {
+
+namespace {
+
+// The planner, mapping and limits values of `o` whose row has a field in `panel`, as
+// ("TABLE.KEY", "VALUE") pairs.
+std::vector<std::pair<std::string, std::string>> PanelSettings(QWidget* panel,
+                                                               const robot::PlannerOptions& o) {
+  std::vector<std::pair<std::string, std::string>> all =
+      robot::OptionTableValues(robot::PlannerOptionFields(), "planner", o);
+  for (auto& kv : robot::OptionTableValues(robot::MappingOptionFields(), "mapping", o.mapping)) {
+    all.push_back(std::move(kv));
+  }
+  for (auto& kv : robot::OptionTableValues(robot::LimitsOptionFields(), "limits", o.limits)) {
+    all.push_back(std::move(kv));
+  }
+  std::vector<std::pair<std::string, std::string>> offered;
+  for (auto& kv : all) {
+    if (RobotOptionField(panel, QString::fromStdString(kv.first))) {
+      offered.push_back(std::move(kv));
+    }
+  }
+  return offered;
+}
+
+}  // namespace
 
 void RobotPanel::save(QSettings& s) const {
   const robot::PlannerOptions o = plannerOptions();
   s.beginGroup("robot");
   s.setValue("mappingKind", robot::SourceKindName(mapping_kind_));
-  s.setValue("mirror", o.mapping.mirror);
-  const robot::JointMap maps[3] = {o.mapping.j1, o.mapping.j2, o.mapping.j3};
-  for (int i = 0; i < 3; ++i) {
-    s.setValue(QString("j%1/sign").arg(i + 1), maps[i].sign);
-    s.setValue(QString("j%1/offset").arg(i + 1), maps[i].offset_deg);
+  // Every plan setting the panel offers, under the key of its table row ("planner.cutoff_hz");
+  // the names earlier versions saved them under are dropped.
+  for (const char* legacy : {"mirror", "j1", "j2", "j3", "cutoff", "deadband", "minInterval",
+                             "maxGap", "clamp", "limitsMin", "limitsMax", "speedLimits"}) {
+    s.remove(legacy);
   }
-  s.setValue("cutoff", o.cutoff_hz);
-  s.setValue("deadband", o.deadband_deg);
-  s.setValue("minInterval", o.min_interval_s);
-  s.setValue("maxGap", o.max_gap_s);
-  s.setValue("clamp", o.clamp);
-  QVariantList mins, maxs, speeds;
-  for (int j = 0; j < robot::kJoints; ++j) {
-    mins << o.limits.min_deg[j];
-    maxs << o.limits.max_deg[j];
-    speeds << o.limits.max_speed_deg_s[j];
+  for (const auto& [key, value] : PanelSettings(const_cast<RobotPanel*>(this), o)) {
+    s.setValue(QString::fromStdString(key), QString::fromStdString(value));
   }
-  s.setValue("limitsMin", mins);
-  s.setValue("limitsMax", maxs);
-  s.setValue("speedLimits", speeds);
   s.setValue("port", port_->currentText());
   controller_->save(s);
   s.endGroup();
@@ -70,6 +90,16 @@ void RobotPanel::load(QSettings& s) {
       o.limits.max_deg[j] = maxs[j].toDouble();
       o.limits.max_speed_deg_s[j] = speeds[j].toDouble();
     }
+  }
+  // The table keys last, over the names of earlier versions.
+  for (const auto& [key, value] : PanelSettings(this, o)) {
+    const QString name = QString::fromStdString(key);
+    if (!s.contains(name)) continue;
+    const QVariant v = s.value(name);
+    const QString text =
+        v.typeId() == QMetaType::QStringList ? v.toStringList().join(',') : v.toString();
+    // An unreadable value (a hand-edited file) keeps the setting as it is.
+    robot::SetPlannerSetting(key + "=" + text.toStdString(), &o);
   }
   const QString port = s.value("port").toString();
   controller_->load(s);

@@ -140,7 +140,10 @@ void MimicRun::OnAnalysisDone(const Status& status, const AnalysisSummary& summa
   if (thread_.joinable()) thread_.join();
   analysis_done_ = true;
   summary_ = summary;
-  if (!status && failure_.empty()) failure_ = status.message();
+  if (!status && failure_.empty()) {
+    failure_ = status.message();
+    failure_key_ = status.key();
+  }
   if (status && !summary.cancelled && failure_.empty()) ended_normally_ = true;
   stream_.Stop(failure_);
   if (link_ && !dry_run_ && !link_done_) link_->EndStream();
@@ -163,7 +166,9 @@ void MimicRun::OnLinkFinished(bool ok) {
     if (failure_.empty() || link_->protocol().error() != robot::LinkError::kAborted ||
         stops_ == 0) {
       failure_ = message;
+      failure_key_ = link_->protocol().error_key();
     }
+
     ended_normally_ = false;
     stream_.Stop(failure_);
     cancel_.store(true);

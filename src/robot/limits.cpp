@@ -27,11 +27,14 @@ Status JointLimits::Check() const {
   for (int j = 0; j < kJoints; ++j) {
     const std::string name = "J" + std::to_string(j + 1);
     if (!std::isfinite(min_deg[j]) || !std::isfinite(max_deg[j]) || !(min_deg[j] < max_deg[j])) {
-      return Status::Error(name + " limits [" + FormatNumber(min_deg[j], 2) + "," +
-                           FormatNumber(max_deg[j], 2) + "] need min < max");
+      return Status::Error(!(min_deg[j] < max_deg[j]) || !std::isfinite(min_deg[j])
+                               ? "limits.min_deg"
+                               : "limits.max_deg",
+                           name + " limits [" + FormatNumber(min_deg[j], 2) + "," +
+                               FormatNumber(max_deg[j], 2) + "] need min < max");
     }
     if (!std::isfinite(max_speed_deg_s[j]) || !(max_speed_deg_s[j] > 0)) {
-      return Status::Error(name + " speed limit must be > 0 deg/s");
+      return Status::Error("limits.max_speed_deg_s", name + " speed limit must be > 0 deg/s");
     }
   }
   return Status::Ok();

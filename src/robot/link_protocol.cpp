@@ -1,3 +1,6 @@
+// The line protocol with the controller as a transport-free state machine: lines out, echoes,
+// prompts, error replies and time-outs in, fed bytes and time.
+// Length: one state machine whose handlers share the state of the line in flight.
 #include "armmimic/robot/link_protocol.h"
 #include "armmimic/core/text.h"
 
@@ -157,6 +160,7 @@ void LinkProtocol::Start(std::vector<LinkLine> lines, const std::string& source_
   state_ = LinkState::kWaking;
   error_ = LinkError::kNone;
   error_message_.clear();
+  error_key_.clear();
   controller_text_.clear();
   wake_attempt_ = 1;
   now_s_ = now_s;
@@ -192,9 +196,10 @@ const LinkLine* LinkProtocol::in_flight() const {
   return written_ && next_ < lines_.size() ? &lines_[next_] : nullptr;
 }
 
-void LinkProtocol::Abort(const std::string& message) {
+void LinkProtocol::Abort(const std::string& message, const std::string& key) {
   if (finished()) return;
   Fail(LinkError::kAborted, message);
+  error_key_ = key;
 }
 
 void LinkProtocol::OnBytes(std::string_view data, double now_s) {

@@ -40,15 +40,18 @@ Status MappingOptions::Check() const {
   const JointMap* maps[3] = {&j1, &j2, &j3};
   for (int j = 0; j < 3; ++j) {
     if (maps[j]->sign != 1 && maps[j]->sign != -1) {
-      return Status::Error("J" + std::to_string(j + 1) + " mapping sign must be +1 or -1");
+      return Status::Error("mapping.j" + std::to_string(j + 1),
+                           "J" + std::to_string(j + 1) + " mapping sign must be +1 or -1");
     }
     if (!std::isfinite(maps[j]->offset_deg)) {
-      return Status::Error("J" + std::to_string(j + 1) + " mapping offset must be a number");
+      return Status::Error("mapping.j" + std::to_string(j + 1),
+                           "J" + std::to_string(j + 1) + " mapping offset must be a number");
     }
   }
   for (int j = 3; j < kJoints; ++j) {
     if (!std::isfinite(hold_deg[j])) {
-      return Status::Error("J" + std::to_string(j + 1) + " hold value must be a number");
+      return Status::Error("mapping.hold_deg",
+                           "J" + std::to_string(j + 1) + " hold value must be a number");
     }
   }
   return Status::Ok();

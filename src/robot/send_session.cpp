@@ -185,22 +185,25 @@ Status SendSession::DecideStart(const SendStart& start, const std::string& hash,
         start.mode != SendStart::Mode::kRestart && !start.dry_run) {
       // Never replay moves silently: the operator chooses between continuing and starting over.
       // The journal cannot tell a send that stopped from one still running on another terminal.
-      return Status::Error(journal_path_ + ": an earlier send of " + input_ +
-                           " has not finished (" + std::to_string(journal.acknowledged) + " of " +
-                           std::to_string(total) +
-                           " lines acknowledged; if it is still running, let it end); continue "
-                           "with --resume, or start over from the first line with --restart "
-                           "(replays the moves already made)");
+      return Status::Error(
+          "send.mode", journal_path_ + ": an earlier send of " + input_ + " has not finished (" +
+                           std::to_string(journal.acknowledged) + " of " + std::to_string(total) +
+                           " lines acknowledged; if it is still running, let it end); resume "
+                           "it where it stopped, or restart from the first line (replays "
+                           "the moves already made)");
     }
     return Status::Ok();
   }
   if (!journal.exists) {
-    return Status::Error(journal_path_ +
-                         ": no journal, so nothing to resume (send without --resume)");
+    return Status::Error("send.resume", journal_path_ +
+                                            ": no journal, so nothing to resume (send it from "
+                                            "the first line)");
   }
   if (journal.hash != hash) {
-    return Status::Error(journal_path_ + ": the journal belongs to a different version of " +
-                         input_ + " (the program changed); send it again without --resume");
+    return Status::Error(
+        "send.resume", journal_path_ + ": the journal belongs to a different version of " + input_ +
+                           " (the program changed); send it again from the "
+                           "first line");
   }
   if (start.resume_at_line > 0) {
     start_ = total;
@@ -211,8 +214,9 @@ Status SendSession::DecideStart(const SendStart& start, const std::string& hash,
       }
     }
     if (start_ == total) {
-      return Status::Error("--resume-at " + std::to_string(start.resume_at_line) + ": " + input_ +
-                           " has no line to send at or after it");
+      return Status::Error(
+          "send.resume_at_line",
+          input_ + " has no line to send at or after line " + std::to_string(start.resume_at_line));
     }
     return Status::Ok();
   }
@@ -229,10 +233,11 @@ Status SendSession::DecideStart(const SendStart& start, const std::string& hash,
       if (IsExecute(program_.lines[i].text)) execute_sent = true;
     }
     if (execute_sent) {
-      return Status::Error(input_ + ":" + std::to_string(journal.sent_line_no) +
-                           ": the program was started (EXECUTE) and the link was lost; it may "
-                           "have run partly. Check the arm (WHERE), then send again with "
-                           "--restart or --resume-at LINE");
+      return Status::Error("send.mode",
+                           input_ + ":" + std::to_string(journal.sent_line_no) +
+                               ": the program was started (EXECUTE) and the link was lost; it "
+                               "may have run partly. Check the arm (WHERE), then send it again "
+                               "from the first line or from a chosen line");
     }
     start_ = 0;  // nothing has moved yet: upload the whole program again
     check_uncertain_ = false;
@@ -247,10 +252,12 @@ Status SendSession::UncertainQuery(bool* ask, LinkLine* query) const {
   if (!IsMotionLine(l.text)) return Status::Ok();  // a SPEED does the same thing twice
   const std::string where = program_.source_name + ":" + std::to_string(l.line_no);
   if (!ArmPositionsAfterEachLine(program_)[start_].known) {
-    return Status::Error(where +
-                         ": the link was lost while this line was out and its target is "
-                         "unknown; check the arm, then use --resume-at " +
-                         std::to_string(l.line_no) + " (send it again) or the next line (skip it)");
+    return Status::Error("send.resume_at_line",
+                         where +
+                             ": the link was lost while this line was out and its target is "
+                             "unknown; check the arm, then resume at line " +
+                             std::to_string(l.line_no) +
+                             " (send it again) or at the next line (skip it)");
   }
   query->text = "WHERE";
   query->line_no = l.line_no;
@@ -268,9 +275,10 @@ Status SendSession::ResolveUncertain(const std::vector<std::string>& where_repli
   const std::string where = program_.source_name + ":" + std::to_string(l.line_no);
   JointArray now{};
   if (!ParseWhereReply(where_replies, &now)) {
-    return Status::Error(where +
-                         ": the controller's WHERE reply holds no six joint angles; check the "
-                         "arm, then use --resume-at");
+    return Status::Error("send.resume_at_line",
+                         where +
+                             ": the controller's WHERE reply holds no six joint angles; check "
+                             "the arm, then resume at a chosen line");
   }
   const std::vector<ArmPosition> expected = ArmPositionsAfterEachLine(program_);
   const JointArray& target = expected[i].joint_deg;
@@ -298,10 +306,11 @@ Status SendSession::ResolveUncertain(const std::vector<std::string>& where_repli
     check_uncertain_ = false;
     return Status::Ok();
   }
-  return Status::Error(where + ": cannot tell whether this line ran: the arm is at " + Joints(now) +
-                       ", the line's target is " + Joints(target) +
-                       ". Check the arm, then use --resume-at " + std::to_string(l.line_no) +
-                       " (send it again) or the next line (skip it)");
+  return Status::Error("send.resume_at_line",
+                       where + ": cannot tell whether this line ran: the arm is at " + Joints(now) +
+                           ", the line's target is " + Joints(target) +
+                           ". Check the arm, then resume at line " + std::to_string(l.line_no) +
+                           " (send it again) or at the next line (skip it)");
 }
 
 Status SendSession::Attach(LinkProtocol* protocol) {
@@ -359,7 +368,7 @@ Status SendSession::Finish(const LinkProtocol& protocol) {
   if (!journal_error_.empty() && message.find(journal_error_) == std::string::npos) {
     message += " (" + journal_error_ + ")";
   }
-  return Status::Error(message);
+  return Status::Error(protocol.error_key(), message);
 }
 
 bool SendSession::MotionWasInFlight(const LinkProtocol& protocol) const {

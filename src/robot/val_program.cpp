@@ -1,5 +1,6 @@
+// VAL program text: reading a program file (commands, timing comments, header limits) and
+// writing one from a trajectory. The safety check of each line is in val_check.cpp.
 #include "armmimic/robot/val_program.h"
-#include "armmimic/core/text.h"
 
 #include <algorithm>
 #include <cctype>
@@ -9,14 +10,11 @@
 #include <sstream>
 
 #include "armmimic/core/angle_file.h"
+#include "armmimic/core/text.h"
+#include "val_text.h"
 
 namespace armmimic::robot {
-namespace {
-
-std::string Upper(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return s;
-}
+namespace val_text {
 
 // Plain decimal numbers only ([+-]digits[.digits]): no exponent, hex, inf or nan, so the value
 // checked is the value any controller reads.
@@ -57,6 +55,24 @@ bool ParseList(const std::string& text, std::vector<double>* out) {
   return !text.empty() && text.back() != ',';
 }
 
+std::string Num(double v) {
+  // Short form for messages: up to three decimals, trailing zeros dropped.
+  std::string s = FormatNumber(v, 3);
+  while (s.find('.') != std::string::npos && (s.back() == '0' || s.back() == '.')) {
+    const bool dot = s.back() == '.';
+    s.pop_back();
+    if (dot) break;
+  }
+  return s;
+}
+
+}  // namespace val_text
+namespace {
+
+using val_text::Num;
+using val_text::ParseDouble;
+using val_text::ParseList;
+
 std::string Replace(std::string text, const std::string& key, const std::string& value) {
   const std::string token = "{" + key + "}";
   for (auto pos = text.find(token); pos != std::string::npos; pos = text.find(token, pos)) {
@@ -85,96 +101,32 @@ double RoundTo(double v, int decimals) {
   return std::round(v * scale) / scale;
 }
 
-// The command keywords the checker understands. A keyword may be abbreviated to any prefix of two
-// letters or more that is unique among them (VAL accepts unique prefixes); "E" alone leaves the
-// editor.
-enum class Keyword { kNone, kDo, kDrive, kEdit, kExecute, kMove, kSpeed, kEndEdit };
-
-Keyword MatchKeyword(const std::string& token) {
-  const std::string t = Upper(token);
-  if (t == "E") return Keyword::kEndEdit;
-  if (t.size() < 2) return Keyword::kNone;
-  static const std::pair<const char*, Keyword> kWords[] = {
-      {"DO", Keyword::kDo},           {"DRIVE", Keyword::kDrive}, {"EDIT", Keyword::kEdit},
-      {"EXECUTE", Keyword::kExecute}, {"MOVE", Keyword::kMove},   {"SPEED", Keyword::kSpeed}};
-  Keyword found = Keyword::kNone;
-  int matches = 0;
-  for (const auto& [word, kw] : kWords) {
-    if (std::string(word).rfind(t, 0) == 0) {
-      found = kw;
-      ++matches;
+// The limits a program's header records (limits_min_deg, limits_max_deg, speed_limit_deg_s):
+// all three or none, six numbers each, and limits that pass their own check.
+Status ReadHeaderLimits(const std::string& source_name, ValProgram* p) {
+  const auto min_it = p->header.find("limits_min_deg");
+  const auto max_it = p->header.find("limits_max_deg");
+  const auto speed_it = p->header.find("speed_limit_deg_s");
+  const int present =
+      (min_it != p->header.end()) + (max_it != p->header.end()) + (speed_it != p->header.end());
+  if (present > 0) {
+    std::vector<double> mins, maxs, speeds;
+    if (present != 3 || !ParseList(min_it->second, &mins) || !ParseList(max_it->second, &maxs) ||
+        !ParseList(speed_it->second, &speeds) || mins.size() != kJoints || maxs.size() != kJoints ||
+        speeds.size() != kJoints) {
+      return Status::Error(source_name +
+                           ": header limits need limits_min_deg, limits_max_deg and "
+                           "speed_limit_deg_s, six comma-separated numbers each");
     }
+    JointLimits lim;
+    std::copy(mins.begin(), mins.end(), lim.min_deg.begin());
+    std::copy(maxs.begin(), maxs.end(), lim.max_deg.begin());
+    std::copy(speeds.begin(), speeds.end(), lim.max_speed_deg_s.begin());
+    const Status check = lim.Check();
+    if (!check.ok()) return Status::Error(source_name + ": header limits: " + check.message());
+    p->header_limits = lim;
+    p->has_header_limits = true;
   }
-  return matches == 1 ? found : Keyword::kNone;
-}
-
-// Splits "WORD rest" at the first space.
-void SplitWord(const std::string& text, std::string* word, std::string* rest) {
-  const auto sp = text.find(' ');
-  *word = text.substr(0, sp);
-  *rest = sp == std::string::npos ? "" : Trim(text.substr(sp + 1));
-}
-
-bool ValidName(const std::string& name) {
-  if (name.empty() || name.size() > 15) return false;
-  for (char c : name) {
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '.') return false;
-  }
-  return true;
-}
-
-std::string Num(double v) {
-  // Short form for messages: up to three decimals, trailing zeros dropped.
-  std::string s = FormatNumber(v, 3);
-  while (s.find('.') != std::string::npos && (s.back() == '0' || s.back() == '.')) {
-    const bool dot = s.back() == '.';
-    s.pop_back();
-    if (dot) break;
-  }
-  return s;
-}
-
-Status CheckSpeedSetting(double monitor_pct, double program_pct, const SafetyState& s) {
-  const double eff = (std::isnan(monitor_pct) ? 100.0 : monitor_pct) * program_pct / 100.0;
-  for (int j = 0; j < kJoints; ++j) {
-    const double joint_speed = eff / 100.0 * s.joint_speed_at_100_deg_s[j];
-    if (joint_speed > s.limits.max_speed_deg_s[j] * (1 + 1e-9)) {
-      return Status::Error("speed " + Num(eff) + "% would let J" + std::to_string(j + 1) +
-                           " move at " + Num(joint_speed) + " deg/s, over its limit of " +
-                           Num(s.limits.max_speed_deg_s[j]) + " deg/s");
-    }
-  }
-  return Status::Ok();
-}
-
-Status CheckTarget(const JointArray& target, double time_s, SafetyState& s) {
-  if (std::isnan(s.monitor_speed_pct)) {
-    return Status::Error("motion before any SPEED line: the controller's speed is unknown");
-  }
-  for (int j = 0; j < kJoints; ++j) {
-    if (target[j] < s.limits.min_deg[j] || target[j] > s.limits.max_deg[j]) {
-      return Status::Error("J" + std::to_string(j + 1) + " target " + Num(target[j]) +
-                           " is outside the limit " + DescribeLimit(s.limits, j));
-    }
-  }
-  if (!std::isnan(time_s) && !std::isnan(s.last_time_s) && s.have_position) {
-    const double dt = time_s - s.last_time_s;
-    if (!(dt > 0)) {
-      return Status::Error("t=" + Num(time_s) +
-                           " is not after the previous move's t=" + Num(s.last_time_s));
-    }
-    for (int j = 0; j < kJoints; ++j) {
-      const double delta = std::abs(target[j] - s.last_deg[j]);
-      if (delta > s.limits.max_speed_deg_s[j] * dt + s.tolerance_deg) {
-        return Status::Error("J" + std::to_string(j + 1) + " moves " + Num(delta) + " deg in " +
-                             Num(dt) + " s (" + Num(delta / dt) + " deg/s), over its limit of " +
-                             Num(s.limits.max_speed_deg_s[j]) + " deg/s");
-      }
-    }
-  }
-  s.last_deg = target;
-  s.have_position = true;
-  if (!std::isnan(time_s)) s.last_time_s = time_s;
   return Status::Ok();
 }
 
@@ -253,29 +205,8 @@ Status ParseValProgram(std::istream& in, const std::string& source_name, int max
                          ": timing comment not followed by a command line");
   }
   if (p.lines.empty()) return Status::Error(source_name + ": no command lines to send");
-  const auto min_it = p.header.find("limits_min_deg");
-  const auto max_it = p.header.find("limits_max_deg");
-  const auto speed_it = p.header.find("speed_limit_deg_s");
-  const int present =
-      (min_it != p.header.end()) + (max_it != p.header.end()) + (speed_it != p.header.end());
-  if (present > 0) {
-    std::vector<double> mins, maxs, speeds;
-    if (present != 3 || !ParseList(min_it->second, &mins) || !ParseList(max_it->second, &maxs) ||
-        !ParseList(speed_it->second, &speeds) || mins.size() != kJoints || maxs.size() != kJoints ||
-        speeds.size() != kJoints) {
-      return Status::Error(source_name +
-                           ": header limits need limits_min_deg, limits_max_deg and "
-                           "speed_limit_deg_s, six comma-separated numbers each");
-    }
-    JointLimits lim;
-    std::copy(mins.begin(), mins.end(), lim.min_deg.begin());
-    std::copy(maxs.begin(), maxs.end(), lim.max_deg.begin());
-    std::copy(speeds.begin(), speeds.end(), lim.max_speed_deg_s.begin());
-    const Status check = lim.Check();
-    if (!check.ok()) return Status::Error(source_name + ": header limits: " + check.message());
-    p.header_limits = lim;
-    p.has_header_limits = true;
-  }
+  const Status limits = ReadHeaderLimits(source_name, &p);
+  if (!limits.ok()) return limits;
   *out = std::move(p);
   return Status::Ok();
 }
@@ -372,156 +303,6 @@ std::string FormatMoveLine(const JointArray& target_deg, const ControllerProfile
                    FormatJointDeg(RoundTo(target_deg[j], profile.decimals), profile.decimals));
   }
   return line;
-}
-
-SafetyState SafetyState::For(const JointLimits& limits, const ControllerProfile& profile) {
-  SafetyState s;
-  s.limits = limits;
-  s.joint_speed_at_100_deg_s = profile.joint_speed_at_100_deg_s;
-  s.max_line_length = profile.max_line_length;
-  const double step = std::pow(10.0, -profile.decimals);
-  s.tolerance_deg = std::max(0.011, 1.1 * step);
-  return s;
-}
-
-Status CheckLine(const std::string& line, SafetyState& state) {
-  return CheckLine(line, kNaN, state);
-}
-
-Status CheckLine(const std::string& raw_line, double time_s, SafetyState& state) {
-  if (static_cast<int>(raw_line.size()) > state.max_line_length) {
-    return Status::Error("line is " + std::to_string(raw_line.size()) +
-                         " characters, over the limit of " + std::to_string(state.max_line_length));
-  }
-  for (unsigned char c : raw_line) {
-    if (c < 0x20 || c >= 0x7f) return Status::Error("control or non-ASCII character in the line");
-  }
-  const std::string line = Trim(raw_line);
-  if (line.empty()) return Status::Ok();
-  if (line[0] == ';') return Status::Error("comment lines are never sent");
-
-  std::string word, rest;
-  SplitWord(line, &word, &rest);
-  Keyword kw = MatchKeyword(word);
-  bool via_do = false;
-  if (kw == Keyword::kDo) {
-    via_do = true;
-    SplitWord(rest, &word, &rest);
-    kw = MatchKeyword(word);
-    if (kw != Keyword::kMove && kw != Keyword::kDrive && kw != Keyword::kSpeed) {
-      return Status::Error("'" + line + "': only DO MOVE, DO DRIVE and DO SPEED can be checked");
-    }
-  }
-  const std::string cmd = "'" + line + "': ";
-  switch (kw) {
-    case Keyword::kMove: {
-      const std::string u = Upper(rest);
-      if (u.rfind("#PPOINT", 0) != 0) {
-        return Status::Error(cmd + "only moves to #PPOINT(j1,...,j6) can be checked");
-      }
-      std::string args = Trim(rest.substr(7));
-      if (args.size() < 2 || args.front() != '(' || args.back() != ')') {
-        return Status::Error(cmd + "expected #PPOINT(j1,j2,j3,j4,j5,j6)");
-      }
-      std::vector<double> v;
-      if (!ParseList(args.substr(1, args.size() - 2), &v) || v.size() != kJoints) {
-        return Status::Error(cmd + "#PPOINT needs six numbers");
-      }
-      JointArray target{};
-      std::copy(v.begin(), v.end(), target.begin());
-      const Status s = CheckTarget(target, time_s, state);
-      return s.ok() ? s : Status::Error(cmd + s.message());
-    }
-    case Keyword::kDrive: {
-      std::vector<double> v;
-      if (!ParseList(rest, &v) || v.size() != 3) {
-        return Status::Error(cmd + "expected DRIVE joint,change,speed");
-      }
-      // Range first: converting a double outside int's range is undefined.
-      if (!(v[0] >= 1 && v[0] <= kJoints) || v[0] != std::floor(v[0])) {
-        return Status::Error(cmd + "joint must be 1..6");
-      }
-      const int joint = static_cast<int>(v[0]);
-      if (!(v[2] > 0 && v[2] <= 100)) return Status::Error(cmd + "speed must be in (0,100]");
-      if (!state.have_position) {
-        return Status::Error(cmd +
-                             "DRIVE needs a known joint position (send a checked MOVE first)");
-      }
-      if (std::isnan(state.monitor_speed_pct)) {
-        return Status::Error(cmd +
-                             "motion before any SPEED line: the controller's speed is unknown");
-      }
-      const int j = joint - 1;
-      const double target = state.last_deg[j] + v[1];
-      if (!state.limits.Inside(j, target)) {
-        return Status::Error(cmd + "J" + std::to_string(joint) + " would reach " + Num(target) +
-                             ", outside the limit " + DescribeLimit(state.limits, j));
-      }
-      const double joint_speed =
-          state.monitor_speed_pct / 100.0 * v[2] / 100.0 * state.joint_speed_at_100_deg_s[j];
-      if (joint_speed > state.limits.max_speed_deg_s[j] * (1 + 1e-9)) {
-        return Status::Error(cmd + "J" + std::to_string(joint) + " would move at " +
-                             Num(joint_speed) + " deg/s, over its limit of " +
-                             Num(state.limits.max_speed_deg_s[j]) + " deg/s");
-      }
-      state.last_deg[j] = target;
-      state.last_time_s = kNaN;  // a DRIVE takes its own time
-      return Status::Ok();
-    }
-    case Keyword::kSpeed: {
-      double pct = 0;
-      if (!ParseDouble(rest, &pct) || !(pct > 0)) {
-        return Status::Error(cmd + "expected SPEED followed by one number > 0");
-      }
-      const bool program_speed = via_do || state.in_editor;
-      const double monitor = program_speed ? state.monitor_speed_pct : pct;
-      const double prog = program_speed ? pct : state.program_speed_pct;
-      const Status s = CheckSpeedSetting(monitor, prog, state);
-      if (!s.ok()) return Status::Error(cmd + s.message());
-      if (program_speed) {
-        state.program_speed_pct = pct;
-      } else {
-        state.monitor_speed_pct = pct;
-      }
-      return Status::Ok();
-    }
-    case Keyword::kEdit:
-      if (state.in_editor) return Status::Error(cmd + "EDIT while already editing");
-      if (!ValidName(rest)) return Status::Error(cmd + "expected EDIT followed by a program name");
-      state.in_editor = true;
-      state.edited_programs.insert(Upper(rest));
-      return Status::Ok();
-    case Keyword::kEndEdit:
-      if (!rest.empty() || !state.in_editor) {
-        return Status::Error(cmd + "E (leave the editor) outside EDIT ... E");
-      }
-      state.in_editor = false;
-      return Status::Ok();
-    case Keyword::kExecute:
-      if (state.in_editor) return Status::Error(cmd + "EXECUTE inside EDIT ... E");
-      if (!state.edited_programs.count(Upper(rest))) {
-        return Status::Error(cmd +
-                             "only a program uploaded and checked in this run may be executed");
-      }
-      if (std::isnan(state.monitor_speed_pct)) {
-        return Status::Error(cmd +
-                             "EXECUTE before any SPEED line: the controller's speed is unknown");
-      }
-      return Status::Ok();
-    default:
-      return Status::Error(cmd + "not a command the safety check can verify; it is not sent");
-  }
-}
-
-Status CheckProgram(const ValProgram& program, SafetyState& state) {
-  for (const ValLine& l : program.lines) {
-    const Status s = CheckLine(l.text, l.time_s, state);
-    if (!s.ok()) {
-      return Status::Error(program.source_name + ":" + std::to_string(l.line_no) + ": " +
-                           s.message());
-    }
-  }
-  return Status::Ok();
 }
 
 }  // namespace armmimic::robot

@@ -45,16 +45,22 @@ bool IsTerminal(const std::string& device) {
 }  // namespace
 
 Status PortSettings::Check() const {
-  if (port.empty()) return Status::Error("--port: no serial port given");
-  if (baud <= 0) return Status::Error("--baud " + std::to_string(baud) + ": must be positive");
+  if (port.empty()) return Status::Error("port.port", "no serial port given");
+  if (baud <= 0) {
+    return Status::Error("port.baud",
+                         "the baud rate " + std::to_string(baud) + " must be positive");
+  }
   if (data_bits < 5 || data_bits > 8) {
-    return Status::Error("--data-bits " + std::to_string(data_bits) + ": must be 5, 6, 7 or 8");
+    return Status::Error("port.data_bits",
+                         "the data bits " + std::to_string(data_bits) + " must be 5, 6, 7 or 8");
   }
   if (parity != 'N' && parity != 'E' && parity != 'O') {
-    return Status::Error(std::string("--parity ") + parity + ": must be none, even or odd");
+    return Status::Error("port.parity",
+                         std::string("the parity ") + parity + " must be none, even or odd");
   }
   if (stop_bits != 1 && stop_bits != 2) {
-    return Status::Error("--stop-bits " + std::to_string(stop_bits) + ": must be 1 or 2");
+    return Status::Error("port.stop_bits",
+                         "the stop bits " + std::to_string(stop_bits) + " must be 1 or 2");
   }
   return Status::Ok();
 }
@@ -133,7 +139,9 @@ Status SerialLink::Open(const PortSettings& settings) {
   Status s = settings.Check();
   if (!s.ok()) return s;
   settings_ = settings;
-  const std::string flag = "--port " + settings.port;
+  // Errors about the port itself are keyed "port.port" and start with the name as given.
+  const std::string flag = settings.port;
+  auto error = [](const std::string& message) { return Status::Error("port.port", message); };
   std::string device, tried;
   struct stat st {};
   for (const std::string& candidate : Candidates(settings.port)) {
@@ -144,20 +152,20 @@ Status SerialLink::Open(const PortSettings& settings) {
     }
   }
   if (device.empty()) {
-    return Status::Error(flag + ": no such serial port (tried " + tried +
-                         "); 'armmimic-cli send --list-ports' lists the ports found");
+    return error(flag + ": no such serial port (tried " + tried +
+                 "); the list of serial ports shows the ones found");
   }
   if (!S_ISCHR(st.st_mode)) {
-    return Status::Error(flag + ": " + device + " is not a serial port (it is " + KindOf(st) + ")");
+    return error(flag + ": " + device + " is not a serial port (it is " + KindOf(st) + ")");
   }
   if (access(device.c_str(), R_OK | W_OK) != 0 && errno == EACCES) {
-    return Status::Error(flag + ": permission denied on " + device +
-                         " (add your user to the group that owns it, usually 'dialout', and log "
-                         "in again)");
+    return error(flag + ": permission denied on " + device +
+                 " (add your user to the group that owns it, usually 'dialout', and log "
+                 "in again)");
   }
   // One program per device, whatever name each gives it; taken before a byte is written.
   if (Status locked = lock_.Acquire(device); !locked) {
-    return Status::Error(flag + ": " + locked.message());
+    return error(flag + ": " + locked.message());
   }
   // The serial library reads a name without a leading '/' as one under /dev: give it the path.
   std::string absolute = device;
@@ -172,16 +180,16 @@ Status SerialLink::Open(const PortSettings& settings) {
     const std::string qt = port_->errorString().toStdString();
     port_->clearError();
     if (e != QSerialPort::PermissionError && !IsTerminal(device)) {
-      return Status::Error(flag + ": " + device +
-                           " is not a serial port (a character device, but no terminal)");
+      return error(flag + ": " + device +
+                   " is not a serial port (a character device, but no terminal)");
     }
     if (e == QSerialPort::DeviceNotFoundError) {
-      return Status::Error(flag + ": no such serial port (" + qt + ")");
+      return error(flag + ": no such serial port (" + qt + ")");
     }
     if (e == QSerialPort::PermissionError) {
-      return Status::Error(flag + ": the port is busy: another program has it open (" + qt + ")");
+      return error(flag + ": the port is busy: another program has it open (" + qt + ")");
     }
-    return Status::Error(flag + ": cannot open the port: " + qt);
+    return error(flag + ": cannot open the port: " + qt);
   }
   const QSerialPort::Parity parity = settings.parity == 'E'   ? QSerialPort::EvenParity
                                      : settings.parity == 'O' ? QSerialPort::OddParity
@@ -190,25 +198,33 @@ Status SerialLink::Open(const PortSettings& settings) {
       settings.flow == FlowControl::kXonXoff  ? QSerialPort::SoftwareControl
       : settings.flow == FlowControl::kRtsCts ? QSerialPort::HardwareControl
                                               : QSerialPort::NoFlowControl;
-  std::string refused;
-  if (!port_->setBaudRate(settings.baud)) refused = "--baud " + std::to_string(settings.baud);
-  if (refused.empty() &&
-      !port_->setDataBits(static_cast<QSerialPort::DataBits>(settings.data_bits))) {
-    refused = "--data-bits " + std::to_string(settings.data_bits);
+  std::string key, refused;  // the setting the port refused, and its value in words
+  if (!port_->setBaudRate(settings.baud)) {
+    key = "port.baud";
+    refused = "the baud rate " + std::to_string(settings.baud);
   }
-  if (refused.empty() && !port_->setParity(parity)) refused = "--parity";
-  if (refused.empty() &&
+  if (key.empty() && !port_->setDataBits(static_cast<QSerialPort::DataBits>(settings.data_bits))) {
+    key = "port.data_bits";
+    refused = "the data bits " + std::to_string(settings.data_bits);
+  }
+  if (key.empty() && !port_->setParity(parity)) {
+    key = "port.parity";
+    refused = std::string("the parity ") + settings.parity;
+  }
+  if (key.empty() &&
       !port_->setStopBits(settings.stop_bits == 2 ? QSerialPort::TwoStop : QSerialPort::OneStop)) {
-    refused = "--stop-bits " + std::to_string(settings.stop_bits);
+    key = "port.stop_bits";
+    refused = "the stop bits " + std::to_string(settings.stop_bits);
   }
-  if (refused.empty() && !port_->setFlowControl(flow)) {
-    refused = std::string("--flow ") + FlowControlName(settings.flow);
+  if (key.empty() && !port_->setFlowControl(flow)) {
+    key = "port.flow";
+    refused = std::string("the flow control ") + FlowControlName(settings.flow);
   }
-  if (!refused.empty()) {
+  if (!key.empty()) {
     const std::string qt = port_->errorString().toStdString();
     port_->close();
     lock_.Release();
-    return Status::Error(refused + ": " + device + " refused this setting (" + qt + ")");
+    return Status::Error(key, device + " refused " + refused + " (" + qt + ")");
   }
   port_->clear();
   return Status::Ok();
@@ -313,8 +329,7 @@ void SerialLink::OnError(QSerialPort::SerialPortError error) {
   const std::string qt = port_->errorString().toStdString();
   if (finished_sent_) {
     if (error == QSerialPort::ResourceError) {
-      emit portError(
-          QString::fromStdString("--port " + settings_.port + ": the connection was lost: " + qt));
+      emit portError(QString::fromStdString(settings_.port + ": the connection was lost: " + qt));
     }
     return;
   }
@@ -323,8 +338,10 @@ void SerialLink::OnError(QSerialPort::SerialPortError error) {
     return;
   }
   // An end of file on the device reads as an error too: the cable, adapter or emulator is gone.
-  protocol_.Abort("--port " + settings_.port +
-                  ": the connection was lost (device unplugged, closed or failing): " + qt);
+  protocol_.Abort(
+      settings_.port + ": the connection was lost (device unplugged, closed or failing): " + qt,
+      "port.port");
+
   Flush();
 }
 

@@ -68,14 +68,14 @@ Status PtyServer::Start(const std::string& link_path, const std::string& log_pat
     if (lstat(link_path.c_str(), &st) == 0) {
       if (!S_ISLNK(st.st_mode)) {
         Stop();
-        return Status::Error("--link " + link_path + ": exists and is not a symlink; not replaced");
+        return Status::Error("sim.link", link_path + ": exists and is not a symlink; not replaced");
       }
       unlink(link_path.c_str());
     }
     if (symlink(device_path_.c_str(), link_path.c_str()) != 0) {
       const std::string err = std::strerror(errno);
       Stop();
-      return Status::Error("--link " + link_path + ": cannot create the symlink: " + err);
+      return Status::Error("sim.link", link_path + ": cannot create the symlink: " + err);
     }
     link_path_ = link_path;
   }

@@ -1,3 +1,6 @@
+// The PUMA 760 controller emulator: the VAL subset it interprets, the joint state and the
+// timing of motions, fed bytes and time like a serial line.
+// Length: one interpreter whose commands share the controller's state and output.
 #include "armmimic/sim/puma_emulator.h"
 
 #include <algorithm>

@@ -1,5 +1,6 @@
 // The arm scene renderer: a textured room, a person facing the camera, one arm moving.
 // Everything is drawn for an arm on the right of the image; the left side is the mirror image.
+// Length: one renderer whose drawing steps share the person's layout and the room.
 #include "armmimic/synth/arm_scene.h"
 
 #include <algorithm>
@@ -50,38 +51,45 @@ bool ParseArmSide(const std::string& name, ArmSide* out) {
 }
 
 Status ArmSceneOptions::Check() const {
-  auto err = [](const std::string& m) { return Status::Error(m); };
+  auto err = [](const char* member, const std::string& m) {
+    return Status::Error(std::string("arm_scene.") + member, m);
+  };
   if (size.width < 160 || size.height < 120 || size.width > 4096 || size.height > 4096) {
-    return err("size " + std::to_string(size.width) + "x" + std::to_string(size.height) +
-               " is out of range (160x120 to 4096x4096)");
+    return err("size", "size " + std::to_string(size.width) + "x" + std::to_string(size.height) +
+                           " is out of range (160x120 to 4096x4096)");
   }
   if (!(fps > 0 && fps <= 240))
-    return err("fps " + std::to_string(fps) + " is out of range (0, 240]");
+    return err("fps", "fps " + std::to_string(fps) + " is out of range (0, 240]");
   if (background_frames < 0 || background_frames > 100000) {
-    return err("background frames " + std::to_string(background_frames) +
-               " is out of range 0..100000");
+    return err("background_frames", "background frames " + std::to_string(background_frames) +
+                                        " is out of range 0..100000");
   }
   if (standstill_frames < 0 || standstill_frames > 100000) {
-    return err("standstill frames " + std::to_string(standstill_frames) +
-               " is out of range 0..100000");
+    return err("standstill_frames", "standstill frames " + std::to_string(standstill_frames) +
+                                        " is out of range 0..100000");
   }
   if (motion_frames < 1 || motion_frames > 100000) {
-    return err("motion frames " + std::to_string(motion_frames) + " is out of range 1..100000");
+    return err("motion_frames",
+               "motion frames " + std::to_string(motion_frames) + " is out of range 1..100000");
   }
   if (!(noise_sigma >= 0 && noise_sigma <= 50)) {
-    return err("noise sigma " + std::to_string(noise_sigma) + " is out of range 0..50");
+    return err("noise_sigma",
+               "noise sigma " + std::to_string(noise_sigma) + " is out of range 0..50");
   }
   if (codec != "MJPG" && codec != "XVID" && codec != "H264") {
-    return err("codec '" + codec + "' is not one of MJPG, XVID, H264");
+    return err("codec", "codec '" + codec + "' is not one of MJPG, XVID, H264");
   }
   if (jpeg_quality < 0 || jpeg_quality > 100) {
-    return err("quality " + std::to_string(jpeg_quality) + " is out of range 0..100");
+    return err("jpeg_quality",
+               "quality " + std::to_string(jpeg_quality) + " is out of range 0..100");
   }
   if (!(clothing_contrast >= 0 && clothing_contrast <= 2)) {
-    return err("clothing contrast " + std::to_string(clothing_contrast) + " is out of range 0..2");
+    return err("clothing_contrast",
+               "clothing contrast " + std::to_string(clothing_contrast) + " is out of range 0..2");
   }
   if (!(lighting_drift >= -0.9 && lighting_drift <= 2)) {
-    return err("lighting drift " + std::to_string(lighting_drift) + " is out of range -0.9..2");
+    return err("lighting_drift",
+               "lighting drift " + std::to_string(lighting_drift) + " is out of range -0.9..2");
   }
   return Status::Ok();
 }

@@ -61,8 +61,9 @@ Status WriteSceneFolder(const ArmSceneSource& scene, const SceneVideo& video, co
       writer.set(cv::VIDEOWRITER_PROP_QUALITY, video.jpeg_quality);
     }
     if (!writer.isOpened()) {
-      return Status::Error(video_path + ": codec " + c +
-                           " has no encoder for AVI in this OpenCV build (try --codec MJPG)");
+      return Status::Error(
+          "arm_scene.codec",
+          video_path + ": codec " + c + " has no encoder for AVI in this OpenCV build (try MJPG)");
     }
     const int n = scene.frame_count();
     for (int f = 0; f < n; ++f) {

@@ -1,6 +1,8 @@
 // Marker-joint scenes: scene conditions (background, lighting, clutter) drawn from the seed, views
 // with known poses, truth rows and the folder writer. The joint itself is ray cast in
 // marker_render.cpp.
+// Length: the renderer's constructor draws the scene's conditions from one seeded generator in a
+// fixed order.
 #include "armmimic/synth/marker_scene.h"
 
 #include <algorithm>
@@ -100,36 +102,48 @@ MarkerJointModel MarkerJointModel::ForSize(cv::Size size) {
 
 Status MarkerSceneOptions::Check() const {
   if (size.width < 160 || size.height < 120 || size.width > 4096 || size.height > 4096) {
-    return Status::Error("--size " + std::to_string(size.width) + "x" +
-                         std::to_string(size.height) + " is out of range (160x120 .. 4096x4096)");
+    return Status::Error("marker_scene.size", "the image size " + std::to_string(size.width) + "x" +
+                                                  std::to_string(size.height) +
+                                                  " is out of range (160x120 .. 4096x4096)");
   }
   if (size.width * 3 < size.height * 4) {
-    return Status::Error("--size: the image must be at least 4:3 wide so the bent joint fits");
+    return Status::Error("marker_scene.size",
+                         "the image must be at least 4:3 wide so the bent joint fits");
   }
-  if (views < 1 || views > 100000) return Status::Error("--views must be in [1, 100000]");
+  if (views < 1 || views > 100000) {
+    return Status::Error("marker_scene.views", "the number of views must be in [1, 100000]");
+  }
   if (!(max_yaw_deg >= 0 && max_yaw_deg <= 180)) {
-    return Status::Error("--max-yaw must be in [0, 180] degrees");
+    return Status::Error("marker_scene.max_yaw_deg", "the largest yaw must be in [0, 180] degrees");
   }
   if (!(max_bend_deg >= 0 && max_bend_deg <= 80)) {
-    return Status::Error("--max-bend must be in [0, 80] degrees");
+    return Status::Error("marker_scene.max_bend_deg",
+                         "the largest bend must be in [0, 80] degrees");
   }
-  if (!(noise_sigma >= 0 && noise_sigma <= 50)) return Status::Error("--noise must be in [0, 50]");
+  if (!(noise_sigma >= 0 && noise_sigma <= 50)) {
+    return Status::Error("marker_scene.noise_sigma", "the noise must be in [0, 50]");
+  }
   if (background != "mixed" && background != "simple" && !OneOf(background, kBackgrounds)) {
-    return Status::Error("--background '" + background +
-                         "' is not one of plain, gradient, texture, room, simple, mixed");
+    return Status::Error("marker_scene.background",
+                         "the background '" + background +
+                             "' is not one of plain, gradient, texture, room, simple, mixed");
   }
   if (lighting != "mixed" && !OneOf(lighting, kLightings)) {
-    return Status::Error("--lighting '" + lighting +
-                         "' is not one of normal, bright, dim, side, shadow, mixed");
+    return Status::Error(
+        "marker_scene.lighting",
+        "the lighting '" + lighting + "' is not one of normal, bright, dim, side, shadow, mixed");
   }
-  if (clutter < 0 || clutter > 100) return Status::Error("--clutter must be in [0, 100]");
+  if (clutter < 0 || clutter > 100) {
+    return Status::Error("marker_scene.clutter", "the clutter must be in [0, 100]");
+  }
   if (camera.projection != "perspective" && camera.projection != "orthographic") {
-    return Status::Error("--camera '" + camera.projection +
-                         "' is not one of perspective, orthographic");
+    return Status::Error("marker_scene.camera", "the camera '" + camera.projection +
+                                                    "' is not one of perspective, orthographic");
   }
   if (!(camera.fov_deg >= 10 && camera.fov_deg <= 120)) {
-    return Status::Error("--fov must be in [10, 120] degrees");
+    return Status::Error("marker_scene.fov_deg", "the field of view must be in [10, 120] degrees");
   }
+
   return Status::Ok();
 }
 

@@ -38,12 +38,14 @@ bool ParseSceneTier(const std::string& name, SceneTier* out) {
 
 Status RandomArmSceneOptions::Check() const {
   if (size.width < 160 || size.height < 120 || size.width > 4096 || size.height > 4096) {
-    return Status::Error("size " + std::to_string(size.width) + "x" + std::to_string(size.height) +
-                         " is out of range (160x120 to 4096x4096)");
+    return Status::Error("arm_scene.size", "size " + std::to_string(size.width) + "x" +
+                                               std::to_string(size.height) +
+                                               " is out of range (160x120 to 4096x4096)");
   }
   if (size.width * 3 < size.height * 4) {
-    return Status::Error("size " + std::to_string(size.width) + "x" + std::to_string(size.height) +
-                         " is narrower than 4:3 (the straight arm must fit beside the body)");
+    return Status::Error("arm_scene.size",
+                         "size " + std::to_string(size.width) + "x" + std::to_string(size.height) +
+                             " is narrower than 4:3 (the straight arm must fit beside the body)");
   }
   return Status::Ok();
 }

@@ -1,3 +1,5 @@
+// Scoring an angle file against the truth: per-frame errors, their statistics and the tables.
+// Length: ScoreAngles is one pass over the truth rows, filling every accumulator from the same row.
 #include "armmimic/synth/score.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // Error-vs-frame plot (thesis Fig. 5-10) drawn with OpenCV.
+// Length: PlotScore draws one figure whose axes, curves and legend share its scales.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

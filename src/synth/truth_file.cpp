@@ -1,3 +1,6 @@
+// Truth files of the generated scenes: the columns, the line-by-line reader and the writer.
+// Length: ParseTruthFile is one pass over the lines whose checks share the header's column
+// positions.
 #include "armmimic/synth/truth_file.h"
 #include "armmimic/core/text.h"
 

@@ -127,7 +127,7 @@ TEST(CliAnalyze, UsageErrorsNameTheFlag) {
   };
   const std::vector<Case> cases = {
       {{"analyze", video, "-o", "a.tsv", "--engine", "bgsub", "--background-frames", "45"},
-       "--arm-length"},
+       "armmimic-cli analyze: --arm-length: the bgsub engine needs an arm-length image"},
       {{"analyze", video, "-o", "a.tsv", "--engine", "bgsub", "--arm-length", arm},
        "--background-frames"},
       {{"analyze", video, "-o", "a.tsv", "--engine", "bgsub", "--arm-length", arm,
@@ -153,7 +153,7 @@ TEST(CliAnalyze, UsageErrorsNameTheFlag) {
        "--param lk.max_corners=100 is not used by --engine bgsub"},
       {{"analyze", video, "-o", "a.tsv", "--engine", "marker", "--reference", arm, "--param",
         "marker.low=90"},
-       "--low 90 is above --high 80"},
+       "--low: the lowest marker grey level 90 is above the highest 80"},
       {{"background", video}, "-o"},
       {{"background", video, "-o", dir + "/bg.png", "--frames", "0"}, "--frames"},
   };

@@ -166,13 +166,13 @@ TEST_F(CorruptInput, AviWithZeroFrames) {
 TEST_F(CorruptInput, BackgroundOfAnotherSize) {
   const std::string bg = Shared().big() + "/background.png";
   ExpectFailure(Analyze(Scene(), {"--background", bg, "--arm-length", ArmLength()}), 1,
-                "--background " + bg, "must have the same size");
+                "--background: the background image " + bg, "must have the same size");
 }
 
 TEST_F(CorruptInput, ArmLengthImageOfAnotherSize) {
   const std::string arm = Shared().big() + "/armlength.png";
   ExpectFailure(Analyze(Scene(), {"--background-frames", "10", "--arm-length", arm}), 1,
-                "--arm-length " + arm, "must have the same size");
+                "--arm-length: the arm-length image " + arm, "must have the same size");
 }
 
 TEST_F(CorruptInput, ArmLengthImageThatIsNotAnImage) {

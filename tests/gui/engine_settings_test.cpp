@@ -60,6 +60,8 @@ void Edit(QWidget* editor, OptionKind kind, double value) {
       combo->setCurrentIndex(int(value));
       break;
     }
+    case OptionKind::kText:
+      FAIL() << "the engine forms show no text rows";
   }
 }
 

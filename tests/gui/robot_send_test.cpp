@@ -85,7 +85,10 @@ TEST_F(RobotSendTest, PortSettingsReachThePort) {
   Pick(Combo("parityCombo"), QChar('E'));
   Button("connectButton")->click();
   EXPECT_FALSE(panel_->link()->isConnected());
-  EXPECT_NE(w.log()->text().indexOf("data-bits 7"), -1) << w.log()->text().toStdString();
+  // In the panel's words: its label, not the CLI's flag.
+  EXPECT_NE(w.log()->text().indexOf("Data bits: "), -1) << w.log()->text().toStdString();
+  EXPECT_NE(w.log()->text().indexOf("refused the data bits 7"), -1)
+      << w.log()->text().toStdString();
 
   Pick(Combo("dataBitsCombo"), 8);
   Pick(Combo("parityCombo"), QChar('N'));

@@ -268,7 +268,7 @@ TEST_F(MimicE2E, AnUnpluggedLinkStopsTheStreamWithExitOneAndAMessage) {
   EXPECT_EQ(cli.Wait(20), 1);
   const std::string err = test::ReadFile(dir_.file("err"));
   EXPECT_NE(err.find("the connection was lost"), std::string::npos) << err;
-  EXPECT_NE(err.find("--port " + dir_.file("puma")), std::string::npos) << err;
+  EXPECT_NE(err.find("--port: " + dir_.file("puma")), std::string::npos) << err;
   const auto journal = ReadJournal(angles_ + ".journal");
   ASSERT_GE(journal.size(), 2u);
   EXPECT_EQ(journal[journal.size() - 2].kind, "stop");

@@ -73,7 +73,7 @@ TEST(PortLock, TwoNamesOfOneDeviceShareOneLockNamingTheHolder) {
   const test::CliResult second =
       test::RunCli({"--no-progress", "send", dir.file("b.val"), "--port", server.device_path()});
   EXPECT_EQ(second.exit_code, 1) << second.err;
-  EXPECT_TRUE(Contains(second.err, "--port " + server.device_path())) << second.err;
+  EXPECT_TRUE(Contains(second.err, "--port: " + server.device_path())) << second.err;
   EXPECT_TRUE(Contains(second.err, "in use by process " + std::to_string(first.pid())))
       << second.err;
   EXPECT_EQ(server.lines_received(), lines_before) << "the refused send wrote to the device";

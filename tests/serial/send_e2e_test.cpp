@@ -141,7 +141,8 @@ TEST_F(SendE2E, ArmMovedByHandAfterACutIsLeftToTheOperator) {
   EXPECT_EQ(unsure.exit_code, 1);
   EXPECT_NE(unsure.err.find("prog.val:9: cannot tell whether this line ran"), std::string::npos)
       << unsure.err;
-  EXPECT_NE(unsure.err.find("--resume-at 9"), std::string::npos) << unsure.err;
+  EXPECT_NE(unsure.err.find("--resume-at: "), std::string::npos) << unsure.err;
+  EXPECT_NE(unsure.err.find("resume at line 9"), std::string::npos) << unsure.err;
   EXPECT_EQ(server.log().size(), 4u);  // WHERE moved nothing
 
   // The operator decides move 3 ran and skips it.
@@ -286,7 +287,7 @@ TEST_F(SendE2E, MissingPortIsNamed) {
   Write(MakeProgram(1));
   const test::CliResult r = Send(dir_.file("no-such-tty"));
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("--port " + dir_.file("no-such-tty")), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--port: " + dir_.file("no-such-tty")), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("no such serial port"), std::string::npos) << r.err;
 }
 
@@ -326,7 +327,7 @@ TEST_F(SendE2E, BusyPortIsNamed) {
   run.get();
   EXPECT_EQ(second.exit_code, 1);
   EXPECT_NE(second.err.find("busy"), std::string::npos) << second.err;
-  EXPECT_NE(second.err.find("--port " + dir_.file("puma")), std::string::npos) << second.err;
+  EXPECT_NE(second.err.find("--port: " + dir_.file("puma")), std::string::npos) << second.err;
 }
 
 }  // namespace

@@ -147,7 +147,7 @@ TEST_F(SerialFaults, PortInUseByTheSameProgramLeavesTheRunningJournalAlone) {
   for (const char* flag : {"--resume", "--restart"}) {
     const test::CliResult second = Send({flag});
     EXPECT_EQ(second.exit_code, 1) << flag << ": " << second.err;
-    EXPECT_TRUE(Contains(second.err, "--port " + port_)) << flag << ": " << second.err;
+    EXPECT_TRUE(Contains(second.err, "--port: " + port_)) << flag << ": " << second.err;
     EXPECT_TRUE(Contains(second.err, "busy")) << flag << ": " << second.err;
   }
   server.Hold(false);

@@ -48,7 +48,7 @@ struct AnalysisOptions {
   // A video file is read at its own frame rate (FramePacer), as a camera delivers frames
   // (`mimic --realtime`). Cameras and streams are live anyway; images have no rate.
   bool realtime = false;
-  Status Check() const;  // messages name the flag
+  Status Check() const;  // errors are keyed by the setting ("analysis.start")
 };
 
 struct AnalysisCallbacks {

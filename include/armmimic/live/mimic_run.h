@@ -64,6 +64,8 @@ class MimicRun : public QObject {
   const AnalysisSummary& analysis_summary() const { return summary_; }
   // Exit status for the shells: 0 input ended, 1 link or analysis failure or stopped.
   bool ended_normally() const { return ended_normally_; }
+  // The setting finished()'s message is about (Status::key()), or "".
+  const std::string& failure_key() const { return failure_key_; }
 
  signals:
   // Every analysed frame, after planning: the planner's target (valid when `has_target`).
@@ -98,6 +100,8 @@ class MimicRun : public QObject {
   bool ended_normally_ = false;
   int stops_ = 0;
   std::string failure_;  // the first thing that went wrong
+  std::string failure_key_;
+
   AnalysisSummary summary_;
 };
 

@@ -71,14 +71,17 @@ class LinkProtocol {
   void OnTick(double now_s);
   // Bytes to write to the port now (and clears them).
   std::string TakeOutput();
-  // Stops with kAborted (the operator cancelled, the port vanished).
-  void Abort(const std::string& message);
+  // Stops with kAborted (the operator cancelled, the port vanished). `key`: the setting the
+  // message is about ("port.port" when the port vanished), or "".
+  void Abort(const std::string& message, const std::string& key = std::string());
 
   LinkState state() const { return state_; }
   bool finished() const { return state_ == LinkState::kDone || state_ == LinkState::kFailed; }
   LinkError error() const { return error_; }
   // The message naming the file and line ("PROGRAM.val:12: controller error: *Servo error*").
   const std::string& error_message() const { return error_message_; }
+  // The setting the error is about (Status::key()), or "".
+  const std::string& error_key() const { return error_key_; }
   // The controller's own error text, when error() is kControllerError.
   const std::string& controller_text() const { return controller_text_; }
   // Lines of `lines` acknowledged so far.
@@ -123,7 +126,9 @@ class LinkProtocol {
   LinkState state_ = LinkState::kIdle;
   LinkError error_ = LinkError::kNone;
   std::string error_message_;
+  std::string error_key_;
   std::string controller_text_;
+
   std::string source_name_;
   std::vector<LinkLine> lines_;
   std::size_t next_ = 0;     // index into lines_ of the line in flight / to send

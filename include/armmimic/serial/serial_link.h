@@ -27,7 +27,7 @@ struct PortSettings {
   char parity = 'N';  // N (none), E (even), O (odd)
   int stop_bits = 1;  // 1 or 2
   FlowControl flow = FlowControl::kNone;
-  // The message names the flag ("--data-bits").
+  // The error is keyed by the setting ("port.data_bits"); each shell names it in its words.
   Status Check() const;
 };
 

@@ -67,7 +67,7 @@ struct MarkerSceneOptions {
   std::string lighting = "mixed";    // normal, bright, dim, side, shadow, or mixed (by seed)
   int clutter = 0;  // dark marker-like blobs on the background (some beside markers)
   MarkerCamera camera;
-  Status Check() const;  // messages name the option
+  Status Check() const;  // errors are keyed by the setting ("marker_scene.views")
 };
 
 struct MarkerTruth {

@@ -1,3 +1,7 @@
+// The arm's geometry from its mask (thesis 5.2.5-5.2.7): contour, hull and defects, the 30 %
+// rule, the split at the elbow and the two parts' moments.
+// Length: AnalyzeArm follows the thesis' steps in order, each step using the contour and defects of
+// the last.
 #include "bgsub/arm.h"
 
 #include <algorithm>

@@ -45,27 +45,32 @@ class BgsubEngine final : public Engine {
     const cv::Size size = context.frame_size;
     if (size.width <= 0 || size.height <= 0) return Status::Error("bgsub: the frame size is empty");
     if (context.background.empty()) {
-      return Status::Error("bgsub needs a background image (--background or --background-frames)");
+      return Status::Error("analysis.background",
+                           "bgsub needs a background image (given, or averaged from frames)");
     }
     if (context.background.size() != size) {
       return Status::Error("bgsub: the background image is " + SizeText(context.background.size()) +
                            " but the video is " + SizeText(size));
     }
-    if (context.arm_length.empty()) return Status::Error("bgsub needs an --arm-length image");
+    if (context.arm_length.empty()) {
+      return Status::Error("analysis.arm_length", "bgsub needs an arm-length image");
+    }
     if (context.arm_length.size() != size) {
-      return Status::Error("bgsub: the --arm-length image is " +
-                           SizeText(context.arm_length.size()) + " but the video is " +
-                           SizeText(size));
+      return Status::Error("analysis.arm_length", "bgsub: the arm-length image is " +
+                                                      SizeText(context.arm_length.size()) +
+                                                      " but the video is " + SizeText(size));
     }
     frame_size_ = size;
     region_ = cv::Rect(0, 0, size.width, size.height);
     if (context.roi) {
       region_ &= *context.roi;
       if (region_.area() < 16) {
-        return Status::Error(
-            "--roi " + std::to_string(context.roi->x) + "," + std::to_string(context.roi->y) + "," +
-            std::to_string(context.roi->width) + "," + std::to_string(context.roi->height) +
-            " lies outside the " + SizeText(size) + " frame");
+        return Status::Error("analysis.roi", "the region of interest " +
+                                                 std::to_string(context.roi->x) + "," +
+                                                 std::to_string(context.roi->y) + "," +
+                                                 std::to_string(context.roi->width) + "," +
+                                                 std::to_string(context.roi->height) +
+                                                 " lies outside the " + SizeText(size) + " frame");
       }
     }
     scene_ = bgsub::SceneModel();
@@ -240,7 +245,8 @@ class BgsubEngine final : public Engine {
     }
     const std::optional<cv::Point2d> shoulder = scene_.Shoulder(side, options_);
     if (!shoulder) {
-      m->note = "no shoulder: no body in the standstill and no --shoulder";
+      m->note = "no shoulder: no body in the standstill and no fixed shoulder";
+
       return;
     }
     const bgsub::ArmGeometry g = bgsub::AnalyzeArm(buffers_.arm, box, *shoulder, options_, false);

@@ -16,15 +16,18 @@ std::string Str(T v) {
 
 Status BgsubOptions::Check() const {
   if (threshold < 1 || threshold > 254) {
-    return Status::Error("--threshold must be between 1 and 254 (got " + Str(threshold) + ")");
+    return Status::Error("bgsub.threshold",
+                         "the threshold must be between 1 and 254 (got " + Str(threshold) + ")");
   }
   if (background_frames < 1) {
-    return Status::Error("--background-frames must be at least 1 (got " + Str(background_frames) +
-                         ")");
+    return Status::Error(
+        "bgsub.background_frames",
+        "the number of background frames must be at least 1 (got " + Str(background_frames) + ")");
   }
   if (standstill_frames < 1) {
-    return Status::Error("--standstill-frames must be at least 1 (got " + Str(standstill_frames) +
-                         ")");
+    return Status::Error(
+        "bgsub.standstill_frames",
+        "the standstill must be at least 1 frame long (got " + Str(standstill_frames) + ")");
   }
   if (!(straight_ratio > 0 && straight_ratio < 1)) {
     return Status::Error("bgsub straight_ratio must be in (0, 1) (got " + Str(straight_ratio) +

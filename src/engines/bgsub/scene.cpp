@@ -1,3 +1,7 @@
+// The bgsub scene: the shoulder and arm length from the calibration images, and the arm's mask
+// in each frame (two-step differencing, components, the arm's pick).
+// Length: FindArmMask is the thesis' differencing pipeline, its stages sharing the search box and
+// buffers.
 #include "bgsub/scene.h"
 
 #include <algorithm>
@@ -181,7 +185,7 @@ void BuildScene(const cv::Mat& arm_length_gray, const cv::Mat& arm_length_bgr,
   if (largest >= 0 && body[static_cast<std::size_t>(largest)].area_px >= options.min_arm_area_px) {
     scene->body_box = body[static_cast<std::size_t>(largest)].box;
   } else if (!scene->fixed_shoulder) {
-    scene->note = "no body in the standstill frames (check the background and --threshold)";
+    scene->note = "no body in the standstill frames (check the background and the threshold)";
   }
 
   // The arm-length image: the straight horizontal arm at zero yaw gives b (5.2.3).

@@ -1,5 +1,9 @@
 // The analysis pipeline behind `armmimic-cli analyze` and the GUI's Analyze task: engine
 // agnostic, streaming (one frame in memory at a time).
+// Length: the pipeline's run is one loop from open to commit; Run's checks, engine start and frame
+// loop share its state, and every input error it reports is keyed by its setting here, beside
+// AnalysisOptions::Check().
+
 #include "armmimic/engines/analysis.h"
 
 #include <chrono>
@@ -50,14 +54,16 @@ void Phase(const AnalysisCallbacks& cb, const std::string& phase) {
   if (cb.on_phase) cb.on_phase(phase);
 }
 
-// Loads an image given by `flag` and checks its size against the video's.
-Status LoadSized(const std::string& path, const std::string& flag, const VideoInfo& video,
-                 cv::Mat* out) {
+// Loads the image the setting `key` names (`what`: "the background image") and checks its size
+// against the video's.
+Status LoadSized(const std::string& path, const std::string& key, const std::string& what,
+                 const VideoInfo& video, cv::Mat* out) {
   Status st = ReadImage(path, out);
-  if (!st) return Status::Error(flag + ": " + st.message());
+  if (!st) return st.WithKey(key);
   if (out->size() != video.size) {
-    return Status::Error(flag + " " + path + " is " + SizeText(out->size()) + " but " + video.path +
-                         " is " + SizeText(video.size) + "; they must have the same size");
+    return Status::Error(key, what + " " + path + " is " + SizeText(out->size()) + " but " +
+                                  video.path + " is " + SizeText(video.size) +
+                                  "; they must have the same size");
   }
   return Status::Ok();
 }
@@ -88,7 +94,7 @@ Status PreparePose(const AnalysisOptions& options, const VideoInfo& info,
     Status st = internal::DetectArmJointsFrom(
         [&options](Status* s) { return OpenInput(options, s); }, options.start,
         options.calibrate_side, options.model_dir, options.engine.pose, &arm, &side);
-    if (!st) return Status::Error("--auto-calibrate: " + st.message());
+    if (!st) return st.key().empty() ? st.WithKey("analysis.auto_calibrate") : st;
     resolved->shoulder_px = arm.shoulder;
     resolved->elbow_px = arm.elbow;
     resolved->wrist_px = arm.wrist;
@@ -96,8 +102,8 @@ Status PreparePose(const AnalysisOptions& options, const VideoInfo& info,
       return ShortNumber(std::round(p.x)) + "," + ShortNumber(std::round(p.y));
     };
     tell("auto-calibrate: the person's " + std::string(PoseSideName(side)) + " arm in frame " +
-         std::to_string(options.start) + ": --shoulder " + xy(arm.shoulder) + " --elbow " +
-         xy(arm.elbow) + " --wrist " + xy(arm.wrist));
+         std::to_string(options.start) + ": shoulder " + xy(arm.shoulder) + ", elbow " +
+         xy(arm.elbow) + ", wrist " + xy(arm.wrist));
   }
   if (options.engine.kind == EngineKind::kPose && options.engine.pose.side == PoseSide::kAuto) {
     std::string why;
@@ -134,8 +140,10 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
   const bool arm_engine = kind != EngineKind::kMarker;
 
   if (arm_engine && info.frame_count >= 0 && given.start >= info.frame_count) {
-    return finish(Status::Error("--start " + std::to_string(given.start) + " is past the end of " +
-                                info.path + " (" + std::to_string(info.frame_count) + " frames)"));
+    return finish(Status::Error("analysis.start", "the start frame " + std::to_string(given.start) +
+                                                      " is past the end of " + info.path + " (" +
+                                                      std::to_string(info.frame_count) +
+                                                      " frames)"));
   }
 
   AnalysisOptions options = given;  // with what the pose network decided
@@ -153,29 +161,35 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
   if (options.roi) {
     const cv::Rect inside = *options.roi & cv::Rect(0, 0, info.size.width, info.size.height);
     if (inside != *options.roi) {
-      return finish(Status::Error(
-          "--roi " + std::to_string(options.roi->x) + "," + std::to_string(options.roi->y) + "," +
-          std::to_string(options.roi->width) + "," + std::to_string(options.roi->height) +
-          " does not fit in " + info.path + " (" + SizeText(info.size) + ")"));
+      return finish(Status::Error("analysis.roi",
+                                  "the region of interest " + std::to_string(options.roi->x) + "," +
+                                      std::to_string(options.roi->y) + "," +
+                                      std::to_string(options.roi->width) + "," +
+                                      std::to_string(options.roi->height) + " does not fit in " +
+                                      info.path + " (" + SizeText(info.size) + ")"));
     }
   }
-  const std::pair<const char*, const std::optional<cv::Point2d>*> joints[] = {
-      {"--shoulder", &options.shoulder_px},
-      {"--elbow", &options.elbow_px},
-      {"--wrist", &options.wrist_px}};
-  for (const auto& [flag, joint] : joints) {
-    if (!*joint) continue;
-    const cv::Point2d& s = **joint;
+  const struct {
+    const char* key;
+    const char* name;
+    const std::optional<cv::Point2d>* px;
+  } joints[] = {{"analysis.shoulder", "shoulder", &options.shoulder_px},
+                {"analysis.elbow", "elbow", &options.elbow_px},
+                {"analysis.wrist", "wrist", &options.wrist_px}};
+  for (const auto& joint : joints) {
+    if (!*joint.px) continue;
+    const cv::Point2d& s = **joint.px;
     if (s.x < 0 || s.y < 0 || s.x >= info.size.width || s.y >= info.size.height) {
-      return finish(Status::Error(std::string(flag) + " is outside " + info.path + " (" +
-                                  SizeText(info.size) + ")"));
+      return finish(Status::Error(joint.key, std::string("the ") + joint.name + " is outside " +
+                                                 info.path + " (" + SizeText(info.size) + ")"));
     }
   }
   context.elbow_px = options.elbow_px;
   context.wrist_px = options.wrist_px;
   if (arm_engine) {
     if (!options.background_path.empty()) {
-      st = LoadSized(options.background_path, "--background", info, &context.background);
+      st = LoadSized(options.background_path, "analysis.background", "the background image", info,
+                     &context.background);
       if (!st) return finish(st);
     } else if (options.background_frames > 0) {
       // A first pass over frames [0, K) of the input itself (thesis 5.2.1).
@@ -184,19 +198,20 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
       std::unique_ptr<VideoSource> bg_source = OpenInput(options, &bg_open);
       st = EstimateBackgroundOf(std::move(bg_source), bg_open, 0, options.background_frames,
                                 &context.background, callbacks);
-      if (!st) return finish(Status::Error("--background-frames: " + st.message()));
+      if (!st) return finish(st.WithKey("analysis.background_frames"));
       if (Cancelled(callbacks)) {
         summary->cancelled = true;
         return finish(Status::Ok());
       }
     }
     if (!options.arm_length_path.empty()) {
-      st = LoadSized(options.arm_length_path, "--arm-length", info, &context.arm_length);
+      st = LoadSized(options.arm_length_path, "analysis.arm_length", "the arm-length image", info,
+                     &context.arm_length);
       if (!st) return finish(st);
     }
   } else if (!options.reference_path.empty()) {
     st = ReadImage(options.reference_path, &context.reference);
-    if (!st) return finish(Status::Error("--reference: " + st.message()));
+    if (!st) return finish(st.WithKey("analysis.reference"));
   }
 
   std::unique_ptr<Engine> engine = Engine::Create(options.engine);
@@ -229,16 +244,18 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
         return finish(Status::Ok());
       }
       if (!source->Read(&skipped, &st)) {
-        return finish(Status::Error("--start " + std::to_string(options.start) + ": " + info.path +
-                                    " ended after " + std::to_string(i) + " frames" +
-                                    (st ? std::string() : " (" + st.message() + ")")));
+        return finish(Status::Error(
+            "analysis.start", "the start frame " + std::to_string(options.start) + ": " +
+                                  info.path + " ended after " + std::to_string(i) + " frames" +
+                                  (st ? std::string() : " (" + st.message() + ")")));
       }
     }
   } else if (arm_engine && options.start > 0) {
     st = source->Seek(options.start);
     if (!st)
       return finish(
-          Status::Error("--start " + std::to_string(options.start) + ": " + st.message()));
+          Status::Error("analysis.start",
+                        "the start frame " + std::to_string(options.start) + ": " + st.message()));
   }
   const int total =
       info.frame_count >= 0 ? info.frame_count - (arm_engine ? options.start : 0) : -1;
@@ -278,9 +295,10 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
   }
   if (!summary->cancelled && summary->frames == 0 && setup > 0) {
     return finish(Status::Error(
+        "analysis.start",
         info.path + " ended during the standstill: frames [" + std::to_string(options.start) +
-        ", " + std::to_string(options.start + setup) + ") were read, " +
-        "no frame was left to analyse (see --start and " + "--standstill-frames)"));
+            ", " + std::to_string(options.start + setup) + ") were read, " +
+            "no frame was left to analyse (see the start frame and the standstill length)"));
   }
   return finish(Status::Ok());
 }
@@ -291,72 +309,82 @@ Status AnalysisOptions::Check() const {
   if (auto_calibrate) {
     if (engine.kind == EngineKind::kBgsub || engine.kind == EngineKind::kMarker ||
         engine.kind == EngineKind::kPose) {
-      return Status::Error(
-          std::string("--auto-calibrate is for the tracking engines, not --engine ") +
-          EngineName(engine.kind));
+      return Status::Error("analysis.auto_calibrate",
+                           std::string("auto-calibration is for the tracking engines, not the ") +
+                               EngineName(engine.kind) + " engine");
     }
     if (shoulder_px || elbow_px || wrist_px) {
-      return Status::Error(
-          "--auto-calibrate finds the joints itself: give it or --shoulder/--elbow/--wrist, not "
-          "both");
+      return Status::Error("analysis.auto_calibrate",
+                           "auto-calibration finds the joints itself: give it or the shoulder, "
+                           "elbow and wrist, not both");
     }
   }
   if (engine.kind != EngineKind::kLk && (elbow_px || wrist_px)) {
-    return Status::Error(std::string(elbow_px ? "--elbow" : "--wrist") +
-                         " is used by --engine lk only");
+    return Status::Error(
+        elbow_px ? "analysis.elbow" : "analysis.wrist",
+        std::string(elbow_px ? "the elbow" : "the wrist") + " is used by the lk engine only");
   }
   if (inputs.empty()) return Status::Error("no INPUT given (a video, images or a folder)");
-  if (start < 0)
-    return Status::Error("--start must be 0 or more (got " + std::to_string(start) + ")");
+  if (start < 0) {
+    return Status::Error("analysis.start",
+                         "the start frame must be 0 or more (got " + std::to_string(start) + ")");
+  }
   if (background_frames < 0) {
-    return Status::Error("--background-frames must be at least 1 (got " +
-                         std::to_string(background_frames) + ")");
+    return Status::Error("analysis.background_frames",
+                         "the number of background frames must be at least 1 (got " +
+                             std::to_string(background_frames) + ")");
   }
   if (roi && (roi->x < 0 || roi->y < 0 || roi->width <= 0 || roi->height <= 0)) {
-    return Status::Error("--roi needs X,Y >= 0 and W,H > 0");
+    return Status::Error("analysis.roi", "the region of interest needs X,Y >= 0 and W,H > 0");
   }
   const bool has_bg = !background_path.empty();
   const bool has_frames = background_frames > 0;
   switch (engine.kind) {
     case EngineKind::kBgsub:
       if (arm_length_path.empty()) {
-        return Status::Error("--engine bgsub needs --arm-length ARM.png (thesis 5.2.3)");
+        return Status::Error("analysis.arm_length",
+                             "the bgsub engine needs an arm-length image (thesis 5.2.3)");
       }
       if (has_bg == has_frames) {
-        return Status::Error(
-            "--engine bgsub needs exactly one of --background BG.png and --background-frames K");
+        return Status::Error("analysis.background_frames",
+                             "the bgsub engine needs exactly one of a background image and a "
+                             "number of background frames");
       }
       break;
     case EngineKind::kLk:
       if ((elbow_px || wrist_px) && !(shoulder_px && elbow_px && wrist_px)) {
         return Status::Error(
-            "--elbow and --wrist go together with --shoulder: the arm's three joints in the start "
-            "frame");
+            shoulder_px ? (elbow_px ? "analysis.wrist" : "analysis.elbow") : "analysis.shoulder",
+            "the elbow and wrist go together with the shoulder: the arm's three "
+            "joints in the start frame");
       }
       if (elbow_px && wrist_px && shoulder_px) {
         const double upper = cv::norm(*elbow_px - *shoulder_px);
         const double fore = cv::norm(*wrist_px - *elbow_px);
         if (upper < kMinClickedSegmentPx || fore < kMinClickedSegmentPx) {
-          return Status::Error(std::string(upper < kMinClickedSegmentPx ? "--elbow" : "--wrist") +
-                               " is less than " + std::to_string(int(kMinClickedSegmentPx)) +
-                               " pixels from the " +
-                               (upper < kMinClickedSegmentPx ? "shoulder" : "elbow") +
-                               ": the segment has no direction");
+          return Status::Error(
+              upper < kMinClickedSegmentPx ? "analysis.elbow" : "analysis.wrist",
+              std::string(upper < kMinClickedSegmentPx ? "the elbow" : "the wrist") +
+                  " is less than " + std::to_string(int(kMinClickedSegmentPx)) +
+                  " pixels from the " + (upper < kMinClickedSegmentPx ? "shoulder" : "elbow") +
+                  ": the segment has no direction");
         }
       }
       if (!has_bg && !has_frames && !shoulder_px && !auto_calibrate) {
-        return Status::Error(
-            "--engine lk needs one of --background, --background-frames, --shoulder or "
-            "--auto-calibrate");
+        return Status::Error("analysis.shoulder",
+                             "the lk engine needs a background image, background frames, a fixed "
+                             "shoulder or auto-calibration");
       }
       if (has_bg && has_frames) {
-        return Status::Error("--background and --background-frames cannot both be given");
+        return Status::Error("analysis.background",
+                             "a background image and background frames cannot both be given");
       }
       break;
     case EngineKind::kMarker:
       if (reference_path.empty()) {
-        return Status::Error("--engine marker needs --reference REF.png");
+        return Status::Error("analysis.reference", "the marker engine needs a reference image");
       }
+
       break;
     case EngineKind::kPose:
       break;  // needs nothing but the model

@@ -40,12 +40,16 @@ class LkEngine : public Engine {
     if (context.roi) {
       const cv::Rect r = *context.roi;
       if (r.width <= 0 || r.height <= 0 || (r & full) != r) {
-        return Status::Error("--roi " + std::to_string(r.x) + "," + std::to_string(r.y) + "," +
-                             std::to_string(r.width) + "," + std::to_string(r.height) +
-                             " is not inside the " + SizeText(frame_size_) + " frame");
+        return Status::Error("analysis.roi", "the region of interest " + std::to_string(r.x) + "," +
+                                                 std::to_string(r.y) + "," +
+                                                 std::to_string(r.width) + "," +
+                                                 std::to_string(r.height) + " is not inside the " +
+                                                 SizeText(frame_size_) + " frame");
       }
       if (r.width < 16 || r.height < 16) {
-        return Status::Error("--roi is too small for tracking (at least 16x16 pixels)");
+        return Status::Error("analysis.roi",
+                             "the region of interest is too small for tracking (at least 16x16 "
+                             "pixels)");
       }
       roi_ = r;
     }
@@ -62,8 +66,9 @@ class LkEngine : public Engine {
       const cv::Point2d s = *context.shoulder_px;
       if (!std::isfinite(s.x) || !std::isfinite(s.y) ||
           !full.contains(cv::Point(cvFloor(s.x), cvFloor(s.y)))) {
-        return Status::Error("--shoulder " + FormatNumber(s.x, 1) + "," + FormatNumber(s.y, 1) +
-                             " is outside the " + SizeText(frame_size_) + " frame");
+        return Status::Error("analysis.shoulder", "the shoulder " + FormatNumber(s.x, 1) + "," +
+                                                      FormatNumber(s.y, 1) + " is outside the " +
+                                                      SizeText(frame_size_) + " frame");
       }
       shoulder_given_ = s - cv::Point2d(roi_.tl());
     }
@@ -77,9 +82,9 @@ class LkEngine : public Engine {
       fore_length_px_ = cv::norm(w - e);
     }
     if (!shoulder_given_ && background_.empty()) {
-      return Status::Error(
-          "lk: needs a background (--background or --background-frames) or a shoulder "
-          "(--shoulder X,Y)");
+      return Status::Error("analysis.shoulder",
+                           "lk: needs a background (an image or frames to average) or a fixed "
+                           "shoulder");
     }
     tracker_ = o_.thesis_mode         ? lk::CreateThesisTracker(o_)
                : upper_length_px_ > 0 ? lk::CreateModelTracker(o_)
@@ -203,8 +208,9 @@ class LkEngine : public Engine {
                  FormatNumber(start.arm_length_px, 0) +
                  " px estimated from the standstill's body box; without the elbow and wrist the "
                  "anchored path runs, which is often confidently wrong on scenes unlike the "
-                 "thesis' (docs/accuracy.md): give --shoulder, --elbow and --wrist, or "
-                 "--auto-calibrate";
+                 "thesis' (docs/accuracy.md): give the shoulder, elbow and wrist, or "
+                 "auto-calibrate";
+
     start.head_limit_y = body.left_shoulder.y - 0.05 * body.box.height;
     tracker_->Start(start);
     state_ = State::kTracking;

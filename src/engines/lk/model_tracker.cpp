@@ -6,6 +6,7 @@
 // over every pose the arm can take. The frame is written with a confidence: how well the best
 // pose explains the image compared with how well the arm usually does, and `lost` when that is
 // weak or when a far-apart pose explains the image about as well.
+// Length: Track is one frame's search whose stages share the candidate poses and their scores.
 #include <algorithm>
 #include <cmath>
 #include <string>

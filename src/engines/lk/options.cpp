@@ -8,8 +8,9 @@ namespace {
 
 Status Range(const char* name, double value, double lo, double hi) {
   if (std::isfinite(value) && value >= lo && value <= hi) return Status::Ok();
-  return Status::Error(std::string("lk option ") + name + " must be in [" + std::to_string(lo) +
-                       ", " + std::to_string(hi) + "], got " + std::to_string(value));
+  return Status::Error(std::string("lk.") + name,
+                       std::string("lk option ") + name + " must be in [" + std::to_string(lo) +
+                           ", " + std::to_string(hi) + "], got " + std::to_string(value));
 }
 
 }  // namespace
@@ -38,14 +39,15 @@ bool ParseLkArmSide(const std::string& name, LkArmSide* out) {
 
 Status LkOptions::Check() const {
   const Status checks[] = {
-      Range("standstill_frames (--standstill-frames)", standstill_frames, 1, 100000),
+      Range("standstill_frames", standstill_frames, 1, 100000),
       Range("body_threshold", body_threshold, 0, 255),
       Range("shoulder_height", shoulder_height, 0, 1),
       Range("shoulder_inset", shoulder_inset, 0, 0.5),
       Range("anchored_shoulder_height", anchored_shoulder_height, 0, 1),
       Range("anchored_shoulder_inset", anchored_shoulder_inset, 0, 0.5),
-      Range("initial_upper_deg (--initial-upper)", initial_upper_deg, -360, 360),
-      Range("initial_fore_deg (--initial-fore)", initial_fore_deg, -360, 360),
+      Range("initial_upper_deg", initial_upper_deg, -360, 360),
+      Range("initial_fore_deg", initial_fore_deg, -360, 360),
+
       Range("max_corners", max_corners, 4, 10000),
       Range("quality_level", quality_level, 1e-6, 1),
       Range("min_distance_px", min_distance_px, 0, 1000),
@@ -80,7 +82,8 @@ Status LkOptions::Check() const {
     if (!st) return st;
   }
   if (window_px % 2 == 0) {
-    return Status::Error("lk option window_px must be odd, got " + std::to_string(window_px));
+    return Status::Error("lk.window_px",
+                         "lk option window_px must be odd, got " + std::to_string(window_px));
   }
   return Status::Ok();
 }

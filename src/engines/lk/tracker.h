@@ -36,7 +36,7 @@ struct TrackerPose {
   double fore_deg = kNaN;
   bool have_shoulder = false;  // false while the side is still undecided
   // How much of this frame's evidence backs the pose, 0..1 (nan: not rated): the weaker part's
-  // share of sleeve and feature support (lk_anchored_tracker.cpp).
+  // share of sleeve and feature support (RateSupport in anchored_features.cpp).
   double support = kNaN;
   cv::Point2d shoulder{kNaN, kNaN}, elbow{kNaN, kNaN}, wrist{kNaN, kNaN};
   cv::Point2d upper_com{kNaN, kNaN}, fore_com{kNaN, kNaN};

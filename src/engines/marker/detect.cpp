@@ -1,4 +1,6 @@
 // Marker candidates, sub-pixel centres and the choice of the three markers (docs/marker.md).
+// Length: RefineMarker grows, thresholds and measures one window; the steps share the window and
+// its statistics.
 #include "marker/detect.h"
 
 #include <algorithm>

@@ -16,26 +16,36 @@ namespace armmimic {
 
 Status MarkerOptions::Check() const {
   if (median_size < 1 || median_size % 2 == 0 || median_size > 31) {
-    return Status::Error("--median: window must be odd, 1..31 (got " + std::to_string(median_size) +
-                         ")");
+    return Status::Error("marker.median_size", "the median window must be odd, 1..31 (got " +
+                                                   std::to_string(median_size) + ")");
   }
-  if (low < 0 || low > 255) return Status::Error("--low must be in [0, 255]");
-  if (high < 0 || high > 255) return Status::Error("--high must be in [0, 255]");
+  if (low < 0 || low > 255) {
+    return Status::Error("marker.low", "the lowest marker grey level must be in [0, 255]");
+  }
+  if (high < 0 || high > 255) {
+    return Status::Error("marker.high", "the highest marker grey level must be in [0, 255]");
+  }
   if (low > high) {
-    return Status::Error("--low " + std::to_string(low) + " is above --high " +
-                         std::to_string(high));
+    return Status::Error("marker.low", "the lowest marker grey level " + std::to_string(low) +
+                                           " is above the highest " + std::to_string(high));
   }
   if (flood_range < 0 || flood_range > 255) {
-    return Status::Error("--flood-range must be in [0, 255]");
+    return Status::Error("marker.flood_range", "the flood range must be in [0, 255]");
   }
   if (min_area < 1 || max_area < min_area) {
-    return Status::Error("--min-area/--max-area: need 1 <= min-area <= max-area");
+    return Status::Error(min_area < 1 ? "marker.min_area" : "marker.max_area",
+                         "the marker areas need 1 <= min_area <= max_area");
   }
   if (!(min_aspect > 0 && max_aspect >= min_aspect)) {
-    return Status::Error("--min-aspect/--max-aspect: need 0 < min-aspect <= max-aspect");
+    return Status::Error(min_aspect > 0 ? "marker.max_aspect" : "marker.min_aspect",
+                         "the marker aspects need 0 < min_aspect <= max_aspect");
   }
-  if (!(min_fill >= 0 && min_fill <= 1)) return Status::Error("--min-fill must be in [0, 1]");
-  if (!(fov_deg >= 0 && fov_deg <= 140)) return Status::Error("--fov must be in [0, 140] degrees");
+  if (!(min_fill >= 0 && min_fill <= 1)) {
+    return Status::Error("marker.min_fill", "the marker fill must be in [0, 1]");
+  }
+  if (!(fov_deg >= 0 && fov_deg <= 140)) {
+    return Status::Error("marker.fov_deg", "the field of view must be in [0, 140] degrees");
+  }
   if (!(max_marker_turn_deg > 0 && max_marker_turn_deg < 90)) {
     return Status::Error("marker option max_marker_turn_deg must be in (0, 90)");
   }
@@ -62,39 +72,45 @@ class MarkerEngine : public Engine {
     begun_ = false;
     const cv::Mat& ref = context.reference;
     if (ref.empty()) {
-      return Status::Error(
-          "--reference: the marker engine needs a reference image (the joint at zero yaw and "
-          "zero bend)");
+      return Status::Error("analysis.reference",
+                           "the marker engine needs a reference image (the joint at zero yaw and "
+                           "zero bend)");
     }
-    if (ref.type() != CV_8UC3) return Status::Error("--reference: the image must be 8-bit BGR");
+    if (ref.type() != CV_8UC3) {
+      return Status::Error("analysis.reference", "the reference image must be 8-bit BGR");
+    }
     if (!context.frame_size.empty() && context.frame_size != ref.size()) {
-      return Status::Error("--reference: the reference is " + std::to_string(ref.cols) + "x" +
-                           std::to_string(ref.rows) + " but the input is " +
-                           std::to_string(context.frame_size.width) + "x" +
-                           std::to_string(context.frame_size.height));
+      return Status::Error("analysis.reference",
+                           "the reference is " + std::to_string(ref.cols) + "x" +
+                               std::to_string(ref.rows) + " but the input is " +
+                               std::to_string(context.frame_size.width) + "x" +
+                               std::to_string(context.frame_size.height));
     }
     options_ = requested_;
     MarkerTriple t;
     if (!FindReferenceMarkers(ref, &t)) {
-      return Status::Error("--reference: cannot find the three markers (" +
-                           std::to_string(reference_blobs_) +
-                           " dark blobs passed the threshold and the heuristics; expected two "
-                           "side by side and one centred above them)");
+      return Status::Error("analysis.reference",
+                           "cannot find the three markers in the reference (" +
+                               std::to_string(reference_blobs_) +
+                               " dark blobs passed the threshold and the heuristics; expected two "
+                               "side by side and one centred above them)");
     }
     if (options_.thesis_mode) {
       ref_.markers = t;
       ref_.n_px = t.right.centre.x - t.left.centre.x;
       ref_.e_px = 0.5 * ((t.left.centre.y + t.right.centre.y) * 0.5 - t.upper.centre.y);
       if (ref_.n_px < 3 || ref_.e_px < 3) {
-        return Status::Error("--reference: the markers are too close together (N = " +
-                             Fixed(ref_.n_px, 1) + " px, e = " + Fixed(ref_.e_px, 1) + " px)");
+        return Status::Error("analysis.reference",
+                             "the reference's markers are too close together (N = " +
+                                 Fixed(ref_.n_px, 1) + " px, e = " + Fixed(ref_.e_px, 1) + " px)");
       }
     } else {
       // Sub-pixel centroids: once with the darkest level, then with the learnt marker/surround.
       double ratio = 0;
       for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
         if (!RefineMarker(scratch_.gray, scratch_.filtered, 0, 0, b)) {
-          return Status::Error("--reference: the markers have too little contrast to measure");
+          return Status::Error("analysis.reference",
+                               "the reference's markers have too little contrast to measure");
         }
         ratio += b->core / b->surround;
       }
@@ -104,7 +120,7 @@ class MarkerEngine : public Engine {
       }
       std::string message;
       if (!CalibrateMarkerJoint(scratch_.gray, t, options_, &cal_, &message)) {
-        return Status::Error("--reference: " + message);
+        return Status::Error("analysis.reference", "the reference: " + message);
       }
     }
     size_ = ref.size();

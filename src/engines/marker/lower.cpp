@@ -9,6 +9,7 @@
 // interval whose ends follow from the row's coverage sum and first moment; mapped to surface
 // angles, the interval's middle is the marker centre's angle (the disc is symmetric in arc
 // length), or, when the limb cuts the far end, the inner end plus the disc's half-chord.
+// Length: FitPatch is one least-squares fit whose row sums feed each following step.
 #include "marker/lower.h"
 
 #include <algorithm>

@@ -269,7 +269,10 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   if (!FirstSilhouette(gray, g, upper_px.y, &left, &right, message)) return false;
   const CylinderView cyl(camera, left, right);
   if (!cyl.valid()) {
-    *message = "the joint's silhouette is too wide for the camera's field of view (--fov)";
+    *message =
+        "the joint's silhouette is too wide for the camera's field of view (check the field of "
+        "view setting)";
+
     return false;
   }
   if (!ChooseBands(gray, g, cyl, left, right, cal, message)) return false;

@@ -76,7 +76,7 @@ Status DetectArmJointsFrom(const SourceOpener& open, int frame, PoseSide side,
                          source->info().path + " (keypoint score " +
                          std::to_string(arm->score).substr(0, 4) + ", at least " +
                          std::to_string(options.min_score).substr(0, 4) +
-                         " needed); choose another --start or give the joints");
+                         " needed); choose another start frame or give the joints");
   }
   return Status::Ok();
 }

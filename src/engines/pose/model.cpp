@@ -34,8 +34,8 @@ constexpr PinnedFile kPinned[] = {
      "bf97bc10d9c8a11200b0190ed64ce039b6252f1aff7cb552aca99b3d191c2f34"},
 };
 constexpr const char* kFetchAdvice =
-    "run scripts/deps.sh --with-model to fetch the pose model, or name the folder holding it with "
-    "--model DIR";
+    "fetch the pose model as docs/pose.md describes (scripts/deps.sh), or name the folder "
+    "holding it";
 
 constexpr const char* kInputNode = "input";
 // The heads: the last node of each of these name scopes.
@@ -171,17 +171,20 @@ std::unique_ptr<PoseNetwork> PoseNetwork::Load(const std::string& flag_dir, Stat
   const std::string dir = FindPoseModelDir(flag_dir, &tried);
   if (dir.empty()) {
     if (!flag_dir.empty()) {
-      *status = Status::Error("--model " + flag_dir + ": " + flag_dir + "/" + kPoseModelJson +
-                              " not found; " + kFetchAdvice);
+      *status = Status::Error("analysis.model",
+                              flag_dir + "/" + kPoseModelJson + " not found; " + kFetchAdvice);
     } else {
       std::string list;
       for (const std::string& d : tried) list += (list.empty() ? "" : ", ") + d;
-      *status = Status::Error(std::string("the pose model (") + kPoseModelJson +
-                              ") is in none of " + list + "; " + kFetchAdvice);
+      *status =
+          Status::Error("analysis.model", std::string("the pose model (") + kPoseModelJson +
+
+                                              ") is in none of " + list + "; " + kFetchAdvice);
     }
     return nullptr;
   }
-  *status = CheckPinned(dir);
+  *status = CheckPinned(dir).WithKey("analysis.model");
+
   if (!*status) return nullptr;
   auto net = LoadUnchecked(dir + "/" + kPoseModelJson, status);
   if (net) net->impl_->dir = dir;

@@ -1,6 +1,7 @@
 // armmimic-screenshot-tour: walks the workflow of docs/user-guide.md in the real application
 // window and saves a screenshot of the whole screen after each step. Run it under an X server
 // (scripts/screenshots.sh uses xvfb-run):  armmimic-screenshot-tour OUTDIR SAMPLE_DIR
+// Length: main is the tour's script, one step after another as the user guide tells it.
 #include <cstdio>
 #include <functional>
 

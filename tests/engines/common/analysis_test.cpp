@@ -59,32 +59,36 @@ struct Scene {
   }
 };
 
-TEST(Analysis, CheckNamesTheFlag) {
+TEST(Analysis, CheckNamesTheSetting) {
   AnalysisOptions o;
   o.inputs = {"x.avi"};
-  EXPECT_NE(o.Check().message().find("--arm-length"), std::string::npos);
+  EXPECT_EQ(o.Check().key(), "analysis.arm_length");
+  EXPECT_NE(o.Check().message().find("arm-length image"), std::string::npos);
   o.arm_length_path = "arm.png";
-  EXPECT_NE(o.Check().message().find("--background-frames"), std::string::npos);
+  EXPECT_EQ(o.Check().key(), "analysis.background_frames");
+  EXPECT_NE(o.Check().message().find("background frames"), std::string::npos);
   o.background_frames = 45;
   EXPECT_TRUE(o.Check().ok()) << o.Check().message();
   o.background_path = "bg.png";
   EXPECT_NE(o.Check().message().find("exactly one"), std::string::npos);
   o.background_path.clear();
   o.start = -1;
-  EXPECT_NE(o.Check().message().find("--start"), std::string::npos);
+  EXPECT_EQ(o.Check().key(), "analysis.start");
+  EXPECT_NE(o.Check().message().find("start frame"), std::string::npos);
   o.start = 0;
   o.engine.bgsub.threshold = 300;
-  EXPECT_NE(o.Check().message().find("--threshold"), std::string::npos);
+  EXPECT_EQ(o.Check().key(), "bgsub.threshold");
   AnalysisOptions lk;
   lk.inputs = {"x.avi"};
   lk.engine.kind = EngineKind::kLk;
-  EXPECT_NE(lk.Check().message().find("--shoulder"), std::string::npos);
+  EXPECT_EQ(lk.Check().key(), "analysis.shoulder");
+  EXPECT_NE(lk.Check().message().find("shoulder"), std::string::npos);
   lk.shoulder_px = cv::Point2d(10, 10);
   EXPECT_TRUE(lk.Check().ok());
   AnalysisOptions marker;
   marker.inputs = {"a.png"};
   marker.engine.kind = EngineKind::kMarker;
-  EXPECT_NE(marker.Check().message().find("--reference"), std::string::npos);
+  EXPECT_EQ(marker.Check().key(), "analysis.reference");
   AnalysisOptions none;
   EXPECT_FALSE(none.Check().ok());
 }
@@ -175,7 +179,8 @@ TEST(Analysis, SizeMismatchNamesBothFiles) {
   const Status st = RunAnalysis(o, {}, &summary);
   ASSERT_FALSE(st.ok());
   EXPECT_NE(st.message().find("small.png"), std::string::npos) << st.message();
-  EXPECT_NE(st.message().find("--background"), std::string::npos) << st.message();
+  EXPECT_EQ(st.key(), "analysis.background");
+  EXPECT_NE(st.message().find("background image"), std::string::npos) << st.message();
   EXPECT_NE(st.message().find("160x120"), std::string::npos) << st.message();
 }
 

@@ -168,7 +168,8 @@ TEST(LkEngine, BeginNamesWhatIsMissingOrWrong) {
   context.frame_size = {320, 240};
   Status st = engine->Begin(context);
   EXPECT_FALSE(st.ok());
-  EXPECT_NE(st.message().find("--shoulder"), std::string::npos) << st.message();
+  EXPECT_EQ(st.key(), "analysis.shoulder") << st.message();
+  EXPECT_NE(st.message().find("shoulder"), std::string::npos) << st.message();
 
   context.background = cv::Mat(100, 100, CV_8UC3, cv::Scalar::all(0));
   st = engine->Begin(context);
@@ -179,13 +180,13 @@ TEST(LkEngine, BeginNamesWhatIsMissingOrWrong) {
   context.shoulder_px = cv::Point2d(500, 10);
   st = engine->Begin(context);
   EXPECT_FALSE(st.ok());
-  EXPECT_NE(st.message().find("--shoulder"), std::string::npos) << st.message();
+  EXPECT_EQ(st.key(), "analysis.shoulder") << st.message();
 
   context.shoulder_px = cv::Point2d(100, 100);
   context.roi = cv::Rect(300, 200, 100, 100);
   st = engine->Begin(context);
   EXPECT_FALSE(st.ok());
-  EXPECT_NE(st.message().find("--roi"), std::string::npos) << st.message();
+  EXPECT_EQ(st.key(), "analysis.roi") << st.message();
 }
 
 TEST(LkEngine, WrongFrameSizeIsLostNotACrash) {

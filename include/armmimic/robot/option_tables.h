@@ -1,0 +1,40 @@
+// The robot layer's option tables (armmimic/core/option_table.h): the planner ("planner.*"),
+// the joint mapping ("mapping.*"), the joint limits ("limits.*") and the link's timing
+// ("link.*"). The structs' Check() uses them, the CLI binds its flags to their keys, and a
+// planned program's header records every value (OptionTableValues) so that it can be read back.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "armmimic/core/option_table.h"
+#include "armmimic/robot/limits.h"
+#include "armmimic/robot/link_protocol.h"
+#include "armmimic/robot/mapping.h"
+#include "armmimic/robot/planner.h"
+
+namespace armmimic::robot {
+
+const std::vector<OptionField<PlannerOptions>>& PlannerOptionFields();
+const std::vector<OptionField<MappingOptions>>& MappingOptionFields();
+const std::vector<OptionField<JointLimits>>& LimitsOptionFields();
+const std::vector<OptionField<LinkSettings>>& LinkOptionFields();
+
+// Every value of `o` in table order as ("TABLE.KEY", "VALUE") pairs that SetOptionText reads
+// back exactly.
+template <typename O>
+std::vector<std::pair<std::string, std::string>> OptionTableValues(
+    const std::vector<OptionField<O>>& fields, const std::string& table, const O& o) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& f : fields) out.emplace_back(table + "." + f.key, OptionExactText(f, o));
+  return out;
+}
+
+// The planner's settings (its own, the mapping's and the limits') as one header line:
+// "settings planner.cutoff_hz=3 ... mapping.j1=+1,0 ... limits.max_speed_deg_s=45,...".
+std::string DescribePlannerSettings(const PlannerOptions& o);
+// Reads "TABLE.KEY=VALUE" (a planner, mapping or limits key) into `o`; the error names the key.
+Status SetPlannerSetting(const std::string& assignment, PlannerOptions* o);
+
+}  // namespace armmimic::robot

@@ -1,0 +1,19 @@
+// The command line's words for a setting: the library keys its errors by setting ("analysis.start",
+// Status::key()) and never names a flag; the CLI names the flag the setting is given with.
+#pragma once
+
+#include <string>
+
+#include "armmimic/core/status.h"
+
+namespace armmimic::cli {
+
+// The flag that sets `key` ("analysis.arm_length" -> "--arm-length"); an engine parameter with no
+// flag of its own is named as --param sets it ("--param lk.window_px"); "" for an unknown key.
+std::string FlagForKey(const std::string& key);
+
+// The status's message for a CLI user: "FLAG: message" when the status is keyed by a setting
+// with a flag, else the message alone.
+std::string Worded(const Status& status);
+
+}  // namespace armmimic::cli

@@ -1,0 +1,20 @@
+// The robot panel's fields named by the keys of the robot and serial option tables
+// (armmimic/robot/option_tables.h, armmimic/serial/port_table.h): each editor of a planner,
+// mapping, limits or port setting carries the property "optionKey" (e.g. "planner.cutoff_hz"),
+// so an error about a key (Status::key()) can be shown at its field, and the table's help and
+// unit complete its tooltip.
+#pragma once
+
+#include <QString>
+#include <QWidget>
+
+namespace armmimic::gui {
+
+// Sets "optionKey" on the fields below `panel` (the robot panel with its Designer form) that edit
+// a table row, and adds the row's help and unit to each field's tooltip.
+void BindRobotOptionKeys(QWidget* panel);
+
+// The field below `root` that edits the setting `key`, or nullptr when the panel offers none.
+QWidget* RobotOptionField(QWidget* root, const QString& key);
+
+}  // namespace armmimic::gui
