@@ -25,7 +25,7 @@ own `--help` texts by `scripts/gen-cli-doc.sh`.
 
 - **Exit codes:** 0 ok; 1 runtime failure (unreadable video, bad file content, port error,
   robot error, a refused plan, an interrupt); 2 usage error (unknown or malformed flag, missing
-  argument, an output that is one of the inputs).
+  argument, an output that is one of the inputs, a folder or a socket).
 - Every message names the file, line or flag it is about, e.g.
   `armmimic-cli analyze: --threshold: 'abc' is not a whole number`. The library's errors carry
   the key of the setting they are about (`analysis.arm_length`), never a flag; the CLI puts the
@@ -36,8 +36,28 @@ own `--help` texts by `scripts/gen-cli-doc.sh`.
   `--progress` / `--no-progress` (default: a progress bar when stderr is a terminal),
   `--version`.
 - `--help` works on every subcommand.
-- Outputs (angle files, images, `.val` programs) are written to a temporary file beside the
-  target and renamed into place: an interrupted run never leaves half a file.
+- **Outputs** (angle files, images, `.val` programs, summaries, journals, logs) are written
+  into what the path names, never over it:
+  - a regular file, or a new one, is written to a temporary beside it and renamed into place,
+    so an interrupted run never leaves half a file (a journal or log grows in place instead);
+  - a symlink is followed (chains too), and its target is replaced in the target's own folder;
+    the link stays;
+  - a character device (`/dev/null`, a terminal) or a FIFO is written to directly, with no
+    temporary file. A FIFO with no reader is waited for 5 s, then refused (exit 1). An angle
+    file that ends early there cannot be rewritten: its last line is `# complete=no`;
+  - a folder, a socket or a block device is refused, before any input is read: exit 2,
+    `analyze: -o out.tsv: is a folder; an output must be a file, a character device or a FIFO`.
+  - The temporary is `.NAME.armmimic-tmp.XXXXXX` beside the target `NAME` (six letters or digits;
+    a video's ends in its extension, `.scene.avi.armmimic-tmp.XXXXXX.avi`), locked by its writer.
+    A run killed with SIGKILL leaves it behind; the next run to the same output removes every
+    file of exactly that pattern whose writer is gone, and no other file.
+  - File errors say what is wrong: `permission denied`, `is a folder`, `not found`.
+- **Port names** (`--port`) resolve like any path: `s6/puma` is relative to the current folder.
+  A bare name with no slash is tried as `./NAME`, then as `/dev/NAME` (`ttyUSB0`), and a port
+  that is not found is reported with every path tried. One program at a time per device,
+  whatever name each gives it (a `puma-sim --link` symlink, `/dev/pts/N`): a second one is
+  refused before it writes a byte, naming the process that has the device
+  ([docs/link.md](link.md)).
 - **No output replaces an input.** `analyze`, `background`, `plan` and `score --plot` refuse,
   before reading anything, an output that is the same file as one of their inputs (the video,
   `--background`, `--arm-length`, `--reference`, `--params-from`, `--list`, the images an earlier

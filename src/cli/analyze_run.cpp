@@ -6,7 +6,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "armmimic/core/atomic_file.h"
+#include "armmimic/core/output_file.h"
 #include "armmimic/core/text.h"
 #include "interrupt.h"
 #include "progress.h"
@@ -173,7 +173,7 @@ int AnalyzeBatch(const AnalysisOptions& options, const BatchPlan& plan,
       Report(o, plan.outputs[i], r, global);
     }
   }
-  const Status st = WriteFileAtomically(plan.summary, SummaryText(rows));
+  const Status st = WriteOutputFile(plan.summary, SummaryText(rows));
   if (!st) {
     std::cerr << "armmimic-cli analyze: " << st.message() << "\n";
     return kExitFailure;
@@ -190,8 +190,9 @@ int AnalyzeBatch(const AnalysisOptions& options, const BatchPlan& plan,
 }
 
 Status ReadVideoList(const std::string& path, std::vector<std::string>* videos) {
+  if (Status st = CheckInputFile(path); !st) return Status::Error("--list " + st.message());
   std::ifstream in(path, std::ios::binary);
-  if (!in) return Status::Error("--list " + path + ": cannot open");
+  if (!in) return Status::Error("--list " + path + ": cannot open (" + FileErrorText(errno) + ")");
   std::string line;
   int line_no = 0;
   videos->clear();

@@ -8,7 +8,7 @@
 #include "analysis_flags.h"
 #include "analyze_run.h"
 #include "args.h"
-#include "armmimic/core/same_file.h"
+#include "armmimic/core/output_file.h"
 #include "armmimic/engines/analysis.h"
 #include "armmimic/engines/removed_options.h"
 #include "armmimic/engines/run_record.h"
@@ -128,8 +128,7 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
   if (!batch) outputs.push_back({"-o", a.output});
   if (!a.summary.empty()) outputs.push_back({"--summary", a.summary});
   // Nothing is read before the outputs are known not to be inputs.
-  if (Status st = CheckOutputsAreNotInputs(InputsOf(a.analysis.values(), a, a.inputs), outputs);
-      !st) {
+  if (Status st = CheckOutputs(InputsOf(a.analysis.values(), a, a.inputs), outputs); !st) {
     return p.UsageError(st.message());
   }
   AnalysisOptions o;
@@ -178,7 +177,7 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
     if (Status st = CheckOutputsAreDistinct(outputs); !st) return p.UsageError(st.message());
   }
   // Again with the images the recorded run names, and every video of a list.
-  if (Status st = CheckOutputsAreNotInputs(InputsOf(o, a, videos), outputs); !st) {
+  if (Status st = CheckOutputs(InputsOf(o, a, videos), outputs); !st) {
     return p.UsageError(st.message());
   }
   InterruptGuard guard;

@@ -5,7 +5,7 @@
 
 #include "args.h"
 #include "armmimic/core/image_io.h"
-#include "armmimic/core/same_file.h"
+#include "armmimic/core/output_file.h"
 #include "armmimic/engines/analysis.h"
 #include "command.h"
 #include "flag_for_key.h"
@@ -33,7 +33,7 @@ int RunBackground(const std::vector<std::string>& args, const GlobalOptions& glo
     return p.UsageError("-o " + output + ": use an image extension (.png, .bmp, .tif, .jpg)");
   }
 
-  if (Status st = CheckOutputsAreNotInputs({{"VIDEO", inputs[0]}}, {{"-o", output}}); !st) {
+  if (Status st = CheckOutputs({{"VIDEO", inputs[0]}}, {{"-o", output}}); !st) {
     return p.UsageError(st.message());
   }
 

@@ -12,6 +12,7 @@
 #include "analysis_flags.h"
 #include "args.h"
 #include "armmimic/core/angle_file.h"
+#include "armmimic/core/output_file.h"
 #include "armmimic/live/mimic_run.h"
 #include "armmimic/robot/live_log.h"
 #include "armmimic/serial/serial_link.h"
@@ -152,16 +153,22 @@ std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* 
   o.stream.kind = o.analysis.engine.kind == EngineKind::kMarker ? robot::SourceKind::kMarker
                                                                 : robot::SourceKind::kArm;
   if (auto code = planner_flags.Finish(p, o.stream.kind, false)) return code;
-  if (!profile_path.empty()) {
-    const Status s = robot::ReadProfile(profile_path, &o.stream.profile);
-    if (!s.ok()) return Fail(Worded(s));
-  }
   if (m->output.empty()) m->output = DefaultOutput();
   o.angles_path = m->output;
   o.stream.source_name = o.analysis.inputs[0];
   o.stream.port_name = m->dry_run ? "dry-run" : m->port.port;
   o.stream.journal_path = m->dry_run ? "" : robot::LiveJournal::PathFor(m->output);
   o.stream.latency_path = robot::LatencyLog::PathFor(m->output);
+  if (const Status s = CheckOutputKinds({{"-o", m->output},
+                                         {"the journal", o.stream.journal_path},
+                                         {"the latency log", o.stream.latency_path}});
+      !s.ok()) {
+    return p.UsageError(s.message());
+  }
+  if (!profile_path.empty()) {
+    const Status s = robot::ReadProfile(profile_path, &o.stream.profile);
+    if (!s.ok()) return Fail(Worded(s));
+  }
   if (const Status s = o.stream.Check(); !s.ok()) return p.UsageError("--profile: " + s.message());
   return std::nullopt;
 }

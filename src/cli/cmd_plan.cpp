@@ -6,8 +6,7 @@
 
 #include "args.h"
 #include "armmimic/core/angle_file.h"
-#include "armmimic/core/atomic_file.h"
-#include "armmimic/core/same_file.h"
+#include "armmimic/core/output_file.h"
 #include "armmimic/robot/planner.h"
 #include "armmimic/robot/profile.h"
 #include "armmimic/robot/val_program.h"
@@ -72,7 +71,7 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   {
     std::vector<NamedPath> inputs = {{"ANGLES.tsv", input[0]}};
     if (!profile_path.empty()) inputs.push_back({"--profile", profile_path});
-    if (Status s = CheckOutputsAreNotInputs(inputs, {{"-o", output}}); !s.ok()) {
+    if (Status s = CheckOutputs(inputs, {{"-o", output}}); !s.ok()) {
       return p.UsageError(s.message());
     }
   }
@@ -142,7 +141,7 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
     std::cerr << "plan: " << InterruptGuard::Message() << "; " << output << " not written\n";
     return kExitFailure;
   }
-  if (Status s = WriteFileAtomically(output, text); !s.ok()) {
+  if (Status s = WriteOutputFile(output, text); !s.ok()) {
     std::cerr << "armmimic-cli plan: " << s.message() << "\n";
     return kExitFailure;
   }

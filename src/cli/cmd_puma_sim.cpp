@@ -4,6 +4,7 @@
 #include <thread>
 
 #include "args.h"
+#include "armmimic/core/output_file.h"
 #include "armmimic/sim/pty_server.h"
 #include "command.h"
 #include "flag_for_key.h"
@@ -51,6 +52,10 @@ int RunPumaSim(const std::vector<std::string>& args, const GlobalOptions& global
   {
     const Status s = options.limits.Check();
     if (!s.ok()) return p.UsageError("--limits: " + s.message());
+  }
+
+  if (const Status s = CheckOutputKinds({{"--log", log_path}}); !s.ok()) {
+    return p.UsageError(s.message());
   }
 
   InterruptGuard guard;  // before the device exists: whoever sees it may signal at once

@@ -5,7 +5,7 @@
 #include "args.h"
 #include "armmimic/core/angle_file.h"
 #include "armmimic/core/image_io.h"
-#include "armmimic/core/same_file.h"
+#include "armmimic/core/output_file.h"
 #include "armmimic/synth/score.h"
 #include "command.h"
 #include "interrupt.h"
@@ -48,8 +48,8 @@ int RunScore(const std::vector<std::string>& args, const GlobalOptions& global) 
     size = {w, h};
   }
   if (!plot.empty()) {
-    const Status same = CheckOutputsAreNotInputs(
-        {{"TRUTH.tsv", files[0]}, {"ANGLES.tsv", files[1]}}, {{"--plot", plot}});
+    const Status same =
+        CheckOutputs({{"TRUTH.tsv", files[0]}, {"ANGLES.tsv", files[1]}}, {{"--plot", plot}});
     if (!same) return p.UsageError(same.message());
   }
   InterruptGuard guard;

@@ -10,7 +10,7 @@
 
 #include "args.h"
 #include "armmimic/core/angle_file.h"
-#include "armmimic/core/same_file.h"
+#include "armmimic/core/output_file.h"
 #include "armmimic/robot/journal.h"
 #include "armmimic/robot/link_protocol.h"
 #include "armmimic/robot/profile.h"
@@ -158,8 +158,8 @@ std::optional<int> ParseSend(const std::vector<std::string>& args, SendOptions* 
     // The journal is send's one output: it may not be the program or the profile.
     std::vector<NamedPath> inputs = {{"INPUT", o->inputs[0]}};
     if (!o->profile_path.empty()) inputs.push_back({"--profile", o->profile_path});
-    const Status s = CheckOutputsAreNotInputs(
-        inputs, {{"the journal", robot::SendJournal::PathFor(o->inputs[0])}});
+    const Status s =
+        CheckOutputs(inputs, {{"the journal", robot::SendJournal::PathFor(o->inputs[0])}});
     if (!s.ok()) return p.UsageError(s.message());
   }
   return std::nullopt;

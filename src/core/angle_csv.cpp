@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "armmimic/core/atomic_file.h"
+#include "armmimic/core/output_file.h"
 
 namespace armmimic {
 namespace {
@@ -83,7 +83,7 @@ std::string FormatAnglesCsv(const std::vector<AngleRow>& rows, bool file_column,
 
 Status WriteAnglesCsv(const std::string& path, const std::vector<AngleRow>& rows, bool file_column,
                       CsvStyle style) {
-  return WriteFileAtomically(path, FormatAnglesCsv(rows, file_column, style));
+  return WriteOutputFile(path, FormatAnglesCsv(rows, file_column, style));
 }
 
 }  // namespace armmimic

@@ -12,7 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "armmimic/core/atomic_file.h"
+#include "armmimic/core/output_file.h"
 
 namespace armmimic {
 
@@ -123,6 +123,7 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
     if (line.find('\0') != std::string::npos) return err(line_no, "line contains a NUL byte");
 
     if (!line.empty() && line[0] == '#') {
+      if (have_header && line == kIncompleteMark) out->complete = false;
       if (line.rfind("# armmimic angles v", 0) == 0 && line != kAngleFileMagic) {
         return err(line_no, "unsupported angle file version \"" + line.substr(2) +
                                 "\" (this reader knows v1)");
@@ -248,13 +249,14 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
 }
 
 Status ReadAngleFile(const std::string& path, AngleFile* out) {
+  if (Status st = CheckInputFile(path); !st) return st;
   std::ifstream in(path, std::ios::binary);
-  if (!in) return Status::Error(path + ": cannot open (" + ErrnoText(errno) + ")");
+  if (!in) return Status::Error(path + ": cannot open (" + FileErrorText(errno) + ")");
   return ParseAngleFile(in, path, out);
 }
 
 struct AngleFileWriter::Impl {
-  AtomicFile file;
+  OutputFile file;
   std::string path;
   AngleMeta meta;
   bool file_column = false;
@@ -320,9 +322,16 @@ Status AngleFileWriter::Commit(bool complete) {
   if (!impl_->open) return Status::Error("angle file is not open");
   impl_->open = false;
   if (complete) return impl_->file.Commit();
+  if (!impl_->file.replacing()) {
+    // A device or FIFO cannot be rewound: the rows went out as they came, and a last comment
+    // line marks them, which ReadAngleFile() reads as complete=no too.
+    std::fputs(kIncompleteMark, impl_->file.file());
+    std::fputs("\n", impl_->file.file());
+    return impl_->file.Commit();
+  }
   // Rewrite with complete=no in the meta line, keeping every row written so far.
   std::fflush(impl_->file.file());
-  AtomicFile marked;
+  OutputFile marked;
   Status st = marked.Open(impl_->path);
   if (!st) return st;
   AngleMeta meta = impl_->meta;

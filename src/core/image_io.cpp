@@ -12,8 +12,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "armmimic/core/atomic_file.h"
-#include "armmimic/core/text.h"
+#include "armmimic/core/output_file.h"
 
 namespace armmimic {
 namespace {
@@ -64,11 +63,11 @@ bool HasImageExtension(const std::string& path) {
 
 Status ReadImage(const std::string& path, cv::Mat* bgr) {
   if (path.empty()) return Status::Error("image path is empty");
+  if (Status checked = CheckInputFile(path); !checked) return checked;
   struct stat st {};
   if (stat(path.c_str(), &st) != 0) {
-    return Status::Error(path + ": cannot open image (" + ErrnoText(errno) + ")");
+    return Status::Error(path + ": cannot open image (" + FileErrorText(errno) + ")");
   }
-  if (S_ISDIR(st.st_mode)) return Status::Error(path + ": is a directory, not an image");
   if (st.st_size == 0) return Status::Error(path + ": empty file (0 bytes), not an image");
   cv::Mat raw;
   try {
@@ -104,7 +103,7 @@ Status WriteImageAtomically(const std::string& path, const cv::Mat& image) {
   } catch (const cv::Exception& e) {
     return Status::Error(path + ": encoding as " + ext + " failed (" + e.msg + ")");
   }
-  return WriteFileAtomically(path, std::string(bytes.begin(), bytes.end()));
+  return WriteOutputFile(path, std::string(bytes.begin(), bytes.end()));
 }
 
 }  // namespace armmimic

@@ -2,6 +2,8 @@
 // checks them up front and hands over to one of the three sources.
 #include "armmimic/core/video_source.h"
 
+#include "armmimic/core/output_file.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -44,9 +46,9 @@ bool IsVideoExtension(const std::string& ext) {
 Status CheckReadableFile(const std::string& path) {
   struct stat st {};
   if (stat(path.c_str(), &st) != 0) {
-    return Status::Error(path + ": " + (errno == ENOENT ? "no such file" : ErrnoText(errno)));
+    return Status::Error(path + ": " + (errno == ENOENT ? "no such file" : FileErrorText(errno)));
   }
-  if (S_ISDIR(st.st_mode)) return Status::Error(path + ": is a directory");
+  if (S_ISDIR(st.st_mode)) return Status::Error(path + ": is a folder");
   if (!S_ISREG(st.st_mode)) return Status::Error(path + ": not a regular file");
   if (access(path.c_str(), R_OK) != 0) {
     return Status::Error(path + ": cannot read (" + ErrnoText(errno) + ")");

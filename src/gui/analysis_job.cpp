@@ -7,7 +7,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "armmimic/core/atomic_file.h"
+#include "armmimic/core/output_file.h"
 #include "video_player.h"
 
 namespace armmimic::gui {
@@ -46,7 +46,7 @@ void AnalysisWorker::estimateBackground(const QStringList& inputs, int start, in
     if (!cv::imencode("." + ext, background, png)) {
       st = Status::Error(path + ": cannot encode the background as ." + ext);
     } else {
-      st = WriteFileAtomically(path, std::string(png.begin(), png.end()));
+      st = WriteOutputFile(path, std::string(png.begin(), png.end()));
     }
   }
   emit backgroundFinished(st ? QString() : QString::fromStdString(st.message()), output_path);
@@ -103,7 +103,7 @@ QString AnalysisJob::exportResult(const QString& path) const {
     return tr("%1: cannot read the analysis result: %2").arg(result_path_, in.errorString());
   }
   const QByteArray bytes = in.readAll();
-  const Status st = WriteFileAtomically(path.toStdString(), bytes.toStdString());
+  const Status st = WriteOutputFile(path.toStdString(), bytes.toStdString());
   return st ? QString() : QString::fromStdString(st.message());
 }
 
@@ -119,7 +119,7 @@ QString AnalysisJob::adoptResultText(const QString& text) {
     return tr("cannot create a temporary folder for the results: %1").arg(session_.errorString());
   }
   const QString path = QDir(session_.path()).filePath(QString("angles-%1.tsv").arg(++run_));
-  const Status st = WriteFileAtomically(path.toStdString(), text.toStdString());
+  const Status st = WriteOutputFile(path.toStdString(), text.toStdString());
   if (!st) return QString::fromStdString(st.message());
   adoptResult(path);
   return QString();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <QBuffer>
 #include <QChart>
 #include <QFileInfo>
 #include <QImage>
@@ -14,6 +15,7 @@
 #include <QValueAxis>
 
 #include "angle_plot.h"
+#include "armmimic/core/output_file.h"
 
 namespace armmimic::gui {
 namespace {
@@ -84,9 +86,14 @@ QString AnglePlot::saveImage(const QString& path) {
   cursor_->setVisible(false);               // the video's position is not part of the data
   const QRect source = viewport()->rect();  // what the widget shows, in its own pixels
   QString error;
+  // Drawn in memory, then written through the one output path (a link is followed, a device
+  // written to, a folder refused), as every other output.
+  QByteArray bytes;
+  QBuffer buffer(&bytes);
+  buffer.open(QIODevice::WriteOnly);
   if (QFileInfo(path).suffix().compare("svg", Qt::CaseInsensitive) == 0) {
     QSvgGenerator svg;
-    svg.setFileName(path);
+    svg.setOutputDevice(&buffer);
     svg.setSize(source.size());
     svg.setViewBox(QRectF(QPointF(0, 0), QSizeF(source.size())));
     svg.setTitle(tr("armmimic angles"));
@@ -104,7 +111,11 @@ QString AnglePlot::saveImage(const QString& path) {
     painter.setRenderHint(QPainter::Antialiasing);
     render(&painter, QRectF(image.rect()), source);
     painter.end();
-    if (!image.save(path, "PNG")) error = tr("%1: cannot write the PNG file").arg(path);
+    if (!image.save(&buffer, "PNG")) error = tr("%1: cannot write the PNG file").arg(path);
+  }
+  if (error.isEmpty()) {
+    const Status st = WriteOutputFile(path.toStdString(), bytes.toStdString());
+    if (!st) error = QString::fromStdString(st.message());
   }
   cursor_->setVisible(cursor_shown);
   return error;

@@ -7,7 +7,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
-#include "armmimic/core/atomic_file.h"
+#include "armmimic/core/output_file.h"
 #include "armmimic/engines/option_fields.h"
 #include "armmimic/engines/removed_options.h"
 
@@ -119,7 +119,7 @@ QString WriteSession(const QString& path, const Session& s) {
   root["analysis"] = WriteAnalysis(s.options, dir);
   root["angles"] = s.angle_text.isEmpty() ? QJsonValue() : QJsonValue(s.angle_text);
   const QByteArray bytes = QJsonDocument(root).toJson(QJsonDocument::Indented);
-  const Status st = WriteFileAtomically(path.toStdString(), bytes.toStdString());
+  const Status st = WriteOutputFile(path.toStdString(), bytes.toStdString());
   return st ? QString() : QString::fromStdString(st.message());
 }
 

@@ -1,6 +1,7 @@
 #include "video_view.h"
 
-#include <QSaveFile>
+#include <QBuffer>
+#include <QFileInfo>
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +9,8 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QWheelEvent>
+
+#include "armmimic/core/output_file.h"
 
 namespace armmimic::gui {
 
@@ -214,11 +217,17 @@ namespace armmimic::gui {
 QString VideoView::saveWithOverlay(const QString& path) const {
   const QImage image = renderWithOverlay();
   if (image.isNull()) return tr("No frame to save: open a video first");
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly) || !image.save(&file, nullptr) || !file.commit()) {
-    return tr("%1: cannot save the frame: %2").arg(path, file.errorString());
+  // Encoded in memory, then written through the one output path (a link is followed, a device
+  // written to, a folder refused), as every other output.
+  QByteArray bytes;
+  QBuffer buffer(&bytes);
+  const QByteArray format = QFileInfo(path).suffix().toLower().toLatin1();
+  if (!buffer.open(QIODevice::WriteOnly) ||
+      !image.save(&buffer, format.isEmpty() ? "png" : format.constData())) {
+    return tr("%1: cannot save the frame: no image writer for this file type").arg(path);
   }
-  return QString();
+  const Status st = WriteOutputFile(path.toStdString(), bytes.toStdString());
+  return st ? QString() : QString::fromStdString(st.message());
 }
 
 }  // namespace armmimic::gui

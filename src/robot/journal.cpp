@@ -8,7 +8,7 @@
 
 #include <unistd.h>
 
-#include "armmimic/core/text.h"
+#include "armmimic/core/output_file.h"
 
 namespace armmimic::robot {
 namespace {
@@ -110,9 +110,8 @@ Status SendJournal::Open(const std::string& path, const std::string& hash, int l
                          const std::string& source_name, bool append) {
   Close();
   path_ = path;
-  file_ = std::fopen(path.c_str(), append ? "a" : "w");
-  if (!file_) {
-    return Status::Error(path + ": cannot write the send journal: " + ErrnoText(errno));
+  if (Status st = OpenLogFile(path, append, &file_); !st) {
+    return Status::Error("cannot write the send journal: " + st.message());
   }
   if (append) return Append("# resumed");
   std::string name = source_name;
@@ -126,9 +125,8 @@ Status SendJournal::Open(const std::string& path, const std::string& hash, int l
 
 Status SendJournal::Append(const std::string& record) {
   if (!file_) return Status::Error(path_ + ": the send journal is not open");
-  if (std::fprintf(file_, "%s\n", record.c_str()) < 0 || std::fflush(file_) != 0 ||
-      fsync(fileno(file_)) != 0) {
-    return Status::Error(path_ + ": cannot write the send journal: " + ErrnoText(errno));
+  if (std::fprintf(file_, "%s\n", record.c_str()) < 0 || !SyncOutput(file_)) {
+    return Status::Error(path_ + ": cannot write the send journal: " + FileErrorText(errno));
   }
   return Status::Ok();
 }

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "armmimic/core/angle_file.h"
+#include "armmimic/core/output_file.h"
 #include "armmimic/core/text.h"
 
 namespace armmimic::robot {
@@ -31,8 +32,9 @@ LiveJournal::~LiveJournal() {
 
 Status LiveJournal::Open(const std::string& path, const std::string& header) {
   path_ = path;
-  file_ = std::fopen(path.c_str(), "w");
-  if (!file_) return Status::Error(path + ": cannot write the journal: " + ErrnoText(errno));
+  if (Status st = OpenLogFile(path, false, &file_); !st) {
+    return Status::Error("cannot write the journal: " + st.message());
+  }
   Status s = Append("# armmimic mimic journal v1");
   if (s.ok()) s = Append("stream " + header);
   return s;
@@ -69,8 +71,8 @@ Status LiveJournal::Close(const std::string& stop_reason, int last_ack_seq, int 
                                       " " + last_ack_line
                                 : std::string("last-ack none"));
   }
-  if (s.ok() && fsync(fileno(file_)) != 0) {
-    s = Status::Error(path_ + ": cannot sync the journal: " + ErrnoText(errno));
+  if (s.ok() && !SyncOutput(file_)) {
+    s = Status::Error(path_ + ": cannot sync the journal: " + FileErrorText(errno));
   }
   std::fclose(file_);
   file_ = nullptr;
@@ -118,9 +120,8 @@ LatencyLog::~LatencyLog() {
 Status LatencyLog::Open(const std::string& path) {
   path_ = path;
   if (path.empty()) return Status::Ok();
-  file_ = std::fopen(path.c_str(), "w");
-  if (!file_) {
-    return Status::Error(path + ": cannot write the latency log: " + ErrnoText(errno));
+  if (Status st = OpenLogFile(path, false, &file_); !st) {
+    return Status::Error("cannot write the latency log: " + st.message());
   }
   std::fprintf(file_,
                "# armmimic mimic latency v1\n"

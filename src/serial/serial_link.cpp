@@ -166,8 +166,19 @@ Status SerialLink::Open(const PortSettings& settings) {
                  " (add your user to the group that owns it, usually 'dialout', and log "
                  "in again)");
   }
-  port_->setPortName(QString::fromStdString(device));
+  // One program per device, whatever name each gives it; taken before a byte is written.
+  if (Status locked = lock_.Acquire(device); !locked) {
+    return error(flag + ": " + locked.message());
+  }
+  // The serial library reads a name without a leading '/' as one under /dev: give it the path.
+  std::string absolute = device;
+  if (absolute[0] != '/') {
+    char cwd[4096];
+    if (::getcwd(cwd, sizeof cwd)) absolute = std::string(cwd) + "/" + device;
+  }
+  port_->setPortName(QString::fromStdString(absolute));
   if (!port_->open(QIODevice::ReadWrite)) {
+    lock_.Release();
     const QSerialPort::SerialPortError e = port_->error();
     const std::string qt = port_->errorString().toStdString();
     port_->clearError();
@@ -215,6 +226,7 @@ Status SerialLink::Open(const PortSettings& settings) {
   if (!key.empty()) {
     const std::string qt = port_->errorString().toStdString();
     port_->close();
+    lock_.Release();
     return Status::Error(key, device + " refused " + refused + " (" + qt + ")");
   }
   port_->clear();
@@ -227,6 +239,7 @@ void SerialLink::Close() {
     port_->flush();
     port_->close();
   }
+  lock_.Release();
 }
 
 double SerialLink::Now() const {

@@ -12,6 +12,7 @@
 #include <termios.h>
 #include <unistd.h>
 
+#include "armmimic/core/output_file.h"
 #include "armmimic/core/text.h"
 
 namespace armmimic::sim {
@@ -38,9 +39,8 @@ std::string PtyServer::FormatLogLine(const LoggedMove& move) {
 Status PtyServer::Start(const std::string& link_path, const std::string& log_path) {
   if (master_fd_ >= 0) return Status::Error("puma-sim: already started");
   if (!log_path.empty()) {
-    log_file_ = std::fopen(log_path.c_str(), "w");
-    if (!log_file_) {
-      return Status::Error(log_path + ": cannot write the move log: " + ErrnoText(errno));
+    if (Status st = OpenLogFile(log_path, false, &log_file_); !st) {
+      return Status::Error("cannot write the move log: " + st.message());
     }
     emulator_.SetMoveCallback([this](const LoggedMove& move) {
       std::fprintf(log_file_, "%s\n", FormatLogLine(move).c_str());

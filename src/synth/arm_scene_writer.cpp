@@ -10,25 +10,13 @@
 
 #include "armmimic/core/angle_file.h"
 #include "armmimic/core/image_io.h"
+#include "armmimic/core/output_file.h"
 #include "armmimic/synth/arm_scene.h"
 
 namespace armmimic::synth {
 namespace {
 
 std::string Num(double v, int decimals) { return FormatNumber(v, decimals); }
-
-// Removes a temporary file unless released.
-class TempGuard {
- public:
-  explicit TempGuard(std::string path) : path_(std::move(path)) {}
-  ~TempGuard() {
-    if (!path_.empty()) std::remove(path_.c_str());
-  }
-  void Release() { path_.clear(); }
-
- private:
-  std::string path_;
-};
 
 }  // namespace
 
@@ -42,9 +30,11 @@ Status WriteSceneFolder(const ArmSceneSource& scene, const SceneVideo& video, co
                          (ec ? " (" + ec.message() + ")" : std::string(" (not a folder)")));
   }
   const std::string video_path = outdir + "/scene.avi";
-  const std::string temp_path =
-      outdir + "/.scene." + std::to_string(static_cast<long>(::getpid())) + ".tmp.avi";
-  TempGuard guard(temp_path);
+  // The encoder writes by name into the temporary of the one output path; it is renamed over
+  // scene.avi (or the file a scene.avi link leads to) last. Discarded on every early return.
+  OutputFile video_file;
+  if (Status st = video_file.OpenNamed(video_path); !st) return st;
+  const std::string temp_path = video_file.temp_path();
   {
     const std::string& c = video.codec;
     if (c.size() != 4) return Status::Error("codec '" + c + "' is not a four-character code");
@@ -101,11 +91,7 @@ Status WriteSceneFolder(const ArmSceneSource& scene, const SceneVideo& video, co
   st = WriteTruthFile(outdir + "/truth.tsv", truth);
   if (!st.ok()) return st;
   // The video last, so a complete scene.avi means a complete folder.
-  if (std::rename(temp_path.c_str(), video_path.c_str()) != 0) {
-    return Status::Error(video_path + ": cannot rename the finished video into place");
-  }
-  guard.Release();
-  return Status::Ok();
+  return video_file.Commit();
 }
 
 Status WriteArmScene(const ArmSceneOptions& options, const std::string& outdir,

@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "armmimic/core/atomic_file.h"
+#include "armmimic/core/output_file.h"
 
 namespace armmimic::synth {
 
@@ -204,7 +204,7 @@ std::string FormatTruthFile(const TruthFile& file) {
 }
 
 Status WriteTruthFile(const std::string& path, const TruthFile& file) {
-  return WriteFileAtomically(path, FormatTruthFile(file));
+  return WriteOutputFile(path, FormatTruthFile(file));
 }
 
 }  // namespace armmimic::synth

@@ -59,6 +59,9 @@ inline constexpr const char* kAngleFileUnits =
 // after them.
 extern const char* const kAngleColumns[11];
 inline constexpr const char* kSignedYawColumn = "yaw_signed_deg";
+// The last line of a file written to a device or FIFO by a run that stopped early, where the
+// header could not be rewritten with complete=no; read as complete=no all the same.
+inline constexpr const char* kIncompleteMark = "# complete=no";
 inline constexpr std::size_t kMaxAngleLineLength = 65536;
 
 // Parses an angle file; `source_name` is used in messages ("angles.tsv:12: ...").
@@ -87,7 +90,8 @@ class AngleFileWriter {
   Status Open(const std::string& path, const AngleMeta& meta, bool file_column,
               bool confidence_column = false, bool signed_yaw_column = false);
   Status Write(const AngleRow& row);
-  // complete=false rewrites the header with complete=no (rows so far are kept).
+  // complete=false rewrites the header with complete=no (rows so far are kept); in a device or
+  // FIFO, which cannot be rewound, a last line kIncompleteMark says so instead.
   Status Commit(bool complete = true);
   int rows_written() const;
 

@@ -14,6 +14,7 @@
 
 #include "armmimic/core/status.h"
 #include "armmimic/robot/link_protocol.h"
+#include "armmimic/serial/port_lock.h"
 
 namespace armmimic::serial {
 
@@ -104,6 +105,7 @@ class SerialLink : public QObject {
   double Now() const;
 
   QSerialPort* port_;
+  PortLock lock_;  // held from Open() to Close()
   QTimer* timer_;
   QElapsedTimer clock_;
   robot::LinkProtocol protocol_;
