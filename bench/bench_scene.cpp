@@ -1,7 +1,9 @@
 #include "bench_scene.h"
 
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
+#include <vector>
 
 #include <unistd.h>
 
@@ -10,21 +12,26 @@
 namespace armmimic::bench {
 namespace {
 
-char g_dir[] = "/tmp/armmimic-bench-XXXXXX";
+std::string g_dir;
 
 void RemoveSceneDir() {
-  const std::string cmd = std::string("rm -rf ") + g_dir;
-  if (std::system(cmd.c_str()) != 0) return;
+  std::error_code ec;
+  std::filesystem::remove_all(g_dir, ec);
 }
 
 }  // namespace
 
 const std::string& SceneDir(const synth::ArmSceneOptions& options) {
   static const std::string dir = [&options] {
-    if (!mkdtemp(g_dir)) std::abort();
+    const char* base = std::getenv("TMPDIR");
+    std::string templ = std::string(base && *base ? base : "/tmp") + "/armmimic-bench-XXXXXX";
+    std::vector<char> buf(templ.begin(), templ.end());
+    buf.push_back('\0');
+    if (!mkdtemp(buf.data())) std::abort();
+    g_dir = buf.data();
     std::atexit(RemoveSceneDir);
     if (!synth::WriteArmScene(options, g_dir, {}).ok()) std::abort();
-    return std::string(g_dir);
+    return g_dir;
   }();
   return dir;
 }

@@ -12,8 +12,9 @@
 
 namespace armmimic::bench {
 
-// Writes `options` as a scene into a new folder under /tmp the first time it is called (later
-// calls return the same folder, whatever their options); aborts if the scene cannot be written.
+// Writes `options` as a scene into a new folder under $TMPDIR (or /tmp) the first time it is called
+// (later calls return the same folder, whatever their options); aborts if the scene cannot be
+// written.
 const std::string& SceneDir(const synth::ArmSceneOptions& options);
 
 // Reads every frame of `video` per iteration; counter "frames/s" per CPU second.

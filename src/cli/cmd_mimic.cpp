@@ -4,7 +4,6 @@
 #include <QCoreApplication>
 #include <QTimer>
 #include <cmath>
-#include <csignal>
 #include <ctime>
 #include <iostream>
 #include <optional>
@@ -18,30 +17,12 @@
 #include "armmimic/serial/serial_link.h"
 #include "command.h"
 #include "flag_for_key.h"
+#include "interrupt.h"
 #include "planner_flags.h"
 #include "port_flags.h"
 
 namespace armmimic::cli {
 namespace {
-
-volatile std::sig_atomic_t g_signal = 0;
-volatile std::sig_atomic_t g_signals = 0;
-extern "C" void OnMimicSignal(int sig) {
-  g_signal = sig;
-  g_signals = g_signals + 1;
-}
-
-const char* SignalName(int sig) {
-  switch (sig) {
-    case SIGINT:
-      return "SIGINT, Ctrl-C";
-    case SIGTERM:
-      return "SIGTERM";
-    case SIGHUP:
-      return "SIGHUP";
-  }
-  return "a signal";
-}
 
 int Fail(const std::string& message) {
   std::cerr << "armmimic-cli mimic: " << message << "\n";
@@ -213,14 +194,15 @@ int RunMimic(const std::vector<std::string>& args, const GlobalOptions& global) 
     message = text.toStdString();
     app.quit();
   });
-  for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, OnMimicSignal);
+  // The first signal stops cleanly, a second one at once (MimicRun::Stop counts them).
+  InterruptGuard guard;
   int stops_seen = 0;
   QTimer poll;
   poll.setInterval(20);
   QObject::connect(&poll, &QTimer::timeout, &app, [&] {
-    while (stops_seen < g_signals) {
+    while (stops_seen < InterruptGuard::count()) {
       ++stops_seen;
-      run.Stop(std::string("interrupted (") + SignalName(g_signal) + ")");
+      run.Stop(InterruptGuard::Message());
     }
   });
   poll.start();

@@ -17,19 +17,19 @@ bool Contains(const std::string& text, const std::string& part) {
 
 // One short MJPG scene shared by the tests of this file (written once).
 const std::string& SceneDir() {
-  static test::TempDir* dir = [] {
-    auto* d = new test::TempDir();
+  bool created = false;
+  const test::TempDir& dir = test::SharedTempDir("cli-analyze-scene", &created);
+  if (created) {
     synth::ArmSceneOptions so;
     so.seed = 7;
     so.motion = synth::ArmMotion::kSwing;
     so.motion_frames = 90;
     so.noise_sigma = 3;
     so.codec = "MJPG";
-    const Status st = synth::WriteArmScene(so, d->path(), {});
+    const Status st = synth::WriteArmScene(so, dir.path(), {});
     if (!st.ok()) ADD_FAILURE() << st.message();
-    return d;
-  }();
-  return dir->path();
+  }
+  return dir.path();
 }
 
 TEST(CliAnalyze, MjpgSceneMeetsTheAccuracyTarget) {

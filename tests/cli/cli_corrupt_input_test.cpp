@@ -26,14 +26,15 @@ bool Contains(const std::string& text, const std::string& part) {
 // A tiny scene (160x120: 10 empty, 10 standstill, 10 moving frames) and a 200x150 one whose
 // images have the wrong size for the first; written once for the whole file.
 struct Scenes {
-  test::TempDir dir;
-  std::string small() const { return dir.file("small"); }
-  std::string big() const { return dir.file("big"); }
+  std::string dir;
+  std::string small() const { return dir + "/small"; }
+  std::string big() const { return dir + "/big"; }
 };
 
-const Scenes& Shared() {
-  static Scenes* s = [] {
-    auto* d = new Scenes();
+Scenes Shared() {
+  bool created = false;
+  const Scenes s{test::SharedTempDir("cli-corrupt-input-scenes", &created).path()};
+  if (created) {
     synth::ArmSceneOptions so;
     so.seed = 3;
     so.size = {160, 120};
@@ -41,15 +42,14 @@ const Scenes& Shared() {
     so.standstill_frames = 10;
     so.motion_frames = 10;
     so.motion = synth::ArmMotion::kSwing;
-    Status st = synth::WriteArmScene(so, d->small(), {});
+    Status st = synth::WriteArmScene(so, s.small(), {});
     if (!st.ok()) ADD_FAILURE() << st.message();
     so.size = {200, 150};
     so.background_frames = so.standstill_frames = so.motion_frames = 2;
-    st = synth::WriteArmScene(so, d->big(), {});
+    st = synth::WriteArmScene(so, s.big(), {});
     if (!st.ok()) ADD_FAILURE() << st.message();
-    return d;
-  }();
-  return *s;
+  }
+  return s;
 }
 
 class CorruptInput : public ::testing::Test {

@@ -32,8 +32,9 @@ constexpr int kStandstillFrames = 20;
 constexpr int kMotionFrames = 600;
 
 const std::string& LongScene() {
-  static test::TempDir* dir = [] {
-    auto* d = new test::TempDir();
+  bool created = false;
+  const test::TempDir& dir = test::SharedTempDir("cli-interrupt-scene", &created);
+  if (created) {
     synth::ArmSceneOptions so;
     so.seed = 11;
     so.size = {240, 180};
@@ -41,11 +42,10 @@ const std::string& LongScene() {
     so.standstill_frames = kStandstillFrames;
     so.motion_frames = kMotionFrames;
     so.motion = synth::ArmMotion::kSwing;
-    const Status st = synth::WriteArmScene(so, d->path(), {});
+    const Status st = synth::WriteArmScene(so, dir.path(), {});
     if (!st.ok()) ADD_FAILURE() << st.message();
-    return d;
-  }();
-  return dir->path();
+  }
+  return dir.path();
 }
 
 // armmimic-cli running in the background, its stderr going to a file.

@@ -19,18 +19,16 @@ bool Contains(const std::string& s, const std::string& part) {
 }
 
 // A small scene shared by the tests of this file.
-const std::string& SceneDir() {
-  static test::TempDir* dir = new test::TempDir();
-  static bool made = false;
-  if (!made) {
-    const test::CliResult r = RunCli({"synth", "arm", dir->file("s"), "--seed", "5", "--size",
+std::string SceneDir() {
+  bool created = false;
+  const test::TempDir& dir = test::SharedTempDir("cli-synth-score-scene", &created);
+  if (created) {
+    const test::CliResult r = RunCli({"synth", "arm", dir.file("s"), "--seed", "5", "--size",
                                       "160x120", "--background-frames", "3", "--standstill-frames",
                                       "3", "--frames", "20", "--motion", "swing", "--no-progress"});
     EXPECT_EQ(r.exit_code, 0) << r.err;
-    made = true;
   }
-  static const std::string path = dir->file("s");
-  return path;
+  return dir.file("s");
 }
 
 // Writes an angle file from the truth with a constant error on the upper arm.
@@ -65,7 +63,7 @@ TEST(CliSynthArm, HelpListsTheFlags) {
 }
 
 TEST(CliSynthArm, WritesTheSceneFolder) {
-  const std::string& dir = SceneDir();
+  const std::string dir = SceneDir();
   for (const char* f : {"scene.avi", "armlength.png", "background.png", "truth.tsv"}) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
   }
@@ -109,7 +107,7 @@ TEST(CliSynthArm, UnwritableFolderIsARuntimeFailure) {
 }
 
 TEST(CliScore, ReportsKnownErrorsAndDrawsThePlot) {
-  const std::string& dir = SceneDir();
+  const std::string dir = SceneDir();
   test::TempDir tmp;
   WriteAnglesFromTruth(dir + "/truth.tsv", tmp.file("a.tsv"), 3.0);
   const test::CliResult r =
@@ -131,7 +129,7 @@ TEST(CliScore, ReportsKnownErrorsAndDrawsThePlot) {
 }
 
 TEST(CliScore, BadInputsNameTheFileAndLine) {
-  const std::string& dir = SceneDir();
+  const std::string dir = SceneDir();
   test::TempDir tmp;
   WriteAnglesFromTruth(dir + "/truth.tsv", tmp.file("a.tsv"), 0.0);
   test::WriteFile(tmp.file("bad_truth.tsv"), std::string(synth::kTruthFileMagic) + "\nframe\n");

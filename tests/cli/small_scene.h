@@ -1,10 +1,9 @@
 // A small arm scene for the CLI tests: 160x120, 10 empty, 10 standstill and `motion_frames`
 // moving frames (scene.avi, background.png, armlength.png, truth.tsv), rendered once per seed
-// and kept until the test program exits.
+// and kept until the last test has run (SharedTempDir).
 #pragma once
 
-#include <map>
-#include <memory>
+#include <cstdint>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -15,21 +14,20 @@
 namespace armmimic::test {
 
 inline const std::string& SmallScene(std::uint64_t seed, int motion_frames) {
-  // Removed at exit with the map.
-  static std::map<std::pair<std::uint64_t, int>, std::unique_ptr<TempDir>> scenes;
-  std::unique_ptr<TempDir>& dir = scenes[{seed, motion_frames}];
-  if (!dir) {
-    dir = std::make_unique<TempDir>();
+  bool created = false;
+  const TempDir& dir = SharedTempDir(
+      "small-scene-" + std::to_string(seed) + "-" + std::to_string(motion_frames), &created);
+  if (created) {
     synth::ArmSceneOptions so;
     so.seed = seed;
     so.size = {160, 120};
     so.background_frames = 10;
     so.standstill_frames = 10;
     so.motion_frames = motion_frames;
-    const Status st = synth::WriteArmScene(so, dir->path(), {});
+    const Status st = synth::WriteArmScene(so, dir.path(), {});
     if (!st.ok()) ADD_FAILURE() << st.message();
   }
-  return dir->path();
+  return dir.path();
 }
 
 }  // namespace armmimic::test

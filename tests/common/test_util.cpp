@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -33,6 +34,24 @@ TempDir::~TempDir() {
   std::error_code ec;
   std::filesystem::remove_all(path_, ec);
 }
+
+namespace {
+
+std::map<std::string, std::unique_ptr<TempDir>>& SharedDirs() {
+  static std::map<std::string, std::unique_ptr<TempDir>> dirs;
+  return dirs;
+}
+
+}  // namespace
+
+const TempDir& SharedTempDir(const std::string& name, bool* created) {
+  std::unique_ptr<TempDir>& dir = SharedDirs()[name];
+  if (created) *created = !dir;
+  if (!dir) dir = std::make_unique<TempDir>();
+  return *dir;
+}
+
+void RemoveSharedTempDirs() { SharedDirs().clear(); }
 
 namespace {
 

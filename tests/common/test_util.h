@@ -8,7 +8,9 @@
 
 namespace armmimic::test {
 
-// A fresh folder under $TMPDIR, removed with its contents when the object goes.
+// A fresh folder under $TMPDIR, removed with its contents when the object goes. Every test
+// process runs with its own TMPDIR (test_main.cpp), and anything left there when the tests end
+// fails the run: a test removes what it makes, even when it fails.
 class TempDir {
  public:
   TempDir();
@@ -21,6 +23,13 @@ class TempDir {
  private:
   std::string path_;
 };
+
+// A folder shared by the tests of one process (a scene rendered once for several tests), made on
+// first use: `*created` says whether this call made it. Removed with its contents once the last
+// test has run, pass or fail (test_main.cpp), never by a static destructor.
+const TempDir& SharedTempDir(const std::string& name, bool* created = nullptr);
+// Removes every SharedTempDir; test_main.cpp calls it after the last test.
+void RemoveSharedTempDirs();
 
 struct CliResult {
   int exit_code = -1;

@@ -1,10 +1,11 @@
 #include "gui_fixture.h"
 
+#include <filesystem>
 #include <memory>
+#include <utility>
 
 #include <QApplication>
 #include <QSettings>
-#include <QStandardPaths>
 #include <QTest>
 #include <QTimer>
 #include <QWheelEvent>
@@ -22,20 +23,50 @@
 namespace armmimic::test {
 namespace {
 
-// Shared by every GUI test in the run; destroyed (and the folder removed) at exit.
+// Shared by every GUI test in the run; the folder is a SharedTempDir, removed after the last test.
 std::unique_ptr<GuiScenes> g_scenes;
-std::unique_ptr<TempDir> g_scene_dir;
+
+// QSettings of the user scope (the application's own and Qt's) go to `dir`.
+void SettingsIn(const std::string& dir) {
+  for (QSettings::Format format : {QSettings::NativeFormat, QSettings::IniFormat}) {
+    QSettings::setPath(format, QSettings::UserScope, QString::fromStdString(dir));
+  }
+}
+
+// What Qt, Mesa and the application would keep in the user's home (settings, Qt's and Mesa's
+// shader caches) goes to folders the tests own: the XDG base folders point into a SharedTempDir,
+// for this process and the programs it starts. Without a runtime folder Qt would make
+// $TMPDIR/runtime-$USER and leave it behind, so the tests give it one too (mode 0700, as Qt
+// requires).
+void KeepOutOfHome() {
+  namespace fs = std::filesystem;
+  const TempDir& home = SharedTempDir("gui-home");
+  for (const auto& [var, sub] : {std::pair<const char*, const char*>{"XDG_CONFIG_HOME", "config"},
+                                 {"XDG_CACHE_HOME", "cache"},
+                                 {"XDG_DATA_HOME", "data"},
+                                 {"XDG_STATE_HOME", "state"}}) {
+    fs::create_directories(home.file(sub));
+    qputenv(var, QByteArray::fromStdString(home.file(sub)));
+  }
+  if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
+    fs::create_directories(home.file("runtime"));
+    fs::permissions(home.file("runtime"), fs::perms::owner_all);
+    qputenv("XDG_RUNTIME_DIR", QByteArray::fromStdString(home.file("runtime")));
+  }
+}
 
 void EnsureApplication() {
   if (QApplication::instance()) return;
   if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+  KeepOutOfHome();
   static int argc = 1;
   static char name[] = "gui_tests";
   static char* argv[] = {name, nullptr};
   new QApplication(argc, argv);  // lives for the whole test run
-  QStandardPaths::setTestModeEnabled(true);
   QApplication::setOrganizationName("armmimic-tests");
   QApplication::setApplicationName("gui_tests");
+  // Never the user's settings, not even between tests (SetUp gives each test its own).
+  SettingsIn(SharedTempDir("gui-settings").path());
 }
 
 }  // namespace
@@ -43,10 +74,10 @@ void EnsureApplication() {
 void GuiTest::SetUpTestSuite() {
   EnsureApplication();
   if (g_scenes) return;
-  g_scene_dir = std::make_unique<TempDir>();
+  const TempDir& dir = SharedTempDir("gui-scenes");
   auto scenes = std::make_unique<GuiScenes>();
-  scenes->arm_dir = g_scene_dir->file("arm");
-  scenes->marker_dir = g_scene_dir->file("marker");
+  scenes->arm_dir = dir.file("arm");
+  scenes->marker_dir = dir.file("marker");
   synth::ArmSceneOptions arm;
   arm.seed = 7;
   arm.background_frames = scenes->background_frames;
@@ -65,11 +96,13 @@ void GuiTest::SetUpTestSuite() {
 
 void GuiTest::SetUp() {
   // Never touch the user's settings: a fresh settings folder for every test.
-  QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope,
-                     QString::fromStdString(tmp_.file("settings")));
-  QSettings::setPath(QSettings::IniFormat, QSettings::UserScope,
-                     QString::fromStdString(tmp_.file("settings")));
+  SettingsIn(tmp_.file("settings"));
   QSettings().clear();
+}
+
+void GuiTest::TearDown() {
+  // The test's folder goes with it: nothing may write settings there afterwards.
+  SettingsIn(SharedTempDir("gui-settings").path());
 }
 
 const GuiScenes& GuiTest::scenes() { return *g_scenes; }

@@ -46,6 +46,7 @@ class GuiTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite();
   void SetUp() override;
+  void TearDown() override;
   static const GuiScenes& scenes();
   // Pumps the event loop until `done` or the timeout; returns `done()`.
   static bool WaitUntil(const std::function<bool()>& done, int timeout_ms = 20000);

@@ -32,24 +32,23 @@ using gui::MimicPanel;
 
 // The shared scene has 40 frames of motion; the dead-man test needs time to hold and then move:
 // 8 s of swinging arm at 240x180, rendered once.
-const GuiScenes& LongScene() {
-  static TempDir* dir = new TempDir();
-  static GuiScenes* s = [] {
-    auto* g = new GuiScenes();
-    g->arm_dir = dir->file("long");
-    g->motion_frames = 240;
+GuiScenes LongScene() {
+  bool created = false;
+  GuiScenes g;
+  g.arm_dir = SharedTempDir("gui-long-scene", &created).file("long");
+  g.motion_frames = 240;
+  if (created) {
     synth::ArmSceneOptions o;
     o.seed = 9;
     o.size = {240, 180};
-    o.background_frames = g->background_frames;
-    o.standstill_frames = g->standstill_frames;
-    o.motion_frames = g->motion_frames;
+    o.background_frames = g.background_frames;
+    o.standstill_frames = g.standstill_frames;
+    o.motion_frames = g.motion_frames;
     o.motion = synth::ArmMotion::kSwing;
-    const Status st = synth::WriteArmScene(o, g->arm_dir, {});
+    const Status st = synth::WriteArmScene(o, g.arm_dir, {});
     EXPECT_TRUE(st.ok()) << st.message();
-    return g;
-  }();
-  return *s;
+  }
+  return g;
 }
 
 class MimicPanelTest : public GuiTest {
