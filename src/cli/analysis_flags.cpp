@@ -3,7 +3,6 @@
 #include "analysis_flags.h"
 #include "flag_for_key.h"
 
-#include <initializer_list>
 #include <map>
 #include <set>
 #include <utility>
@@ -130,22 +129,7 @@ void AnalysisFlags::Register(ArgParser& p) {
              if (st) params_.push_back(v);
              return st ? std::string() : st.message();
            });
-  for (const auto& [key, flag] : std::initializer_list<std::pair<const char*, const char*>>{
-           {"analysis.engine", "--engine"},
-           {"analysis.background", "--background"},
-           {"analysis.background_frames", "--background-frames"},
-           {"analysis.arm_length", "--arm-length"},
-           {"analysis.reference", "--reference"},
-           {"analysis.start", "--start"},
-           {"analysis.shoulder", "--shoulder"},
-           {"analysis.elbow", "--elbow"},
-           {"analysis.wrist", "--wrist"},
-           {"analysis.roi", "--roi"},
-           {"analysis.model", "--model"},
-           {"analysis.auto_calibrate", "--auto-calibrate"},
-           {"analysis.calibrate_side", "--side"}}) {
-    p.BindKey(key, flag);
-  }
+  for (const auto& [key, flag] : AnalysisInputFlags()) p.BindKey(key, flag);
   BindEngineKeys(p, BgsubOptionFields(), "bgsub");
   BindEngineKeys(p, LkOptionFields(), "lk");
   BindEngineKeys(p, MarkerOptionFields(), "marker");

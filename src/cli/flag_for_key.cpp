@@ -40,10 +40,8 @@ std::string FlagFromTables(const std::string& key) {
 
 }  // namespace
 
-std::string FlagForKey(const std::string& key) {
-  if (std::string flag = FlagFromTables(key); !flag.empty()) return flag;
-  static const std::map<std::string, std::string> flags = {
-      // The analysis inputs (AnalysisOptions).
+const std::vector<std::pair<std::string, std::string>>& AnalysisInputFlags() {
+  static const std::vector<std::pair<std::string, std::string>> flags = {
       {"analysis.engine", "--engine"},
       {"analysis.background", "--background"},
       {"analysis.background_frames", "--background-frames"},
@@ -56,7 +54,17 @@ std::string FlagForKey(const std::string& key) {
       {"analysis.roi", "--roi"},
       {"analysis.model", "--model"},
       {"analysis.auto_calibrate", "--auto-calibrate"},
-      {"analysis.side", "--side"},
+      {"analysis.calibrate_side", "--side"},
+  };
+  return flags;
+}
+
+std::string FlagForKey(const std::string& key) {
+  if (std::string flag = FlagFromTables(key); !flag.empty()) return flag;
+  for (const auto& [input, flag] : AnalysisInputFlags()) {
+    if (input == key) return flag;
+  }
+  static const std::map<std::string, std::string> flags = {
       // The send's starting point and the emulator's link.
       {"send.mode", "--resume/--restart"},
       {"send.resume", "--resume"},
