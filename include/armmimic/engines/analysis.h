@@ -96,6 +96,11 @@ Status EstimateBackground(const std::vector<std::string>& inputs, int start, int
 Status RunAnalysis(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
                    AnalysisSummary* summary);
 
+// Opens and checks every input of `options` without writing anything: the source (at least one
+// frame decodes), the model, the background and arm-length images, the engine's start, and, for
+// a file, that at least one frame is analysed. A live run calls it before it opens the port.
+Status CheckAnalysisInputs(const AnalysisOptions& options);
+
 // RunAnalysis writing the angle file at `output_path` (atomically). On cancel the rows so far
 // are kept in a complete file whose header says complete=no.
 Status AnalyzeToFile(const AnalysisOptions& options, const std::string& output_path,
