@@ -79,7 +79,9 @@ const char* kDescription =
     "frame: capture, analysis, planning, write and acknowledgement times), and prints a latency\n"
     "summary. Ctrl-C or SIGTERM stops cleanly: no new command, the one in flight is acknowledged,\n"
     "the angle file is kept (complete=no); a second one stops at once. Exit 0 when the input\n"
-    "ends, 1 when the link is lost, the controller refuses or is silent, or on an interrupt.\n";
+    "ends, 1 when the link is lost, the controller refuses or is silent, or on an interrupt.\n"
+    "Every input (video, model, images, profile, limits, output folders) is opened and checked\n"
+    "before the port: a bad one exits with nothing sent and no file written.\n";
 
 // What the flags say: the live run's options and the port.
 struct MimicSetup {
