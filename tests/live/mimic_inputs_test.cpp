@@ -126,5 +126,45 @@ TEST_F(MimicInputs, AGoodInputStillReachesTheController) {
   EXPECT_TRUE(std::ifstream(dir_.file("live.tsv")).good());
 }
 
+// send reads its program, profile, limits and journal before it opens the port too.
+constexpr const char* kProgram =
+    "; armmimic VAL program v1\n"
+    "SPEED 50\n"
+    "; t=0.000\n"
+    "DO MOVE #PPOINT(0.00,-90.00,0.00,0.00,0.00,0.00)\n"
+    "; t=1.000\n"
+    "DO MOVE #PPOINT(12.00,-80.00,-6.00,0.00,0.00,0.00)\n";
+
+TEST_F(MimicInputs, SendWithABadProgramProfileOrLimitTouchesNothing) {
+  test::WriteFile(dir_.file("p.val"), kProgram);
+  test::WriteFile(dir_.file("far.val"), std::string(kProgram) + "DO MOVE #PPOINT(0,0,0,0,0,999)\n");
+  test::WriteFile(dir_.file("bad.profile"), "no_such_key = 1\n");
+  const struct {
+    std::vector<std::string> args;
+    std::string named;
+  } cases[] = {
+      {{dir_.file("far.val")}, "far.val"},
+      {{dir_.file("p.val"), "--profile", dir_.file("bad.profile")}, "bad.profile"},
+      {{dir_.file("p.val"), "--limits", "J2=-100:-95"}, "p.val"},
+      {{dir_.file("p.val"), "--resume"}, "p.val.journal"},
+  };
+  for (const auto& c : cases) {
+    const std::set<std::string> before = Listing(dir_.path());
+    std::vector<std::string> args = {"-q", "send"};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    args.insert(args.end(), {"--port", dir_.file("puma")});
+    const test::CliResult r = test::RunCli(args);
+    EXPECT_TRUE(r.exit_code == 1 || r.exit_code == 2) << r.exit_code << " " << r.err;
+    EXPECT_NE(r.err.find(c.named), std::string::npos) << r.err;
+    EXPECT_EQ(server_->lines_received(), 0) << c.named;
+    EXPECT_EQ(Listing(dir_.path()), before) << c.named;
+  }
+  // The good program reaches the controller.
+  const test::CliResult r =
+      test::RunCli({"-q", "send", dir_.file("p.val"), "--port", dir_.file("puma")});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(server_->lines_received(), 0);
+}
+
 }  // namespace
 }  // namespace armmimic
