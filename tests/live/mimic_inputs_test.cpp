@@ -3,12 +3,14 @@
 #include <dirent.h>
 #include <sys/stat.h>
 
+#include <filesystem>
 #include <fstream>
 #include <set>
 
 #include <gtest/gtest.h>
 #include <opencv2/videoio.hpp>
 
+#include "armmimic/core/angle_file.h"
 #include "armmimic/core/image_io.h"
 #include "armmimic/sim/pty_server.h"
 #include "armmimic/synth/arm_scene.h"
@@ -124,6 +126,29 @@ TEST_F(MimicInputs, AGoodInputStillReachesTheController) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_GT(server_->lines_received(), 0);
   EXPECT_TRUE(std::ifstream(dir_.file("live.tsv")).good());
+}
+
+TEST_F(MimicInputs, ATruncatedVideoEndsTheRunWithExitOneAndAnIncompleteFile) {
+  synth::ArmSceneOptions so;
+  so.seed = 5;
+  so.size = {160, 120};
+  so.background_frames = kBackground;
+  so.standstill_frames = kStandstill;
+  synth::ArmSceneRenderer r(so);
+  WriteVideo("long.avi", kBackground + kStandstill + 90, r);
+  const std::string video = dir_.file("long.avi");
+  std::filesystem::resize_file(video, std::filesystem::file_size(video) / 2);
+  std::vector<std::string> args = {
+      "--no-progress", "mimic",           video, "--realtime",
+      "--port",        dir_.file("puma"), "-o",  dir_.file("live.tsv")};
+  for (const std::string& f : Bgsub(dir_.file("background.png"))) args.push_back(f);
+  const test::CliResult result = test::RunCli(args);
+  EXPECT_EQ(result.exit_code, 1) << result.err;
+  EXPECT_NE(result.err.find("long.avi: the video announces"), std::string::npos) << result.err;
+  AngleFile angles;
+  ASSERT_TRUE(ReadAngleFile(dir_.file("live.tsv"), &angles).ok());
+  EXPECT_FALSE(angles.complete);
+  EXPECT_FALSE(angles.rows.empty());
 }
 
 // send reads its program, profile, limits and journal before it opens the port too.
