@@ -73,6 +73,13 @@ own `--help` texts by `scripts/gen-cli-doc.sh`.
   exit code is 1. `send` stops the stream (its journal lets `--resume` continue); `puma-sim`
   prints its final joints and exits 0. Further signals while a command is stopping change
   nothing (GNU parallel sends SIGTERM more than once).
+- **Incomplete inputs.** A video that stops clearly short of the frame count its header
+  announces (more than max(2 frames, 1 %) of it), or whose read fails, is incomplete: `analyze`
+  keeps the rows read in a file marked `complete=no incomplete=REASON` and exits 1. Some
+  containers announce an estimate, so a smaller shortfall at the very end is only a warning.
+  `plan` and `send` warn when their angle file is marked `complete=no` (interrupted or
+  incomplete) and refuse it with `--strict`, exit 1: the flags are right, the file's content is
+  what is refused, as for any other bad file content.
 - **Repeating a run.** The header of an angle file records the engine, every engine setting
   under its `ENGINE.KEY` name (the one `--param` takes, changed or not) and the inputs besides
   the video (`background`, `background_frames`, `arm_length`, `reference`, `start`, `shoulder`,
@@ -89,7 +96,9 @@ own `--help` texts by `scripts/gen-cli-doc.sh`.
 `armmimic-cli analyze VIDEO... --output-dir DIR` (or `--list FILE`, one video per line) analyses
 each video on its own into `DIR/NAME.tsv` and writes `DIR/summary.tsv`: one line per video with
 `video`, `angles`, `frames`, `ok`, `lost`, `coverage` (ok / frames, 0..1), `seconds`, `status`
-(`ok`, `failed`, `interrupted`, `skipped`) and `error`. A failing video does not stop the others;
+(`ok`, `failed`, `incomplete`, `interrupted`, `skipped`) and `error`; `incomplete` is a
+truncated or damaged video whose rows were kept in a file marked `complete=no`. A failing video
+does not stop the others;
 the exit code is 0 only when every video was analysed, 1 otherwise, 2 for a usage error (found
 before any video runs). [docs/batch.md](batch.md) shows how to spread the videos over the cores
 of one machine or over many machines with GNU parallel or a Slurm job array.

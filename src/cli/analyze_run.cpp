@@ -58,7 +58,7 @@ std::string Source(const AnalysisOptions& o, const Outcome& r) {
 void Report(const AnalysisOptions& o, const std::string& output, const Outcome& r,
             const GlobalOptions& global) {
   const AnalysisSummary& s = r.summary;
-  if (s.EndedEarly()) {
+  if (s.EndedEarly() && s.incomplete.empty()) {
     // Not an error (every row written is valid), but the operator must know rows stop early.
     std::cerr << "armmimic-cli analyze: warning: " << Source(o, r) << ": the file announces "
               << s.video.frame_count << " frames but only " << s.last_frame + 1
@@ -118,6 +118,11 @@ int AnalyzeOne(const AnalysisOptions& o, const std::string& output, const Global
     return kExitFailure;
   }
   Report(o, output, r, global);
+  if (!r.summary.incomplete.empty()) {
+    std::cerr << "armmimic-cli analyze: " << Source(o, r) << ": " << r.summary.incomplete << "; "
+              << r.summary.frames << " rows kept in " << output << " (marked complete=no)\n";
+    return kExitFailure;
+  }
   return kExitOk;
 }
 
@@ -167,6 +172,12 @@ int AnalyzeBatch(const AnalysisOptions& options, const BatchPlan& plan,
                                            : std::to_string(r.summary.frames) + " rows kept in " +
                                                  plan.outputs[i] + " (marked complete=no)")
                 << "\n";
+    } else if (!r.summary.incomplete.empty()) {
+      row.status = "incomplete";
+      row.error = r.summary.incomplete + "; rows kept, marked complete=no";
+      Report(o, plan.outputs[i], r, global);
+      std::cerr << "armmimic-cli analyze: " << label << " " << Source(o, r) << ": "
+                << r.summary.incomplete << " (marked complete=no)\n";
     } else {
       row.status = "ok";
       if (r.summary.EndedEarly()) row.error = "the video ended early (truncated or damaged)";
@@ -183,6 +194,9 @@ int AnalyzeBatch(const AnalysisOptions& options, const BatchPlan& plan,
   if (!global.quiet || done < static_cast<int>(n)) {
     std::cerr << "analyze: " << done << " of " << n << " videos analysed";
     if (failed > 0) std::cerr << ", " << failed << " failed";
+    int incomplete = 0;
+    for (const SummaryRow& r : rows) incomplete += r.status == "incomplete" ? 1 : 0;
+    if (incomplete > 0) std::cerr << ", " << incomplete << " incomplete";
     if (InterruptGuard::interrupted()) std::cerr << ", " << InterruptGuard::Message();
     std::cerr << " -> " << plan.summary << "\n";
   }

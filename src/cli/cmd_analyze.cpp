@@ -69,8 +69,11 @@ constexpr const char* kDescription =
     "Batch: with --output-dir, each VIDEO (or each line of the --list file) is analysed on its\n"
     "own into DIR/NAME.tsv (NAME: the video's name without its extension), and DIR/summary.tsv\n"
     "gets one line per video: video, angles, frames, ok, lost, coverage (ok/frames), seconds,\n"
-    "status (ok, failed, interrupted, skipped) and error. A failing video does not stop the\n"
-    "others; exit 0 only when every video was analysed.\n"
+    "status (ok, failed, incomplete, interrupted, skipped) and error. A failing video does not\n"
+    "stop the others; exit 0 only when every video was analysed whole.\n"
+    "A video that stops more than max(2 frames, 1 %) short of the frame count it announces, or\n"
+    "whose read fails, keeps its rows in a file marked complete=no with the reason\n"
+    "(incomplete=...) and exits 1; a smaller shortfall (an estimated count) is a warning.\n"
     "No output may be one of the inputs (same file, also through a link): exit 2.\n"
     "Ctrl-C, SIGTERM or SIGHUP keeps the rows so far in a valid file marked complete=no\n"
     "(exit 1); a batch then writes its summary and starts no further video.\n";

@@ -1,8 +1,11 @@
 // armmimic-cli mimic (VIDEO --realtime | --camera N | --stream URL) --engine E ... --port DEVICE:
 // live mimicking (docs/live.md). The analysis flags are analyze's, the mapping and limit flags
 // plan's, the port flags send's; live::MimicRun does the work, as in the desktop application.
+#include <unistd.h>
 #include <QCoreApplication>
 #include <QTimer>
+
+#include <cerrno>
 #include <cmath>
 #include <ctime>
 #include <iostream>
@@ -59,7 +62,9 @@ const char* kDescription =
     "frame: capture, analysis, planning, write and acknowledgement times), and prints a latency\n"
     "summary. Ctrl-C or SIGTERM stops cleanly: no new command, the one in flight is acknowledged,\n"
     "the angle file is kept (complete=no); a second one stops at once. Exit 0 when the input\n"
-    "ends, 1 when the link is lost, the controller refuses or is silent, or on an interrupt.\n";
+    "ends, 1 when the link is lost, the controller refuses or is silent, or on an interrupt.\n"
+    "Every input (video, model, images, profile, limits, output folders) is opened and checked\n"
+    "before the port: a bad one exits with nothing sent and no file written.\n";
 
 // What the flags say: the live run's options and the port.
 struct MimicSetup {
@@ -154,6 +159,21 @@ std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* 
   return std::nullopt;
 }
 
+// The folder of every file the run writes exists and takes a new file, so the run cannot fail
+// there after the robot has been woken up.
+Status CheckOutputFolders(const MimicSetup& m) {
+  for (const std::string& path : {m.output, m.o.stream.journal_path, m.o.stream.latency_path}) {
+    if (path.empty()) continue;
+    const auto slash = path.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash + 1);
+    if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+      return Status::Error(path + ": cannot write in its folder " + dir + ": " +
+                           FileErrorText(errno));
+    }
+  }
+  return Status::Ok();
+}
+
 void Report(const live::MimicRun& run, const MimicSetup& m, const GlobalOptions& global) {
   std::cout << "mimic: " << run.stream().Summary().Describe() << std::endl;
   if (global.quiet) return;
@@ -173,6 +193,10 @@ void Report(const live::MimicRun& run, const MimicSetup& m, const GlobalOptions&
 int RunMimic(const std::vector<std::string>& args, const GlobalOptions& global) {
   MimicSetup m;
   if (auto code = ParseMimic(args, &m)) return *code;
+  // Every input is opened and checked before the port: a bad one reaches neither the robot nor a
+  // file (no angle file, journal or latency log is created).
+  if (const Status s = CheckAnalysisInputs(m.o.analysis); !s.ok()) return Fail(Worded(s));
+  if (const Status s = CheckOutputFolders(m); !s.ok()) return Fail(s.message());
   int argc = 1;
   char name[] = "armmimic-cli";
   char* argv[] = {name, nullptr};

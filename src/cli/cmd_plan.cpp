@@ -12,6 +12,7 @@
 #include "armmimic/robot/val_program.h"
 #include "command.h"
 #include "flag_for_key.h"
+#include "incomplete_input.h"
 #include "interrupt.h"
 #include "planner_flags.h"
 
@@ -64,6 +65,9 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   p.String("--mode", &mode, "stream|program",
            "stream DO MOVE lines, or upload a program and EXECUTE it (default: the profile's)");
   p.String("--program-name", &program_name, "NAME", "program name in program mode");
+  bool strict = false;
+  p.Flag("--strict", &strict,
+         "refuse an angle file marked complete=no (exit 1; without it: a warning)");
   PlannerFlags::BindKeys(p);
   if (auto code = p.Parse(args)) return *code;
 
@@ -111,6 +115,7 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
     std::cerr << "armmimic-cli plan: " << s.message() << "\n";
     return kExitFailure;
   }
+  if (auto code = CheckCompleteInput("plan", input[0], angles, strict)) return *code;
   const robot::SourceKind kind =
       source_kind == "auto"
           ? robot::DetectSourceKind(angles)

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <csignal>
+#include <fstream>
 #include <iostream>
 #include <optional>
 
@@ -21,6 +22,7 @@
 #include "armmimic/serial/serial_link.h"
 #include "command.h"
 #include "flag_for_key.h"
+#include "incomplete_input.h"
 #include "interrupt.h"
 #include "planner_flags.h"
 #include "port_flags.h"
@@ -37,6 +39,7 @@ struct SendOptions {
   bool restart = false;
   int resume_at = 0;
   bool list_ports = false;
+  bool strict = false;  // refuse an angle file marked complete=no
   std::string profile_path;
   double timeout_s = -1;
   double motion_timeout_s = -1;
@@ -127,6 +130,8 @@ std::optional<int> ParseSend(const std::vector<std::string>& args, SendOptions* 
   p.Int("--resume-at", &o->resume_at, "LINE",
         "continue from this file line (after checking the arm yourself)", 1);
   p.Flag("--list-ports", &o->list_ports, "list the serial ports found and exit");
+  p.Flag("--strict", &o->strict,
+         "refuse an angle file marked complete=no (exit 1; without it: a warning)");
   p.String("--profile", &o->profile_path, "FILE", "controller profile (docs/profiles/)");
   p.Double("--timeout", &o->timeout_s, "S",
            "seconds to wait for the prompt after a non-motion line (profile: prompt_timeout_s)");
@@ -243,9 +248,23 @@ int StreamToPort(const SendOptions& o, const robot::ControllerProfile& profile,
   return kExitOk;
 }
 
+// An angle file marked complete=no is sent with a warning, or refused with --strict. A VAL
+// program, or an angle file that does not read, is left to PrepareSend's messages.
+std::optional<int> CheckAngleInput(const SendOptions& o) {
+  std::ifstream in(o.inputs[0], std::ios::binary);
+  std::string first;
+  if (!std::getline(in, first) || first.find(kAngleFileMagic) == std::string::npos) {
+    return std::nullopt;
+  }
+  AngleFile angles;
+  if (!ReadAngleFile(o.inputs[0], &angles).ok()) return std::nullopt;
+  return CheckCompleteInput("send", o.inputs[0], angles, o.strict);
+}
+
 int RunSend(const std::vector<std::string>& args, const GlobalOptions& global) {
   SendOptions o;
   if (auto code = ParseSend(args, &o)) return *code;
+  if (auto code = CheckAngleInput(o)) return *code;
   robot::ControllerProfile profile;
   robot::SendSession session;
   if (const Status s = PrepareSend(o, &profile, &session); !s.ok()) return Fail(Worded(s));

@@ -318,7 +318,7 @@ Status AngleFileWriter::Write(const AngleRow& row) {
   return Status::Ok();
 }
 
-Status AngleFileWriter::Commit(bool complete) {
+Status AngleFileWriter::Commit(bool complete, const std::string& reason) {
   if (!impl_->open) return Status::Error("angle file is not open");
   impl_->open = false;
   if (complete) return impl_->file.Commit();
@@ -336,6 +336,7 @@ Status AngleFileWriter::Commit(bool complete) {
   if (!st) return st;
   AngleMeta meta = impl_->meta;
   meta.emplace_back("complete", "no");
+  if (!reason.empty()) meta.emplace_back("incomplete", reason);
   const std::string header =
       HeaderText(meta, impl_->file_column, impl_->confidence_column, impl_->signed_yaw_column);
   std::fputs(header.c_str(), marked.file());

@@ -58,6 +58,11 @@ bool MimicController::start(AnalysisOptions analysis, const robot::PlannerOption
     emit error(tr("Mimic live: cannot create a temporary folder: %1").arg(session_.errorString()));
     return false;
   }
+  // Every input is opened and checked before the controller is woken up (docs/live.md).
+  if (const Status checked = CheckAnalysisInputs(analysis); !checked) {
+    emit error(tr("Mimic live: %1").arg(QString::fromStdString(checked.message())));
+    return false;
+  }
   angles_path_ = QDir(session_.path()).filePath(QString("mimic-%1.tsv").arg(++runs_));
   live::MimicOptions o;
   o.analysis = std::move(analysis);

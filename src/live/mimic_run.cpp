@@ -144,6 +144,9 @@ void MimicRun::OnAnalysisDone(const Status& status, const AnalysisSummary& summa
     failure_ = status.message();
     failure_key_ = status.key();
   }
+  if (status && !summary.incomplete.empty() && failure_.empty()) {
+    failure_ = summary.video.path + ": " + summary.incomplete;
+  }
   if (status && !summary.cancelled && failure_.empty()) ended_normally_ = true;
   stream_.Stop(failure_);
   if (link_ && !dry_run_ && !link_done_) link_->EndStream();

@@ -101,22 +101,26 @@ TEST_F(CorruptInput, VideoTruncatedInsideItsHeader) {
   ExpectFailure(Analyze(video), 1, video, "cannot open as a video");
 }
 
-TEST_F(CorruptInput, VideoTruncatedMidStreamIsAnalysedUpToItsEnd) {
-  // The frames that are there are analysed; the file is complete and says how many rows.
+TEST_F(CorruptInput, VideoTruncatedMidStreamIsAnalysedUpToItsEndAndMarkedIncomplete) {
+  // The frames that are there are analysed and kept; a quarter of the frames missing is more
+  // than an estimated frame count explains, so the file is marked complete=no and exit is 1.
   const std::string full = test::ReadFile(Scene());
   const std::string video = dir_.file("half.avi");
   test::WriteFile(video, full.substr(0, full.size() * 3 / 4));
   const test::CliResult r = Analyze(video);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_EQ(r.exit_code, 1) << r.err;
   EXPECT_TRUE(Contains(r.err, "from half.avi")) << r.err;
-  // ... and the operator is told the rows stop early, naming the file and the last frame.
-  EXPECT_TRUE(Contains(r.err, "warning: " + video)) << r.err;
-  EXPECT_TRUE(Contains(r.err, "truncated or damaged video")) << r.err;
+  // ... and the operator is told the rows stop early, naming the file and the shortfall.
   AngleFile angles;
   ASSERT_TRUE(ReadAngleFile(out_, &angles).ok());
-  EXPECT_TRUE(angles.complete);
+  EXPECT_FALSE(angles.complete);
   EXPECT_GT(angles.rows.size(), 0u);
-  EXPECT_TRUE(Contains(r.err, "the rows stop at frame " + std::to_string(angles.rows.back().frame)))
+  const std::string reason = angles.Meta("incomplete");
+  EXPECT_TRUE(Contains(reason, "the video announces 30 frames, only ")) << reason;
+  EXPECT_TRUE(Contains(reason, "truncated or damaged")) << reason;
+  EXPECT_TRUE(Contains(r.err, video + ": " + reason)) << r.err;
+  EXPECT_TRUE(Contains(r.err, std::to_string(angles.rows.size()) + " rows kept in " + out_ +
+                                  " (marked complete=no)"))
       << r.err;
   EXPECT_LT(angles.rows.size(), 10u);  // fewer than the 10 motion frames of the whole file
   for (std::size_t i = 0; i < angles.rows.size(); ++i) {

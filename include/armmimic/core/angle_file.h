@@ -91,8 +91,9 @@ class AngleFileWriter {
               bool confidence_column = false, bool signed_yaw_column = false);
   Status Write(const AngleRow& row);
   // complete=false rewrites the header with complete=no (rows so far are kept); in a device or
-  // FIFO, which cannot be rewound, a last line kIncompleteMark says so instead.
-  Status Commit(bool complete = true);
+  // FIFO, which cannot be rewound, a last line kIncompleteMark says so instead. A `reason`
+  // (a truncated video) goes into the header as incomplete=REASON after complete=no.
+  Status Commit(bool complete = true, const std::string& reason = "");
   int rows_written() const;
 
  private:

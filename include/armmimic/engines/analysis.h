@@ -80,11 +80,24 @@ struct AnalysisSummary {
   int last_frame = -1;  // index of the last frame read, -1 if none
   AngleMeta meta;       // the angle file's meta line for this run
 
+  // Why the rows stop before the input's end (a read failed, or a video stopped clearly short of
+  // the frame count it announces: see ShortOfAnnounced); empty when the input was read whole.
+  // The angle file is then marked complete=no with this reason.
+  std::string incomplete;
+
   // True when a video stopped before the frame count its header announces (a truncated or
   // damaged file; the rows stop early). Not for cancelled runs, images or cameras.
   bool EndedEarly() const {
     return !cancelled && video.kind == SourceKind::kVideo && video.frame_count > 0 &&
            last_frame + 1 < video.frame_count;
+  }
+  // EndedEarly by more than the estimate some containers announce may be off by: more than
+  // max(2 frames, 1 % of the announced count) short (docs/angle-file.md). A smaller shortfall
+  // is only a warning.
+  bool ShortOfAnnounced() const {
+    if (!EndedEarly()) return false;
+    const int missing = video.frame_count - (last_frame + 1);
+    return missing > 2 && missing * 100 > video.frame_count;
   }
 };
 
@@ -95,6 +108,11 @@ Status EstimateBackground(const std::vector<std::string>& inputs, int start, int
 // Runs the whole analysis; measurements go to callbacks.on_measurement.
 Status RunAnalysis(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
                    AnalysisSummary* summary);
+
+// Opens and checks every input of `options` without writing anything: the source (at least one
+// frame decodes), the model, the background and arm-length images, the engine's start, and, for
+// a file, that at least one frame is analysed. A live run calls it before it opens the port.
+Status CheckAnalysisInputs(const AnalysisOptions& options);
 
 // RunAnalysis writing the angle file at `output_path` (atomically). On cancel the rows so far
 // are kept in a complete file whose header says complete=no.

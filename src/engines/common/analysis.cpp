@@ -271,7 +271,9 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
     }
     Status read_status;
     if (!source->Read(&frame, &read_status)) {
-      if (!read_status) return finish(read_status);
+      if (!read_status && done == 0) return finish(read_status);
+      // A read that fails after frames were analysed keeps their rows, marked incomplete.
+      if (!read_status) summary->incomplete = "a read failed: " + read_status.message();
       break;
     }
     const auto captured = pacer.Wait(frame, callbacks.cancel);
@@ -292,6 +294,11 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
       ++setup;
     }
     if (callbacks.on_progress) callbacks.on_progress(done, total);
+  }
+  if (summary->incomplete.empty() && summary->ShortOfAnnounced()) {
+    summary->incomplete = "the video announces " + std::to_string(info.frame_count) +
+                          " frames, only " + std::to_string(summary->last_frame + 1) +
+                          " could be read (truncated or damaged)";
   }
   if (!summary->cancelled && summary->frames == 0 && setup > 0) {
     return finish(Status::Error(
@@ -466,7 +473,7 @@ Status AnalyzeToFile(const AnalysisOptions& options, const std::string& output_p
       [&](const ArmMeasurement& m) { return writer.Write(m.ToRow()); }, summary);
   if (!st) return st;
   if (summary->meta.empty()) return Status::Ok();  // cancelled before the file was opened
-  return writer.Commit(!summary->cancelled);
+  return writer.Commit(!summary->cancelled && summary->incomplete.empty(), summary->incomplete);
 }
 
 }  // namespace armmimic
