@@ -10,6 +10,8 @@ if (($# == 0)); then
 fi
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/armmimic-clean-tmp.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
+# Open like /tmp (sticky, everyone may enter): some tests run the program as another user.
+chmod 1777 "$tmp"
 rc=0
 TMPDIR="$tmp" "$@" || rc=$?
 left=$(find "$tmp" -mindepth 1 -maxdepth 3 | sort)

@@ -2,9 +2,31 @@
 #include <iostream>
 
 #include "command.h"
+#include "flag_for_key.h"
+#include "interrupt.h"
+#include "progress.h"
 #include "synth_commands.h"
 
 namespace armmimic::cli {
+
+int WriteSceneWithProgress(const std::string& kind, int total, const GlobalOptions& global,
+                           const SceneWriter& write, const std::string& interrupted_note) {
+  InterruptGuard guard;
+  ProgressBar bar("synth " + kind, total, global.ShowProgress());
+  const Status st = write([&bar](int done, int) { bar.Update(done); }, InterruptGuard::flag());
+  bar.Finish();
+  if (!st.ok() && InterruptGuard::interrupted()) {
+    std::cerr << "synth " << kind << ": " << InterruptGuard::Message() << "; " << interrupted_note
+              << "\n";
+    return kExitFailure;
+  }
+  if (!st.ok()) {
+    std::cerr << "armmimic-cli synth " << kind << ": " << Worded(st) << "\n";
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
 namespace {
 
 int RunSynth(const std::vector<std::string>& args, const GlobalOptions& global) {

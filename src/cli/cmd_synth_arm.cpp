@@ -6,8 +6,6 @@
 #include "armmimic/synth/arm_scene.h"
 #include "armmimic/synth/random_arm_scene.h"
 #include "flag_for_key.h"
-#include "interrupt.h"
-#include "progress.h"
 #include "synth_commands.h"
 
 namespace armmimic::cli {
@@ -31,20 +29,15 @@ const char* const kDrawnFlags[] = {"--fps",
 int WriteRandom(const synth::RandomArmSceneOptions& o, const std::string& outdir,
                 const GlobalOptions& global) {
   const synth::RandomArmScene scene(o);
-  InterruptGuard guard;
-  ProgressBar bar("synth arm", scene.frame_count(), global.ShowProgress());
-  const Status st = synth::WriteSceneFolder(
-      scene, {"MJPG", scene.params().jpeg_quality}, synth::RandomSceneMeta(scene), outdir,
-      [&bar](int done, int) { bar.Update(done); }, InterruptGuard::flag());
-  bar.Finish();
-  if (!st.ok() && InterruptGuard::interrupted()) {
-    std::cerr << "synth arm: " << InterruptGuard::Message() << "; " << outdir
-              << " unchanged (the scene is written whole or not at all)\n";
-    return kExitFailure;
-  }
-  if (!st.ok()) {
-    std::cerr << "armmimic-cli synth arm: " << Worded(st) << "\n";
-    return kExitFailure;
+  if (const int code = WriteSceneWithProgress(
+          "arm", scene.frame_count(), global,
+          [&](const auto& progress, const auto* cancel) {
+            return synth::WriteSceneFolder(scene, {"MJPG", scene.params().jpeg_quality},
+                                           synth::RandomSceneMeta(scene), outdir, progress, cancel);
+          },
+          outdir + " unchanged (the scene is written whole or not at all)");
+      code != kExitOk) {
+    return code;
   }
   if (!global.quiet) {
     const synth::RandomSceneParams& p = scene.params();
@@ -148,19 +141,14 @@ int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& globa
   o.codec = codec;
   if (Status st = o.Check(); !st.ok()) return p.UsageError(Worded(st));
 
-  InterruptGuard guard;
-  ProgressBar bar("synth arm", o.frame_count(), global.ShowProgress());
-  const Status st = synth::WriteArmScene(
-      o, outdir[0], [&bar](int done, int) { bar.Update(done); }, InterruptGuard::flag());
-  bar.Finish();
-  if (!st.ok() && InterruptGuard::interrupted()) {
-    std::cerr << "synth arm: " << InterruptGuard::Message() << "; " << outdir[0]
-              << " unchanged (the scene is written whole or not at all)\n";
-    return kExitFailure;
-  }
-  if (!st.ok()) {
-    std::cerr << "armmimic-cli synth arm: " << Worded(st) << "\n";
-    return kExitFailure;
+  if (const int code = WriteSceneWithProgress(
+          "arm", o.frame_count(), global,
+          [&](const auto& progress, const auto* cancel) {
+            return synth::WriteArmScene(o, outdir[0], progress, cancel);
+          },
+          outdir[0] + " unchanged (the scene is written whole or not at all)");
+      code != kExitOk) {
+    return code;
   }
   if (!global.quiet) {
     std::cerr << "synth arm: " << o.frame_count() << " frames (" << o.background_frames

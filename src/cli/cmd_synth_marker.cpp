@@ -5,8 +5,6 @@
 #include "args.h"
 #include "armmimic/synth/marker_scene.h"
 #include "flag_for_key.h"
-#include "interrupt.h"
-#include "progress.h"
 #include "synth_commands.h"
 
 namespace armmimic::cli {
@@ -59,19 +57,14 @@ int RunSynthMarker(const std::vector<std::string>& args, const GlobalOptions& gl
   if (auto code = p.Parse(args)) return *code;
   if (Status st = o.Check(); !st.ok()) return p.UsageError(Worded(st));
 
-  InterruptGuard guard;
-  ProgressBar bar("synth marker", o.views, global.ShowProgress());
-  const Status st = synth::WriteMarkerScene(
-      o, outdir[0], [&bar](int done, int) { bar.Update(done); }, InterruptGuard::flag());
-  bar.Finish();
-  if (!st.ok() && InterruptGuard::interrupted()) {
-    std::cerr << "synth marker: " << InterruptGuard::Message() << "; " << outdir[0]
-              << " has no truth.tsv (not a whole scene)\n";
-    return kExitFailure;
-  }
-  if (!st.ok()) {
-    std::cerr << "armmimic-cli synth marker: " << Worded(st) << "\n";
-    return kExitFailure;
+  if (const int code = WriteSceneWithProgress(
+          "marker", o.views, global,
+          [&](const auto& progress, const auto* cancel) {
+            return synth::WriteMarkerScene(o, outdir[0], progress, cancel);
+          },
+          outdir[0] + " has no truth.tsv (not a whole scene)");
+      code != kExitOk) {
+    return code;
   }
   if (!global.quiet) {
     std::cout << "wrote " << outdir[0] << "/reference.png, " << o.views << " views in " << outdir[0]

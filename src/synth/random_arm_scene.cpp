@@ -1,6 +1,7 @@
 // RandomArmScene: a scene drawn from a seed and a tier (random_scene_params.cpp), its motion
 // (random_motion.cpp) and room (random_room.cpp), rendered frame by frame.
 #include "armmimic/synth/random_arm_scene.h"
+#include "armmimic/core/text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,13 +28,8 @@ const char* SceneTierName(SceneTier tier) {
 }
 
 bool ParseSceneTier(const std::string& name, SceneTier* out) {
-  for (SceneTier t : {SceneTier::kEasy, SceneTier::kMedium, SceneTier::kHard}) {
-    if (name == SceneTierName(t)) {
-      *out = t;
-      return true;
-    }
-  }
-  return false;
+  return ParseByName(name, {SceneTier::kEasy, SceneTier::kMedium, SceneTier::kHard}, SceneTierName,
+                     out);
 }
 
 Status RandomArmSceneOptions::Check() const {

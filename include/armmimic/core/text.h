@@ -3,6 +3,7 @@
 // and the percent-encoding of meta values.
 #pragma once
 
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -35,5 +36,18 @@ std::string PercentDecode(const std::string& value);
 // The system's text for an errno value ("No such file or directory"), the same as std::strerror
 // gives but safe to call from several threads at once (analyses run on worker threads).
 std::string ErrnoText(int err);
+
+// The value among `values` whose name (`name_of(value)`) is `name`, into *out; false (and *out
+// unchanged) when none is. For enums whose names are their one spelling in files and flags.
+template <typename E, typename NameOf>
+bool ParseByName(const std::string& name, std::initializer_list<E> values, NameOf name_of, E* out) {
+  for (E v : values) {
+    if (name == name_of(v)) {
+      *out = v;
+      return true;
+    }
+  }
+  return false;
+}
 
 }  // namespace armmimic

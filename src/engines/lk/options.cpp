@@ -2,6 +2,7 @@
 // and the one rule a range cannot say (an odd window).
 #include <string>
 
+#include "armmimic/core/text.h"
 #include "armmimic/engines/lk_options.h"
 #include "armmimic/engines/option_fields.h"
 
@@ -20,13 +21,8 @@ const char* LkArmSideName(LkArmSide side) {
 }
 
 bool ParseLkArmSide(const std::string& name, LkArmSide* out) {
-  for (LkArmSide s : {LkArmSide::kAuto, LkArmSide::kLeft, LkArmSide::kRight}) {
-    if (name == LkArmSideName(s)) {
-      *out = s;
-      return true;
-    }
-  }
-  return false;
+  return ParseByName(name, {LkArmSide::kAuto, LkArmSide::kLeft, LkArmSide::kRight}, LkArmSideName,
+                     out);
 }
 
 Status LkOptions::Check() const {

@@ -2,6 +2,7 @@
 // and the one rule a range cannot say (no arm look between 0 and 1).
 #include "armmimic/engines/pose_options.h"
 
+#include "armmimic/core/text.h"
 #include "armmimic/engines/option_fields.h"
 
 namespace armmimic {
@@ -19,13 +20,7 @@ const char* PoseSideName(PoseSide side) {
 }
 
 bool ParsePoseSide(const std::string& name, PoseSide* out) {
-  for (PoseSide s : {PoseSide::kAuto, PoseSide::kLeft, PoseSide::kRight}) {
-    if (name == PoseSideName(s)) {
-      *out = s;
-      return true;
-    }
-  }
-  return false;
+  return ParseByName(name, {PoseSide::kAuto, PoseSide::kLeft, PoseSide::kRight}, PoseSideName, out);
 }
 
 Status PoseOptions::Check() const {
