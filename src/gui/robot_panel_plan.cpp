@@ -14,7 +14,7 @@
 #include <QTableWidget>
 
 #include "arm_view_3d.h"
-#include "armmimic/core/atomic_file.h"
+#include "armmimic/core/output_file.h"
 #include "recent_files.h"
 #include "robot_option_keys.h"
 #include "robot_panel.h"
@@ -291,7 +291,7 @@ bool RobotPanel::exportVal(const QString& path) {
   }
   std::string text;
   st = plan_.ValText(profile_, &text);
-  if (st) st = WriteFileAtomically(path.toStdString(), text);
+  if (st) st = WriteOutputFile(path.toStdString(), text);
   if (!st) {
     emit errorOccurred(QString::fromStdString(st.message()));
     return false;

@@ -61,7 +61,7 @@ class Child : public test::Child {
   }
 };
 
-// The temporary AtomicFile makes beside `target` (".<name>.XXXXXX"), if any.
+// The temporary OutputFile makes beside `target` (".<name>.armmimic-tmp.XXXXXX"), if any.
 std::string TempBeside(const std::string& target) {
   const fs::path t(target);
   const std::string prefix = "." + t.filename().string() + ".";
