@@ -51,20 +51,6 @@ std::string AnalysisFlags::ParamList() {
   return out;
 }
 
-namespace {
-
-// Binds every row of an engine table that names a flag to that flag: "bgsub.threshold" ->
-// --threshold.
-template <typename O>
-void BindEngineKeys(ArgParser& p, const std::vector<OptionField<O>>& fields,
-                    const std::string& engine) {
-  for (const auto& f : fields) {
-    if (!f.flag.empty()) p.BindKey(engine + "." + f.key, f.flag);
-  }
-}
-
-}  // namespace
-
 void AnalysisFlags::Register(ArgParser& p) {
   AnalysisOptions& f = f_;
   p.String("--engine", &engine_name_, "NAME", "bgsub, lk, marker or pose (required)");
@@ -129,11 +115,6 @@ void AnalysisFlags::Register(ArgParser& p) {
              if (st) params_.push_back(v);
              return st ? std::string() : st.message();
            });
-  for (const auto& [key, flag] : AnalysisInputFlags()) p.BindKey(key, flag);
-  BindEngineKeys(p, BgsubOptionFields(), "bgsub");
-  BindEngineKeys(p, LkOptionFields(), "lk");
-  BindEngineKeys(p, MarkerOptionFields(), "marker");
-  BindEngineKeys(p, PoseOptionFields(), "pose");
 }
 
 std::optional<int> AnalysisFlags::ParseEngine(const ArgParser& p, EngineKind* kind) const {

@@ -2,7 +2,7 @@
 // batch) and `mimic` share (--engine, --background, --shoulder, ..., --param). The flag values
 // are kept apart from the options they apply to, so `analyze --params-from` can lay only the
 // flags given over a recorded run; both commands check and apply them the same way, with the
-// same messages. Each flag is bound to the key of the setting it sets (ArgParser::FlagForKey).
+// same messages. An error about a setting names its flag through FlagForKey (flag_for_key.h).
 #pragma once
 
 #include <map>

@@ -160,22 +160,6 @@ const ArgParser::Option* ArgParser::FindOption(const std::string& name) const {
 
 bool ArgParser::Given(const std::string& long_name) const { return given_.count(long_name) > 0; }
 
-void ArgParser::BindKey(const std::string& key, const std::string& flag) {
-  const Option* o = FindOption(flag);
-  if (!o) throw std::logic_error("ArgParser::BindKey: " + flag + " is not registered");
-  flag_of_key_[key] = LongName(o->names);
-}
-
-std::string ArgParser::FlagForKey(const std::string& key) const {
-  const auto it = flag_of_key_.find(key);
-  return it == flag_of_key_.end() ? std::string() : it->second;
-}
-
-std::string ArgParser::HelpOf(const std::string& flag) const {
-  const Option* o = FindOption(flag);
-  return o ? o->help : std::string();
-}
-
 int ArgParser::UsageError(const std::string& message) const {
   std::cerr << "armmimic-cli " << command_ << ": " << message << "\n"
             << "Try 'armmimic-cli " << command_ << " --help'.\n";

@@ -4,7 +4,6 @@
 
 #include <cstdint>
 #include <functional>
-#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -39,14 +38,6 @@ class ArgParser {
   std::optional<int> Parse(const std::vector<std::string>& args);
   bool Given(const std::string& long_name) const;  // e.g. Given("--threshold")
 
-  // The setting `key` ("planner.cutoff_hz", a row of an option table) is set by the registered
-  // flag `flag`; several keys may share one flag. FlagForKey names the flag of a key ("" when
-  // none), so a Status about a key is reported in the command line's words.
-  void BindKey(const std::string& key, const std::string& flag);
-  std::string FlagForKey(const std::string& key) const;
-  // The help line of a registered flag (any of its names), or "" when there is no such flag.
-  std::string HelpOf(const std::string& flag) const;
-
   std::string Help() const;
   // Prints "armmimic-cli <command>: <message>" and the --help hint; returns 2.
   int UsageError(const std::string& message) const;
@@ -70,7 +61,6 @@ class ArgParser {
   int positional_min_ = 0;
   int positional_max_ = 0;
   std::set<std::string> given_;
-  std::map<std::string, std::string> flag_of_key_;
 };
 
 // "X,Y" -> point; "X,Y,W,H" -> rectangle. Return an error text or "".

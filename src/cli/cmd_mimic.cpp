@@ -126,7 +126,6 @@ std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* 
   planner_flags.RegisterLimits(p);
   p.Double("--stale-after", &o.stream.stale_after_s, "S",
            "hold the robot when no frame was measured for this long (default 0.2)");
-  PlannerFlags::BindKeys(p);
   if (auto code = p.Parse(args)) return code;
   if (auto code = PickInput(p, videos, camera, stream_url, realtime, &o.analysis)) return code;
   if (auto code = analysis_flags.Finish(p, &o.analysis)) return code;

@@ -68,7 +68,6 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   bool strict = false;
   p.Flag("--strict", &strict,
          "refuse an angle file marked complete=no (exit 1; without it: a warning)");
-  PlannerFlags::BindKeys(p);
   if (auto code = p.Parse(args)) return *code;
 
   if (output.empty()) return p.UsageError("-o/--output: the VAL program to write is required");

@@ -141,7 +141,6 @@ std::optional<int> ParseSend(const std::vector<std::string>& args, SendOptions* 
            [&](const std::string& v) { return robot::ParseLimitsOverride(v, &o->limits); });
   p.Custom("--speed-limit", "DEG_S", "joint speed limits, one value or six",
            [&](const std::string& v) { return robot::ParseSpeedLimits(v, &o->limits); });
-  PlannerFlags::BindKeys(p);
   if (auto code = p.Parse(args)) return code;
   if (o->list_ports) return ListPorts();
   if (o->inputs.empty()) return p.UsageError("missing the angle file or VAL program to send");

@@ -7,23 +7,6 @@
 #include "armmimic/robot/option_tables.h"
 
 namespace armmimic::cli {
-namespace {
-
-template <typename O>
-void BindTable(ArgParser& p, const std::vector<OptionField<O>>& fields, const std::string& table) {
-  for (const auto& f : fields) {
-    if (!f.flag.empty() && !p.HelpOf(f.flag).empty()) p.BindKey(table + "." + f.key, f.flag);
-  }
-}
-
-}  // namespace
-
-void PlannerFlags::BindKeys(ArgParser& p) {
-  BindTable(p, robot::PlannerOptionFields(), "planner");
-  BindTable(p, robot::MappingOptionFields(), "mapping");
-  BindTable(p, robot::LimitsOptionFields(), "limits");
-}
-
 void PlannerFlags::RegisterMapping(ArgParser& p, const std::function<void()>& more) {
   for (int j = 0; j < 3; ++j) {
     const std::string joint = "j" + std::to_string(j + 1);

@@ -26,10 +26,6 @@ class PlannerFlags {
   // --limits, --speed-limit, --clamp.
   void RegisterLimits(ArgParser& p);
 
-  // Binds every planner, mapping and limits key whose flag `p` has to that flag
-  // (ArgParser::FlagForKey); call once every flag is registered.
-  static void BindKeys(ArgParser& p);
-
   // After Parse: the texts of --limits, --speed-limit, --hold, --j2/j3-source. Exit code of a
   // usage error, naming the flag.
   std::optional<int> ParseTexts(const ArgParser& p);

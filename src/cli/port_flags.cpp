@@ -28,7 +28,6 @@ void AddPortFlags(ArgParser& p, serial::PortSettings* port) {
       p.Custom(row.flag, row.key == "port" ? "DEVICE" : "P", help,
                [f, port](const std::string& v) { return f->parse(v, port); });
     }
-    p.BindKey("port." + row.key, row.flag);
   }
 }
 
