@@ -26,18 +26,7 @@ std::string Rows(const std::string& path) {
   return rows;
 }
 
-std::vector<std::string> BgsubFlags() {
-  return {"--engine",
-          "bgsub",
-          "--background",
-          Scene() + "/background.png",
-          "--arm-length",
-          Scene() + "/armlength.png",
-          "--start",
-          "10",
-          "--standstill-frames",
-          "10"};
-}
+std::vector<std::string> BgsubFlags() { return test::SmallSceneBgsubFlags(Scene()); }
 
 TEST(CliParamsFrom, RepeatsTheRunRowForRowAndFlagsOverrideIt) {
   test::TempDir dir;

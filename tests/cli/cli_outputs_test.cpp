@@ -55,14 +55,6 @@ AngleFile ParseAngles(const std::string& text) {
   return file;
 }
 
-std::string ReadAll(int fd) {
-  std::string out;
-  char buf[4096];
-  ssize_t n;
-  while ((n = ::read(fd, buf, sizeof buf)) > 0) out.append(buf, static_cast<std::size_t>(n));
-  return out;
-}
-
 TEST(CliOutputs, AnalyzeWritesThroughASymlinkAndKeepsTheLink) {
   test::TempDir dir;
   fs::create_directory(dir.file("store"));
@@ -90,13 +82,7 @@ TEST(CliOutputs, AnalyzeIntoAFifoHandsTheReaderTheWholeFile) {
   test::TempDir dir;
   const std::string fifo = dir.file("angles.fifo");
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  auto reader = std::async(std::launch::async, [&] {
-    const int fd = ::open(fifo.c_str(), O_RDONLY);
-    if (fd < 0) return std::string();
-    std::string got = ReadAll(fd);
-    ::close(fd);
-    return got;
-  });
+  auto reader = test::ReadFifoInBackground(fifo);
   const test::CliResult r = test::RunCli(Analyze(Scene() + "/scene.avi", fifo));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string received = reader.get();

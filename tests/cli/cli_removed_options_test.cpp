@@ -20,21 +20,10 @@ bool Contains(const std::string& text, const std::string& part) {
 const std::string& Scene() { return test::SmallScene(9, 30); }
 
 std::vector<std::string> Analyze(const std::string& out) {
-  return {"-q",
-          "analyze",
-          Scene() + "/scene.avi",
-          "-o",
-          out,
-          "--engine",
-          "bgsub",
-          "--background",
-          Scene() + "/background.png",
-          "--arm-length",
-          Scene() + "/armlength.png",
-          "--start",
-          "10",
-          "--standstill-frames",
-          "10"};
+  std::vector<std::string> args = {"-q", "analyze", Scene() + "/scene.avi", "-o", out};
+  const std::vector<std::string> flags = test::SmallSceneBgsubFlags(Scene());
+  args.insert(args.end(), flags.begin(), flags.end());
+  return args;
 }
 
 TEST(CliRemovedOptions, ParamRefusesThemNamingWhatReplacedThem) {

@@ -19,18 +19,7 @@ bool Contains(const std::string& text, const std::string& part) {
 
 const std::string& Scene() { return test::SmallScene(11, 140); }
 
-std::vector<std::string> BgsubFlags() {
-  return {"--engine",
-          "bgsub",
-          "--background",
-          Scene() + "/background.png",
-          "--arm-length",
-          Scene() + "/armlength.png",
-          "--start",
-          "10",
-          "--standstill-frames",
-          "10"};
-}
+std::vector<std::string> BgsubFlags() { return test::SmallSceneBgsubFlags(Scene()); }
 
 class CliTruncated : public ::testing::Test {
  protected:

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -28,6 +29,21 @@ inline const std::string& SmallScene(std::uint64_t seed, int motion_frames) {
     if (!st.ok()) ADD_FAILURE() << st.message();
   }
   return dir.path();
+}
+
+// The thesis protocol's bgsub flags for a small scene in folder `scene`: its background and
+// arm-length images, the standstill from frame 10 for 10 frames.
+inline std::vector<std::string> SmallSceneBgsubFlags(const std::string& scene) {
+  return {"--engine",
+          "bgsub",
+          "--background",
+          scene + "/background.png",
+          "--arm-length",
+          scene + "/armlength.png",
+          "--start",
+          "10",
+          "--standstill-frames",
+          "10"};
 }
 
 }  // namespace armmimic::test

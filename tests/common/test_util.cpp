@@ -307,4 +307,22 @@ std::string SourcePath(const std::string& relative) {
   return std::string(ARMMIMIC_SOURCE_DIR) + "/" + relative;
 }
 
+std::string ReadAll(int fd) {
+  std::string out;
+  char buf[4096];
+  ssize_t n;
+  while ((n = ::read(fd, buf, sizeof buf)) > 0) out.append(buf, static_cast<std::size_t>(n));
+  return out;
+}
+
+std::future<std::string> ReadFifoInBackground(const std::string& path) {
+  return std::async(std::launch::async, [path] {
+    const int fd = ::open(path.c_str(), O_RDONLY);
+    if (fd < 0) return "open failed: " + path;
+    std::string got = ReadAll(fd);
+    ::close(fd);
+    return got;
+  });
+}
+
 }  // namespace armmimic::test

@@ -1,6 +1,7 @@
 // Helpers shared by the test suites: temporary folders and running armmimic-cli.
 #pragma once
 
+#include <future>
 #include <locale>
 #include <memory>
 #include <string>
@@ -119,5 +120,11 @@ class CommaDecimalLocale {
 std::string ReadFile(const std::string& path);
 void WriteFile(const std::string& path, const std::string& bytes);
 std::string SourcePath(const std::string& relative);  // path inside the source tree
+
+// Everything `fd` yields until end of file.
+std::string ReadAll(int fd);
+// A reader of the FIFO `path` on its own thread: it opens the FIFO (which lets a writer's open
+// go through), reads to the end and returns the bytes ("open failed: PATH" if it cannot open).
+std::future<std::string> ReadFifoInBackground(const std::string& path);
 
 }  // namespace armmimic::test

@@ -50,15 +50,6 @@ std::vector<std::string> Entries(const std::string& dir) {
   return names;
 }
 
-// Reads everything from `fd` until end of file.
-std::string ReadAll(int fd) {
-  std::string out;
-  char buf[4096];
-  ssize_t n;
-  while ((n = ::read(fd, buf, sizeof buf)) > 0) out.append(buf, static_cast<std::size_t>(n));
-  return out;
-}
-
 TEST(OutputFile, ANewOrRegularFileIsReplacedWholeKeepingItsMode) {
   test::TempDir dir;
   const std::string path = dir.file("a.tsv");
@@ -107,13 +98,7 @@ TEST(OutputFile, AFifoWithAReaderGetsTheBytesAndStaysAFifo) {
   test::TempDir dir;
   const std::string fifo = dir.file("pipe");
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  auto reader = std::async(std::launch::async, [&] {
-    const int fd = ::open(fifo.c_str(), O_RDONLY);
-    if (fd < 0) return std::string("open failed");
-    std::string got = ReadAll(fd);
-    ::close(fd);
-    return got;
-  });
+  auto reader = test::ReadFifoInBackground(fifo);
   std::string bytes;
   for (int i = 0; i < 5000; ++i) bytes += "row " + std::to_string(i) + "\n";  // > a pipe's buffer
   const Status st = WriteOutputFile(fifo, bytes);
@@ -129,13 +114,7 @@ TEST(OutputFile, AnAngleFileEndedEarlyInAFifoIsMarkedIncompleteByItsLastLine) {
   test::TempDir dir;
   const std::string fifo = dir.file("pipe");
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  auto reader = std::async(std::launch::async, [&] {
-    const int fd = ::open(fifo.c_str(), O_RDONLY);
-    if (fd < 0) return std::string("open failed");
-    std::string got = ReadAll(fd);
-    ::close(fd);
-    return got;
-  });
+  auto reader = test::ReadFifoInBackground(fifo);
   AngleFileWriter writer;
   ASSERT_TRUE(writer.Open(fifo, {{"engine", "lk"}}, false).ok());
   AngleRow row;
