@@ -135,16 +135,19 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
     return p.UsageError(st.message());
   }
   AnalysisOptions o;
+  RunRecordNotes recorded;
   if (!a.params_from.empty()) {
-    std::vector<std::string> ignored;
-    if (Status st = ReadRunRecord(a.params_from, &o, &ignored); !st) {
+    if (Status st = ReadRunRecord(a.params_from, &o, &recorded); !st) {
+      // A key the header must not hold is refused like an unknown flag; a file that cannot be
+      // read, or a value out of range, is a failure of the file.
+      if (recorded.bad_keys) return p.UsageError("--params-from " + st.message());
       std::cerr << "armmimic-cli analyze: --params-from " << st.message() << "\n";
       return kExitFailure;
     }
     const std::string& engine = a.analysis.engine_name();
-    if (!ignored.empty()) {
+    if (!recorded.ignored.empty()) {
       std::cerr << "armmimic-cli analyze: " << a.params_from << ": "
-                << DescribeIgnoredEngineOptions(ignored) << "\n";
+                << DescribeIgnoredEngineOptions(recorded.ignored) << "\n";
     }
     EngineKind given;
     if (p.Given("--engine") && ParseEngineKind(engine, &given) && given != o.engine.kind) {
@@ -158,6 +161,11 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
   if (const std::string e = a.analysis.CheckFor(p, o); !e.empty()) return p.UsageError(e);
   a.analysis.ApplyGiven(p, &o);
   o.inputs = a.inputs;
+  // A recorded image found nowhere, unless a flag given replaced it.
+  if (Status st = CheckRecordedPathsFound(o, recorded.missing, a.params_from); !st) {
+    std::cerr << "armmimic-cli analyze: --params-from " << st.message() << "\n";
+    return kExitFailure;
+  }
 
   std::vector<std::string> videos = a.inputs;
   if (!a.list.empty()) {
