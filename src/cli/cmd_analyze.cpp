@@ -4,6 +4,7 @@
 // the rows so far in a file marked complete=no.
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "analysis_flags.h"
 #include "analyze_run.h"
@@ -124,6 +125,30 @@ std::string CheckFlags(const ArgParser& p, const AnalyzeFlags& a) {
   return a.analysis.CheckStartingDirections(p);
 }
 
+// The run --params-from records, into *o (before the flags given are applied); an exit code when
+// it cannot be repeated.
+std::optional<int> ReadParamsFrom(const ArgParser& p, const AnalyzeFlags& a, AnalysisOptions* o,
+                                  RunRecordNotes* recorded) {
+  if (Status st = ReadRunRecord(a.params_from, o, recorded); !st) {
+    // A key the header must not hold is refused like an unknown flag; a file that cannot be
+    // read, or a value out of range, is a failure of the file.
+    if (recorded->bad_keys) return p.UsageError("--params-from " + st.message());
+    std::cerr << "armmimic-cli analyze: --params-from " << st.message() << "\n";
+    return kExitFailure;
+  }
+  const std::string& engine = a.analysis.engine_name();
+  if (!recorded->ignored.empty()) {
+    std::cerr << "armmimic-cli analyze: " << a.params_from << ": "
+              << DescribeIgnoredEngineOptions(recorded->ignored) << "\n";
+  }
+  EngineKind given;
+  if (p.Given("--engine") && ParseEngineKind(engine, &given) && given != o->engine.kind) {
+    return p.UsageError("--engine " + engine + ": " + a.params_from + " records a " +
+                        EngineName(o->engine.kind) + " run; drop --engine or --params-from");
+  }
+  return std::nullopt;
+}
+
 int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global) {
   AnalyzeFlags a;
   ArgParser p("analyze", kSynopsis, kDescription + AnalysisFlags::ParamList());
@@ -141,23 +166,7 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
   AnalysisOptions o;
   RunRecordNotes recorded;
   if (!a.params_from.empty()) {
-    if (Status st = ReadRunRecord(a.params_from, &o, &recorded); !st) {
-      // A key the header must not hold is refused like an unknown flag; a file that cannot be
-      // read, or a value out of range, is a failure of the file.
-      if (recorded.bad_keys) return p.UsageError("--params-from " + st.message());
-      std::cerr << "armmimic-cli analyze: --params-from " << st.message() << "\n";
-      return kExitFailure;
-    }
-    const std::string& engine = a.analysis.engine_name();
-    if (!recorded.ignored.empty()) {
-      std::cerr << "armmimic-cli analyze: " << a.params_from << ": "
-                << DescribeIgnoredEngineOptions(recorded.ignored) << "\n";
-    }
-    EngineKind given;
-    if (p.Given("--engine") && ParseEngineKind(engine, &given) && given != o.engine.kind) {
-      return p.UsageError("--engine " + engine + ": " + a.params_from + " records a " +
-                          EngineName(o.engine.kind) + " run; drop --engine or --params-from");
-    }
+    if (auto code = ReadParamsFrom(p, a, &o, &recorded)) return *code;
   } else if (a.analysis.engine_name().empty()) {
     return p.UsageError("missing --engine (bgsub, lk, marker or pose)");
   }
