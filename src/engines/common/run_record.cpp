@@ -142,7 +142,7 @@ Status RunFromMeta(const AngleMeta& meta, const std::string& source_name, Analys
   AnalysisOptions run;
   run.inputs = o->inputs;
   if (!ParseEngineKind(engine, &run.engine.kind)) {
-    return err("engine=" + engine +
+    return err("engine=" + Excerpt(engine) +
                " is not an engine this version knows (bgsub, lk, marker or pose)");
   }
   std::vector<double> n;
@@ -150,13 +150,15 @@ Status RunFromMeta(const AngleMeta& meta, const std::string& source_name, Analys
   for (const auto& [k, v] : meta) {
     if (k.find('.') != std::string::npos) {
       if (k.rfind(engine + ".", 0) != 0) {
-        return err(k + "=" + v + " is not a setting of the recorded engine " + engine);
+        return err(k + "=" + Excerpt(v) + " is not a setting of the recorded engine " + engine);
       }
       if (FindRemovedEngineOption(k)) {
         removed.push_back(k);
         continue;
       }
       const Status st = SetEngineOption(k + "=" + v, &run.engine);
+      // The setting's own message quotes the value: a long or many-line one only by its start.
+      if (!st && Excerpt(v) != v) return err(k + "=" + Excerpt(v) + " is not a value of " + k);
       if (!st) return err(st.message());
     } else if (k == "background") {
       run.background_path = v;
@@ -167,23 +169,23 @@ Status RunFromMeta(const AngleMeta& meta, const std::string& source_name, Analys
     } else if (k == "model_dir" || (k == "model" && !IsPoseModelName(k, v))) {
       run.model_dir = v;
     } else if (k == "auto_calibrate") {
-      if (v != "yes" && v != "no") return err("auto_calibrate=" + v + " is not yes or no");
+      if (v != "yes" && v != "no") return err("auto_calibrate=" + Excerpt(v) + " is not yes or no");
       run.auto_calibrate = v == "yes";
     } else if (k == "calibrate_side") {
       if (!ParsePoseSide(v, &run.calibrate_side)) {
-        return err("calibrate_side=" + v + " is not left, right or auto");
+        return err("calibrate_side=" + Excerpt(v) + " is not left, right or auto");
       }
     } else if (k == "background_frames" || k == "start") {
       int value = 0;
-      if (!ParseFrameIndex(v, &value)) return err(k + "=" + v + " is not a frame count");
+      if (!ParseFrameIndex(v, &value)) return err(k + "=" + Excerpt(v) + " is not a frame count");
       (k == "start" ? run.start : run.background_frames) = value;
     } else if (k == "shoulder" || k == "elbow" || k == "wrist") {
-      if (!Numbers(v, 2, &n)) return err(k + "=" + v + " is not a point X,Y");
+      if (!Numbers(v, 2, &n)) return err(k + "=" + Excerpt(v) + " is not a point X,Y");
       (k == "shoulder" ? run.shoulder_px
        : k == "elbow"  ? run.elbow_px
                        : run.wrist_px) = cv::Point2d(n[0], n[1]);
     } else if (k == "roi") {
-      if (!Numbers(v, 4, &n)) return err("roi=" + v + " is not a rectangle X,Y,W,H");
+      if (!Numbers(v, 4, &n)) return err("roi=" + Excerpt(v) + " is not a rectangle X,Y,W,H");
       run.roi = cv::Rect(static_cast<int>(n[0]), static_cast<int>(n[1]), static_cast<int>(n[2]),
                          static_cast<int>(n[3]));
     }
@@ -284,8 +286,9 @@ Status CheckRecordedPathsFound(const AnalysisOptions& options,
     for (const PathKey& p : kPathKeys) {
       if (m.key != p.key || options.*p.member != m.typed) continue;
       std::string tried;
-      for (const std::string& t : m.tried) tried += (tried.empty() ? "" : ", ") + t;
-      return Status::Error(source_name + ": the recorded " + m.key + "=" + m.typed +
+      // Paths are quoted whole (PATH_MAX bounds them), on one line whatever they hold.
+      for (const std::string& t : m.tried) tried += (tried.empty() ? "" : ", ") + Excerpt(t, 4096);
+      return Status::Error(source_name + ": the recorded " + m.key + "=" + Excerpt(m.typed, 4096) +
                            " was found nowhere (tried " + tried + ")");
     }
   }

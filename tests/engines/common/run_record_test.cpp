@@ -219,6 +219,20 @@ TEST(RunRecordKeys, ARepeatedOrUnknownKeyIsRefusedWithTheLine) {
   }
 }
 
+// A value the run cannot take is quoted by its start only, on one line, whatever its key.
+TEST(RunRecord, ALongBadValueIsQuotedByItsStart) {
+  const std::string huge = std::string(5000, '7') + "\nx";
+  for (const std::string& key : {"lk.window_px", "start", "shoulder", "roi", "calibrate_side"}) {
+    AnalysisOptions o;
+    const Status st = RunFromMeta({{"engine", "lk"}, {key, huge}}, "old.tsv", &o);
+    ASSERT_FALSE(st.ok()) << key;
+    EXPECT_EQ(st.message().rfind("old.tsv: " + key + "=7777", 0), 0u)
+        << st.message().substr(0, 200);
+    EXPECT_LT(st.message().size(), 300u) << key;
+    EXPECT_EQ(st.message().find('\n'), std::string::npos) << key;
+  }
+}
+
 TEST(RunRecordKeys, OlderHeadersStillPass) {
   // Before model_dir, a pose run given --model wrote model= twice: the network, then the folder.
   AngleMeta pose = {{"engine", "pose"}, {"model", "movenet-lightning-v4"}, {"model", "/m"}};
