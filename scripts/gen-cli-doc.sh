@@ -82,12 +82,23 @@ own `--help` texts by `scripts/gen-cli-doc.sh`.
   what is refused, as for any other bad file content.
 - **Repeating a run.** The header of an angle file records the engine, every engine setting
   under its `ENGINE.KEY` name (the one `--param` takes, changed or not) and the inputs besides
-  the video (`background`, `background_frames`, `arm_length`, `reference`, `start`, `shoulder`,
-  `elbow`, `wrist`, `roi`). `armmimic-cli analyze VIDEO -o NEW.tsv --params-from OLD.tsv`
-  repeats that run on VIDEO; flags given as well override what the header says. The older keys
-  (`threshold=45`, `window=15`, ...) stay in the header as before.
+  the video (`background`, `background_frames`, `arm_length`, `reference`, `model_dir`, `start`,
+  `shoulder`, `elbow`, `wrist`, `roi`). `armmimic-cli analyze VIDEO -o NEW.tsv --params-from
+  OLD.tsv` repeats that run on VIDEO; flags given as well override what the header says. The
+  older keys (`threshold=45`, `window=15`, ...) stay in the header as before.
+  - A path typed relative is recorded as typed and absolute (`background=bg.png
+    background_abs=/lab/take1/bg.png`), so the run repeats from any folder. Each recorded path
+    is looked for where it was (the absolute one), then beside OLD.tsv (a folder moved or
+    copied whole), then in the current folder; one found nowhere is an error (exit 1) that
+    names OLD.tsv, the key and every path tried, unless a flag given replaces it.
+  - A header that names a key twice, or a key no version of armmimic writes, is refused like an
+    unknown flag: exit 2, naming `OLD.tsv:LINE` and the key. Settings this version removed are
+    skipped and named once; `complete=` and `incomplete=` say what happened to the run and are
+    skipped too.
 - **Text files** (angle files, VAL programs, controller profiles, truth files, `--list`) may
-  start with a UTF-8 byte order mark and may end their lines with CRLF.
+  start with a UTF-8 byte order mark and may end their lines with CRLF; angle files may also end
+  them with a CR alone (old Mac editors). A message quotes at most the start of one line of a
+  file, however long the line.
 - Numbers on the command line use `.` decimals whatever the locale. Points are `X,Y` and
   rectangles `X,Y,W,H`, in full-image pixels.
 

@@ -74,15 +74,14 @@ void Report(const AnalysisOptions& o, const std::string& output, const Outcome& 
   }
 }
 
-std::string Cell(std::string text) {
-  for (char& c : text) {
-    if (c == '\t' || c == '\n' || c == '\r') c = ' ';
-  }
-  return text;
-}
+// A name or message in the summary: escaped (\t, \n, \r, \\), never rewritten, so a
+// script gets every name back as it was (docs/batch.md).
+std::string Cell(const std::string& text) { return EscapeTsvField(text); }
 
 struct SummaryRow {
-  std::string video, angles, status = "skipped", error;
+  std::string video;
+  std::string angles;  // the angle file; empty for a video that ran and wrote none
+  std::string status = "skipped", error;
   AnalysisSummary summary;
 };
 
@@ -148,7 +147,7 @@ int AnalyzeBatch(const AnalysisOptions& options, const BatchPlan& plan,
   int failed = 0;
   for (std::size_t i = 0; i < n; ++i) {
     rows[i].video = plan.videos[i];
-    rows[i].angles = plan.outputs[i];
+    rows[i].angles = plan.outputs[i];  // a skipped video's: where a rerun writes it
   }
   for (std::size_t i = 0; i < n && !InterruptGuard::interrupted(); ++i) {
     AnalysisOptions o = options;
@@ -158,6 +157,8 @@ int AnalyzeBatch(const AnalysisOptions& options, const BatchPlan& plan,
     const Outcome r = Run(o, plan.outputs[i], label, global);
     SummaryRow& row = rows[i];
     row.summary = r.summary;
+    // The file exists once its header went out: complete, incomplete or interrupted with rows.
+    if (!r.status || r.summary.meta.empty()) row.angles.clear();
     if (!r.status) {
       row.status = "failed";
       row.error = Worded(r.status);

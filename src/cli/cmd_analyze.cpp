@@ -4,6 +4,7 @@
 // the rows so far in a file marked complete=no.
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "analysis_flags.h"
 #include "analyze_run.h"
@@ -65,12 +66,16 @@ constexpr const char* kDescription =
     "own arm (default: the better seen over the first second). The model is fetched by\n"
     "scripts/deps.sh --with-model and found without flags (docs/pose.md).\n"
     "The header records the run: the engine, every ENGINE.KEY setting and the input images.\n"
-    "--params-from OLD.tsv repeats that run on VIDEO; flags given as well override it.\n"
+    "--params-from OLD.tsv repeats that run on VIDEO; flags given as well override it. A\n"
+    "recorded image is looked for where it was, beside OLD.tsv, then in the current folder; a\n"
+    "key OLD.tsv names twice, or one no version writes, is a usage error naming the line.\n"
     "Batch: with --output-dir, each VIDEO (or each line of the --list file) is analysed on its\n"
     "own into DIR/NAME.tsv (NAME: the video's name without its extension), and DIR/summary.tsv\n"
     "gets one line per video: video, angles, frames, ok, lost, coverage (ok/frames), seconds,\n"
-    "status (ok, failed, incomplete, interrupted, skipped) and error. A failing video does not\n"
-    "stop the others; exit 0 only when every video was analysed whole.\n"
+    "status (ok, failed, incomplete, interrupted, skipped) and error; a TAB, line end or\n"
+    "backslash in a name is written \\t, \\n, \\r or \\\\, and angles is empty when no file was\n"
+    "written. A failing video does not stop the others; exit 0 only when every video was\n"
+    "analysed whole.\n"
     "A video that stops more than max(2 frames, 1 %) short of the frame count it announces, or\n"
     "whose read fails, keeps its rows in a file marked complete=no with the reason\n"
     "(incomplete=...) and exits 1; a smaller shortfall (an estimated count) is a warning.\n"
@@ -120,6 +125,30 @@ std::string CheckFlags(const ArgParser& p, const AnalyzeFlags& a) {
   return a.analysis.CheckStartingDirections(p);
 }
 
+// The run --params-from records, into *o (before the flags given are applied); an exit code when
+// it cannot be repeated.
+std::optional<int> ReadParamsFrom(const ArgParser& p, const AnalyzeFlags& a, AnalysisOptions* o,
+                                  RunRecordNotes* recorded) {
+  if (Status st = ReadRunRecord(a.params_from, o, recorded); !st) {
+    // A key the header must not hold is refused like an unknown flag; a file that cannot be
+    // read, or a value out of range, is a failure of the file.
+    if (recorded->bad_keys) return p.UsageError("--params-from " + st.message());
+    std::cerr << "armmimic-cli analyze: --params-from " << st.message() << "\n";
+    return kExitFailure;
+  }
+  const std::string& engine = a.analysis.engine_name();
+  if (!recorded->ignored.empty()) {
+    std::cerr << "armmimic-cli analyze: " << a.params_from << ": "
+              << DescribeIgnoredEngineOptions(recorded->ignored) << "\n";
+  }
+  EngineKind given;
+  if (p.Given("--engine") && ParseEngineKind(engine, &given) && given != o->engine.kind) {
+    return p.UsageError("--engine " + engine + ": " + a.params_from + " records a " +
+                        EngineName(o->engine.kind) + " run; drop --engine or --params-from");
+  }
+  return std::nullopt;
+}
+
 int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global) {
   AnalyzeFlags a;
   ArgParser p("analyze", kSynopsis, kDescription + AnalysisFlags::ParamList());
@@ -135,22 +164,9 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
     return p.UsageError(st.message());
   }
   AnalysisOptions o;
+  RunRecordNotes recorded;
   if (!a.params_from.empty()) {
-    std::vector<std::string> ignored;
-    if (Status st = ReadRunRecord(a.params_from, &o, &ignored); !st) {
-      std::cerr << "armmimic-cli analyze: --params-from " << st.message() << "\n";
-      return kExitFailure;
-    }
-    const std::string& engine = a.analysis.engine_name();
-    if (!ignored.empty()) {
-      std::cerr << "armmimic-cli analyze: " << a.params_from << ": "
-                << DescribeIgnoredEngineOptions(ignored) << "\n";
-    }
-    EngineKind given;
-    if (p.Given("--engine") && ParseEngineKind(engine, &given) && given != o.engine.kind) {
-      return p.UsageError("--engine " + engine + ": " + a.params_from + " records a " +
-                          EngineName(o.engine.kind) + " run; drop --engine or --params-from");
-    }
+    if (auto code = ReadParamsFrom(p, a, &o, &recorded)) return *code;
   } else if (a.analysis.engine_name().empty()) {
     return p.UsageError("missing --engine (bgsub, lk, marker or pose)");
   }
@@ -158,6 +174,11 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
   if (const std::string e = a.analysis.CheckFor(p, o); !e.empty()) return p.UsageError(e);
   a.analysis.ApplyGiven(p, &o);
   o.inputs = a.inputs;
+  // A recorded image found nowhere, unless a flag given replaced it.
+  if (Status st = CheckRecordedPathsFound(o, recorded.missing, a.params_from); !st) {
+    std::cerr << "armmimic-cli analyze: --params-from " << st.message() << "\n";
+    return kExitFailure;
+  }
 
   std::vector<std::string> videos = a.inputs;
   if (!a.list.empty()) {

@@ -106,6 +106,10 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
     for (int c = in.get(); c != EOF; c = in.get()) {
       got_any = true;
       if (c == '\n') break;
+      if (c == '\r') {  // CRLF, or a CR alone as old Mac editors end lines
+        if (in.peek() == '\n') in.get();
+        break;
+      }
       if (line.size() > kMaxAngleLineLength) {
         too_long = true;
         continue;
@@ -118,19 +122,19 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
       return err(line_no,
                  "line is longer than " + std::to_string(kMaxAngleLineLength) + " characters");
     }
-    if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line_no == 1) StripUtf8Bom(&line);
     if (line.find('\0') != std::string::npos) return err(line_no, "line contains a NUL byte");
 
     if (!line.empty() && line[0] == '#') {
       if (have_header && line == kIncompleteMark) out->complete = false;
       if (line.rfind("# armmimic angles v", 0) == 0 && line != kAngleFileMagic) {
-        return err(line_no, "unsupported angle file version \"" + line.substr(2) +
+        return err(line_no, "unsupported angle file version \"" + Excerpt(line.substr(2)) +
                                 "\" (this reader knows v1)");
       }
       if (!have_header && !seen_meta && line.find('=') != std::string::npos &&
           line.rfind("# units:", 0) != 0) {
         seen_meta = true;
+        out->meta_line = line_no;
         std::istringstream words(line.substr(1));
         std::string word;
         while (words >> word) {
@@ -153,7 +157,7 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
           for (std::size_t j = 0; j < 11; ++j)
             expected += (j ? "\\t" : "") + std::string(kAngleColumns[j]);
           return err(line_no, "bad column header: column " + std::to_string(i + 1) + " is \"" +
-                                  (i < cols.size() ? cols[i] : std::string()) +
+                                  (i < cols.size() ? Excerpt(cols[i]) : std::string()) +
                                   "\", expected the header " + expected);
         }
       }
@@ -177,29 +181,29 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
     }
     AngleRow row;
     if (!ParseFrameIndex(f[0], &row.frame)) {
-      return err(line_no, "frame \"" + f[0] + "\" is not a non-negative integer");
+      return err(line_no, "frame \"" + Excerpt(f[0]) + "\" is not a non-negative integer");
     }
     if (row.frame <= last_frame) {
-      return err(line_no, "frame " + f[0] +
+      return err(line_no, "frame " + Excerpt(f[0]) +
                               (row.frame == last_frame ? " is repeated" : " is out of order") +
                               " (previous row is frame " + std::to_string(last_frame) + ")");
     }
     last_frame = row.frame;
     if (!ParseTableNumber(f[1], false, &row.time_s)) {
-      return err(line_no, "time_s \"" + f[1] + "\" is not a finite number");
+      return err(line_no, "time_s \"" + Excerpt(f[1]) + "\" is not a finite number");
     }
     if (f[2] == "ok") {
       row.status = RowStatus::kOk;
     } else if (f[2] == "lost") {
       row.status = RowStatus::kLost;
     } else {
-      return err(line_no, "status \"" + f[2] + "\" is neither ok nor lost");
+      return err(line_no, "status \"" + Excerpt(f[2]) + "\" is neither ok nor lost");
     }
     double* values[8] = {&row.upper_deg, &row.fore_deg, &row.yaw_deg, &row.bend_deg,
                          &row.upper_cx,  &row.upper_cy, &row.fore_cx, &row.fore_cy};
     for (int i = 0; i < 8; ++i) {
       if (!ParseTableNumber(f[3 + i], true, values[i])) {
-        return err(line_no, std::string(kAngleColumns[3 + i]) + " \"" + f[3 + i] +
+        return err(line_no, std::string(kAngleColumns[3 + i]) + " \"" + Excerpt(f[3 + i]) +
                                 "\" is not a number (use '.' decimals, or nan)");
       }
       if (row.status == RowStatus::kLost && i < 4 && !std::isnan(*values[i])) {
@@ -209,19 +213,19 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
     }
     for (int i = 0; i < 4; ++i) {
       if (!std::isnan(*values[i]) && (*values[i] <= -180.0 - 1e-9 || *values[i] > 180.0 + 1e-9)) {
-        return err(line_no,
-                   std::string(kAngleColumns[3 + i]) + " " + f[3 + i] + " is outside (-180, 180]");
+        return err(line_no, std::string(kAngleColumns[3 + i]) + " " + Excerpt(f[3 + i]) +
+                                " is outside (-180, 180]");
       }
     }
     if (!std::isnan(row.yaw_deg) && row.yaw_deg < 0) {
-      return err(line_no, "yaw_deg " + f[5] + " is negative (yaw is always >= 0)");
+      return err(line_no, "yaw_deg " + Excerpt(f[5]) + " is negative (yaw is always >= 0)");
     }
     if (out->has_file_column) row.file = f[file_index];
     if (confidence_index > 0) {
       if (!ParseTableNumber(f[confidence_index], true, &row.confidence) ||
           (!std::isnan(row.confidence) && (row.confidence < 0 || row.confidence > 1))) {
-        return err(line_no,
-                   "confidence \"" + f[confidence_index] + "\" is not a number in [0, 1] (or nan)");
+        return err(line_no, "confidence \"" + Excerpt(f[confidence_index]) +
+                                "\" is not a number in [0, 1] (or nan)");
       }
     }
     if (signed_yaw_index > 0) {
@@ -236,7 +240,8 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
       }
       if (!std::isnan(row.yaw_signed_deg) &&
           (row.yaw_signed_deg <= -180.0 - 1e-9 || row.yaw_signed_deg > 180.0 + 1e-9)) {
-        return err(line_no, std::string(kSignedYawColumn) + " " + v + " is outside (-180, 180]");
+        return err(line_no,
+                   std::string(kSignedYawColumn) + " " + Excerpt(v) + " is outside (-180, 180]");
       }
     }
     out->rows.push_back(std::move(row));

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <system_error>
 
@@ -114,6 +115,70 @@ std::string PercentDecode(const std::string& value) {
       }
     }
     out += value[i];
+  }
+  return out;
+}
+
+std::string Excerpt(const std::string& text, std::size_t max_chars) {
+  std::string out;
+  std::size_t shown = 0;
+  for (; shown < text.size(); ++shown) {
+    const auto c = static_cast<unsigned char>(text[shown]);
+    // Never cut inside a UTF-8 sequence: its continuation bytes (10xxxxxx) follow their lead.
+    if (out.size() >= max_chars && (c & 0xC0) != 0x80) break;
+    if (c == '\t') {
+      out += "\\t";
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c < 0x20 || c == 0x7f) {
+      char hex[8];
+      std::snprintf(hex, sizeof(hex), "\\x%02X", c);
+      out += hex;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  if (shown < text.size()) out += "... (" + std::to_string(text.size()) + " characters)";
+  return out;
+}
+
+std::string EscapeTsvField(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string UnescapeTsvField(const std::string& field) {
+  std::string out;
+  out.reserve(field.size());
+  for (std::size_t i = 0; i < field.size(); ++i) {
+    const char next = i + 1 < field.size() ? field[i + 1] : '\0';
+    if (field[i] != '\\' || (next != '\\' && next != 't' && next != 'n' && next != 'r')) {
+      out += field[i];
+      continue;
+    }
+    out += next == 't' ? '\t' : next == 'n' ? '\n' : next == 'r' ? '\r' : '\\';
+    ++i;
   }
   return out;
 }

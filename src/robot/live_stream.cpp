@@ -103,6 +103,14 @@ HoldReason LiveStream::holding(double now_s) const {
 }
 
 std::string LiveStream::HoldText(double now_s) const {
+  if (stopped_ && !stop_reason_.empty()) {
+    // Why the stream stopped ("interrupted (SIGTERM)", a lost link), on the log's one line.
+    std::string reason = stop_reason_;
+    for (char& c : reason) {
+      if (c == '\t' || c == '\n' || c == '\r') c = ' ';
+    }
+    return reason;
+  }
   const HoldReason h = holding(now_s);
   if (h != HoldReason::kNone) return HoldReasonName(h);
   if (!LinkFree(false)) return "link busy";

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "armmimic/core/angle_file.h"
+#include "armmimic/core/text.h"
 #include "small_scene.h"
 
 namespace armmimic {
@@ -157,6 +158,49 @@ TEST(CliBatch, OneFilePerVideoASummaryAndAFailureStopsNothing) {
   EXPECT_TRUE(Contains(lines[1], "\tok\t")) << lines[1];
   EXPECT_TRUE(Contains(lines[2], "\tfailed\t" + dir.file("broken.avi"))) << lines[2];
   EXPECT_TRUE(Contains(lines[3], "\tok\t")) << lines[3];
+}
+
+// Names are escaped in the summary (\t, \n, \r, \\), never rewritten: a script reading it by
+// TAB and line gets every video and angle file back as it was. A failed video wrote no file,
+// and its angles column says so by being empty.
+TEST(CliBatch, TheSummaryEscapesNamesAndListsNoFileForAFailedVideo) {
+  test::TempDir dir;
+  const std::string bytes = test::ReadFile(Scene() + "/scene.avi");
+  const std::vector<std::string> names = {"my take \xC3\xBC.avi", "tab\there.avi", "new\nline.avi",
+                                          "back\\slash.avi", "bro ken.avi"};
+  std::vector<std::string> args = {"-q", "analyze"};
+  for (const std::string& n : names) {
+    test::WriteFile(dir.file(n), n == "bro ken.avi" ? std::string("not a video") : bytes);
+    args.push_back(dir.file(n));
+  }
+  for (const std::string& f : {std::string("--output-dir"), dir.file("out")}) args.push_back(f);
+  for (const std::string& f : BgsubFlags()) args.push_back(f);
+  const test::CliResult r = test::RunCli(args);
+  EXPECT_EQ(r.exit_code, 1) << r.err;  // one video failed
+
+  std::istringstream summary(test::ReadFile(dir.file("out/summary.tsv")));
+  std::vector<std::string> lines;
+  for (std::string l; std::getline(summary, l);) lines.push_back(l);
+  ASSERT_EQ(lines.size(), names.size() + 1) << "one line per video, whatever its name holds";
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::vector<std::string> f = SplitTabs(lines[i + 1]);
+    ASSERT_EQ(f.size(), 9u) << lines[i + 1];
+    EXPECT_EQ(UnescapeTsvField(f[0]), dir.file(names[i]));
+    if (names[i] == "bro ken.avi") {
+      EXPECT_EQ(f[7], "failed");
+      EXPECT_EQ(f[1], "") << "no angle file was written";
+      EXPECT_FALSE(std::filesystem::exists(dir.file("out/bro ken.tsv")));
+      continue;
+    }
+    EXPECT_EQ(f[7], "ok") << lines[i + 1];
+    const std::string stem = names[i].substr(0, names[i].size() - 4);
+    EXPECT_EQ(UnescapeTsvField(f[1]), dir.file("out/" + stem + ".tsv"));
+    EXPECT_EQ(Rows(UnescapeTsvField(f[1])), Rows(dir.file("out/my take \xC3\xBC.tsv")));
+  }
+  EXPECT_EQ(SplitTabs(lines[1])[0], dir.file("my take \xC3\xBC.avi"))
+      << "spaces and UTF-8 as they are";
+  EXPECT_EQ(SplitTabs(lines[2])[0], dir.file("tab\\there.avi"));
+  EXPECT_EQ(SplitTabs(lines[4])[0], dir.file("back\\\\slash.avi"));
 }
 
 TEST(CliBatch, AllGoodExitsZeroAndClashesAreUsageErrors) {

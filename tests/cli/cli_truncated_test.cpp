@@ -1,6 +1,6 @@
 // A truncated video is incomplete: analyze marks its angle file complete=no with the reason and
 // exits 1, a batch records it as incomplete, plan and send warn on such a file and refuse it
-// with --strict.
+// with --strict; the run such a file records still repeats (--params-from).
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -75,6 +75,17 @@ TEST_F(CliTruncated, ABatchRecordsTheTruncatedVideoAsIncomplete) {
   AngleFile angles;
   ASSERT_TRUE(ReadAngleFile(dir_.file("out/quarter.tsv"), &angles).ok());
   EXPECT_FALSE(angles.complete);
+}
+
+// complete=no and incomplete=REASON say what happened to the run, not how it was made: the
+// run an incomplete file records repeats on the whole video as the run made directly does.
+TEST_F(CliTruncated, TheRunAnIncompleteFileRecordsRepeats) {
+  ASSERT_EQ(Analyze(truncated_, dir_.file("q.tsv")).exit_code, 1);
+  ASSERT_EQ(Analyze(Scene() + "/scene.avi", dir_.file("w.tsv")).exit_code, 0);
+  const test::CliResult r = test::RunCli({"-q", "analyze", Scene() + "/scene.avi", "--params-from",
+                                          dir_.file("q.tsv"), "-o", dir_.file("again.tsv")});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(test::ReadFile(dir_.file("again.tsv")), test::ReadFile(dir_.file("w.tsv")));
 }
 
 TEST_F(CliTruncated, PlanAndSendWarnOnAnIncompleteFileAndRefuseItWithStrict) {

@@ -312,5 +312,43 @@ TEST(AngleFile, ReadsAByteOrderMarkAndCrlfLineEnds) {
   EXPECT_NE(late.message().find("a.tsv:2:"), std::string::npos) << late.message();
 }
 
+// An old Mac editor ends lines with a CR alone: read as LF, with the same line numbers.
+TEST(AngleFile, ReadsCrOnlyLineEnds) {
+  const std::string text = "# armmimic angles v1\r# engine=lk source=v.avi\r" +
+                           std::string(kHeader) + "\r" + "3\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t7\r" +
+                           "4\t0.2\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\r";
+  AngleFile f;
+  Status st = Parse(text, &f);
+  ASSERT_TRUE(st.ok()) << st.message();
+  EXPECT_EQ(f.Meta("engine"), "lk");
+  EXPECT_EQ(f.meta_line, 2);
+  ASSERT_EQ(f.rows.size(), 2u);
+  EXPECT_FALSE(f.rows[1].ok());
+  st = Parse(text + "5\t0.3\tmaybe\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\r", &f);
+  ASSERT_FALSE(st.ok());
+  EXPECT_EQ(st.message().rfind("a.tsv:6: status \"maybe\"", 0), 0u) << st.message();
+}
+
+// A message quotes at most the start of one line, whatever the file holds.
+TEST(AngleFile, MessagesQuoteOneShortPieceOfTheFile) {
+  AngleFile f;
+  const std::string huge(50000, 'q');
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"# armmimic angles v7 " + huge + "\n", "a.tsv:1: unsupported angle file version"},
+      {huge + "\tx\n", "a.tsv:1: bad column header: column 1 is \"qqq"},
+      {std::string(kHeader) + "\n" + huge + "\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t7\n",
+       "a.tsv:2: frame \"qqq"},
+      {std::string(kHeader) + "\n3\t0.1\tok\t1\t2\t3\t1\t4\t5\t6\t" + huge + "\n",
+       "a.tsv:2: fore_cy \"qqq"},
+  };
+  for (const auto& [text, says] : cases) {
+    const Status st = Parse(text, &f);
+    ASSERT_FALSE(st.ok()) << says;
+    EXPECT_EQ(st.message().rfind(says, 0), 0u) << st.message().substr(0, 200);
+    EXPECT_LT(st.message().size(), 300u) << st.message().substr(0, 300);
+    EXPECT_NE(st.message().find(" characters)"), std::string::npos) << st.message();
+  }
+}
+
 }  // namespace
 }  // namespace armmimic

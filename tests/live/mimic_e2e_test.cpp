@@ -313,6 +313,9 @@ TEST_F(MimicE2E, CtrlCLeavesAValidAngleFileAndAJournalEndingAtTheLastAcknowledge
   }
   EXPECT_EQ(sent, acked) << "every line written was acknowledged before the stop";
   ExpectSafe(server_->log(), journal, robot::JointLimits());
+  // The latency log's frames after the signal are held by it, not by an operator.
+  const std::string latency = test::ReadFile(angles_ + ".latency.tsv");
+  EXPECT_EQ(latency.find("held by the operator"), std::string::npos) << latency;
 }
 
 TEST_F(MimicE2E, NoOutOfLimitOrOverSpeedCommandIsWrittenWhenTheInputJumps) {

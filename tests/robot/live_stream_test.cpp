@@ -162,6 +162,35 @@ TEST(LiveStream, AStopWaitsForTheMoveInFlightAndTheJournalNamesTheLastAcknowledg
       << journal;
 }
 
+// After a signal stops the stream, the latency log's hold column names the signal for every
+// frame that still arrives, not an operator who never held anything.
+TEST(LiveStream, FramesAfterASignalNameItAsTheHoldReason) {
+  test::TempDir dir;
+  Rig rig;
+  LiveStreamOptions o;
+  o.latency_path = dir.file("c.tsv.latency.tsv");
+  ASSERT_TRUE(rig.Begin(o).ok());
+  for (int f = 0; f < 30; ++f) rig.Frame(Row(f, -90 + f, 0));
+  rig.stream.Stop("interrupted (SIGTERM)");
+  rig.protocol.EndStream();
+  for (int f = 30; f < 35; ++f) rig.Frame(Row(f, -90 + f, 0));
+  rig.Advance(rig.now + 3);
+  ASSERT_TRUE(rig.stream.Close().ok());
+  std::istringstream in(test::ReadFile(o.latency_path));
+  std::string line;
+  int after = 0;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line.rfind("frame\t", 0) == 0) continue;
+    const int frame = std::stoi(line.substr(0, line.find('\t')));
+    const std::string hold = line.substr(line.rfind('\t') + 1);
+    EXPECT_NE(hold, "held by the operator") << line;
+    if (frame < 30) continue;
+    ++after;
+    EXPECT_EQ(hold, "interrupted (SIGTERM)") << line;
+  }
+  EXPECT_EQ(after, 5);
+}
+
 TEST(LiveStream, NoOutOfLimitOrOverSpeedLineReachesThePortWhenTheInputJumps) {
   Rig rig;
   LiveStreamOptions o;

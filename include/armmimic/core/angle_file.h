@@ -46,6 +46,7 @@ struct AngleFile {
   bool has_confidence_column = false;
   bool has_signed_yaw_column = false;  // a yaw_signed_deg column after the listed ones
   bool complete = true;  // false when the header says complete=no (an interrupted run)
+  int meta_line = 0;     // the line of the "# key=value ..." header line; 0: none
   std::vector<AngleRow> rows;
 
   // Value of a meta key, or `fallback` when absent.

@@ -33,6 +33,17 @@ std::string Trim(const std::string& text);
 std::string PercentEncode(const std::string& value);
 std::string PercentDecode(const std::string& value);
 
+// A piece of a file's text for a message: on one line whatever it holds (TAB, LF, CR and other
+// control bytes as \t, \n, \r, \xNN) and at most `max_chars` of it, a longer text cut with
+// "... (N characters)". A message never prints more than one line of the file it is about.
+std::string Excerpt(const std::string& text, std::size_t max_chars = 60);
+
+// A field of a table that other programs read by TAB and line (the batch summary): backslash,
+// TAB, LF and CR as \\, \t, \n, \r; everything else (spaces, UTF-8) as it is.
+// UnescapeTsvField reverses it (an unknown or lone backslash stays as it is).
+std::string EscapeTsvField(const std::string& text);
+std::string UnescapeTsvField(const std::string& field);
+
 // The system's text for an errno value ("No such file or directory"), the same as std::strerror
 // gives but safe to call from several threads at once (analyses run on worker threads).
 std::string ErrnoText(int err);

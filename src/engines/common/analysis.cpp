@@ -8,7 +8,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include <opencv2/imgproc.hpp>
 
@@ -228,6 +230,13 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
   // The inputs besides the video and every engine parameter, under the name `analyze --param`
   // takes, so the file says how to make it again (`analyze --params-from`).
   for (auto& kv : RunRecordMeta(options)) meta.push_back(std::move(kv));
+  std::set<std::string> keys;
+  for (const auto& kv : meta) {
+    // Each key once: --params-from refuses a header that names one twice.
+    if (!keys.insert(kv.first).second) {
+      throw std::logic_error("the angle file's header would name " + kv.first + " twice");
+    }
+  }
   summary->meta = meta;
   if (on_ready) {
     st = on_ready(meta);

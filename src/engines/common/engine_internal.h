@@ -17,6 +17,9 @@
 
 namespace armmimic::internal {
 
+// The pose network the pose engine describes in an angle file's header (model=...).
+inline constexpr const char* kPoseModelName = "movenet-lightning-v4";
+
 std::unique_ptr<Engine> CreateBgsubEngine(const BgsubOptions& options);
 std::unique_ptr<Engine> CreateLkEngine(const LkOptions& options);
 std::unique_ptr<Engine> CreateMarkerEngine(const MarkerOptions& options);

@@ -66,7 +66,7 @@ class PoseEngine : public Engine {
     return m;
   }
 
-  AngleMeta Describe() const override { return {{"model", "movenet-lightning-v4"}}; }
+  AngleMeta Describe() const override { return {{"model", internal::kPoseModelName}}; }
 
  private:
   PoseOptions o_;

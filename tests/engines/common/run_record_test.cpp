@@ -2,10 +2,12 @@
 // is written, and reading it back gives the same options.
 #include "armmimic/engines/run_record.h"
 
+#include <filesystem>
 #include <sstream>
 
 #include <gtest/gtest.h>
 
+#include "armmimic/engines/engine.h"
 #include "armmimic/engines/option_fields.h"
 
 namespace armmimic {
@@ -123,6 +125,130 @@ TEST(RunRecord, BadRecordsNameTheFileAndTheKey) {
     EXPECT_NE(st.message().find("old.tsv: "), std::string::npos) << st.message();
     EXPECT_NE(st.message().find(c.expect), std::string::npos) << st.message();
   }
+}
+
+TEST(RunRecord, APathTypedRelativeIsRecordedAbsoluteAsWell) {
+  AnalysisOptions o;
+  o.engine.kind = EngineKind::kPose;
+  o.background_path = "bg.png";
+  o.arm_length_path = "/data/arm.png";
+  o.model_dir = "../models";
+  const AngleMeta meta = RunRecordMeta(o);
+  const std::string here = std::filesystem::current_path().string();
+  EXPECT_EQ(Value(meta, "background"), "bg.png");
+  EXPECT_EQ(Value(meta, "background_abs"), here + "/bg.png");
+  EXPECT_EQ(Value(meta, "arm_length"), "/data/arm.png");
+  EXPECT_EQ(Value(meta, "arm_length_abs"), "<absent>");  // typed absolute: once is enough
+  EXPECT_EQ(Value(meta, "model_dir"), "../models");
+  EXPECT_EQ(Value(meta, "model_dir_abs"),
+            std::filesystem::path(here).parent_path().string() + "/models");
+  // The folder is model_dir: model= is the pose engine's own key (the network it runs).
+  EXPECT_EQ(Value(meta, "model"), "<absent>");
+  AnalysisOptions back;
+  AngleMeta with_engine = meta;
+  with_engine.emplace_back("engine", "pose");
+  ASSERT_TRUE(RunFromMeta(with_engine, "old.tsv", &back).ok());
+  EXPECT_EQ(back.model_dir, "../models");
+  EXPECT_EQ(back.background_path, "bg.png");
+}
+
+// The header analyze writes, as far as a test can make it without a video: what the pipeline
+// adds, the engine's description and the run record.
+AngleMeta HeaderOf(const AnalysisOptions& o) {
+  AngleMeta meta = {{"engine", EngineName(o.engine.kind)},
+                    {"source", "v.avi"},
+                    {"fps", "30"},
+                    {"width", "160"},
+                    {"height", "120"},
+                    {"start", "0"}};
+  for (auto& kv : Engine::Create(o.engine)->Describe()) meta.push_back(kv);
+  for (auto& kv : RunRecordMeta(o)) meta.push_back(kv);
+  return meta;
+}
+
+TEST(RunRecordKeys, EveryKeyAHeaderHoldsIsKnownAndOnce) {
+  for (EngineKind kind :
+       {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kMarker, EngineKind::kPose}) {
+    AnalysisOptions o;
+    o.engine.kind = kind;
+    o.background_path = "bg.png";
+    o.arm_length_path = "arm.png";
+    o.reference_path = "ref.png";
+    o.model_dir = "models";
+    o.background_frames = 10;
+    o.shoulder_px = cv::Point2d(1, 2);
+    o.elbow_px = cv::Point2d(1, 3);
+    o.wrist_px = cv::Point2d(1, 4);
+    o.auto_calibrate = true;
+    o.calibrate_side = PoseSide::kLeft;
+    o.roi = cv::Rect(0, 0, 10, 10);
+    AngleMeta meta = HeaderOf(o);
+    meta.emplace_back("complete", "no");
+    meta.emplace_back("incomplete", "the video ended early");
+    const Status st = CheckRunRecordKeys(meta, "a.tsv", 2);
+    EXPECT_TRUE(st.ok()) << EngineName(kind) << ": " << st.message();
+  }
+}
+
+TEST(RunRecordKeys, ARepeatedOrUnknownKeyIsRefusedWithTheLine) {
+  struct Case {
+    AngleMeta meta;
+    std::string expect;
+  };
+  const std::vector<Case> cases = {
+      {{{"engine", "lk"}, {"start", "30"}, {"start", "200"}},
+       "old.tsv:2: the key start appears twice (start=30 and start=200)"},
+      {{{"engine", "lk"}, {"lk.window_px", "15"}, {"lk.window_px", "15"}},
+       "old.tsv:2: the key lk.window_px appears twice"},
+      {{{"engine", "lk"}, {"engine", "lk"}}, "old.tsv:2: the key engine appears twice"},
+      {{{"engine", "lk"}, {"colour", "red"}}, "old.tsv:2: unknown key colour=red"},
+      {{{"engine", "lk"}, {"shoulder_abs", "/a"}}, "old.tsv:2: unknown key shoulder_abs=/a"},
+      {{{"engine", "lk"}, {"bgsub.threshold", "45"}},
+       "old.tsv:2: unknown key bgsub.threshold=45 (not a setting of the recorded engine lk)"},
+      {{{"engine", "lk"}, {"lk.nope", "1"}}, "old.tsv:2: unknown key lk.nope=1 (no lk setting"},
+      // A long value is quoted by its start only, on one line.
+      {{{"engine", "lk"}, {"x", std::string(5000, 'v') + "\n"}},
+       "old.tsv:2: unknown key x=vvvvvvvvvv"},
+  };
+  for (const Case& c : cases) {
+    const Status st = CheckRunRecordKeys(c.meta, "old.tsv", 2);
+    ASSERT_FALSE(st.ok()) << c.expect;
+    EXPECT_EQ(st.message().rfind(c.expect, 0), 0u) << st.message().substr(0, 300);
+    EXPECT_LT(st.message().size(), 300u);
+    EXPECT_EQ(st.message().find('\n'), std::string::npos);
+  }
+}
+
+// A value the run cannot take is quoted by its start only, on one line, whatever its key.
+TEST(RunRecord, ALongBadValueIsQuotedByItsStart) {
+  const std::string huge = std::string(5000, '7') + "\nx";
+  for (const std::string& key : {"lk.window_px", "start", "shoulder", "roi", "calibrate_side"}) {
+    AnalysisOptions o;
+    const Status st = RunFromMeta({{"engine", "lk"}, {key, huge}}, "old.tsv", &o);
+    ASSERT_FALSE(st.ok()) << key;
+    EXPECT_EQ(st.message().rfind("old.tsv: " + key + "=7777", 0), 0u)
+        << st.message().substr(0, 200);
+    EXPECT_LT(st.message().size(), 300u) << key;
+    EXPECT_EQ(st.message().find('\n'), std::string::npos) << key;
+  }
+}
+
+TEST(RunRecordKeys, OlderHeadersStillPass) {
+  // Before model_dir, a pose run given --model wrote model= twice: the network, then the folder.
+  AngleMeta pose = {{"engine", "pose"}, {"model", "movenet-lightning-v4"}, {"model", "/m"}};
+  ASSERT_TRUE(CheckRunRecordKeys(pose, "old.tsv", 2).ok());
+  AnalysisOptions o;
+  ASSERT_TRUE(RunFromMeta(pose, "old.tsv", &o).ok());
+  EXPECT_EQ(o.model_dir, "/m");
+  // Without --model, model= named only the network: no folder.
+  AnalysisOptions plain;
+  ASSERT_TRUE(
+      RunFromMeta({{"engine", "pose"}, {"model", "movenet-lightning-v4"}}, "old.tsv", &plain).ok());
+  EXPECT_EQ(plain.model_dir, "");
+  // Removed settings are no unknown keys (they are skipped and named once).
+  ASSERT_TRUE(
+      CheckRunRecordKeys({{"engine", "bgsub"}, {"bgsub.reject_shadow", "false"}}, "old.tsv", 2)
+          .ok());
 }
 
 }  // namespace
