@@ -68,9 +68,10 @@ seed_range() {
 meta() { sed -n '2p' "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
 
 # Scores ANGLES against TRUTH over the frames from FIRST on. Prints
-# "motion ok coverage median p90 max mean cw_share" (errors in degrees: per frame the mean of the
-# upper arm's and the forearm's wrapped direction errors; cw: ok frames whose worse segment is
-# more than 15 degrees off, over the motion frames).
+# "motion ok coverage median p90 max mean cw_share yaw_mean yaw_frames" (errors in degrees: per
+# frame the mean of the upper arm's and the forearm's wrapped direction errors; cw: ok frames
+# whose worse segment is more than 15 degrees off, over the motion frames; yaw: the mean
+# |yaw_deg error| over the ok frames of a straight arm (truth |bend| < 5) that have a yaw).
 score() {
   awk -F'\t' -v first="$3" '
     function wrap(d) { d = d - 360 * int((d + 180) / 360); if (d < -180) d += 360; return d < 0 ? -d : d }
@@ -78,21 +79,25 @@ score() {
       return lo + 1 < n ? e[lo] + (pos - lo) * (e[lo + 1] - e[lo]) : e[lo] }
     FNR == 1 { file++ }
     /^#/ || $1 == "frame" { next }
-    file == 1 && $1 >= first && $3 != "nan" && $4 != "nan" { tu[$1] = $3; tf[$1] = $4; motion++ }
+    file == 1 && $1 >= first && $3 != "nan" && $4 != "nan" {
+      tu[$1] = $3; tf[$1] = $4; ty[$1] = $5; straight[$1] = ($6 < 5 && $6 > -5); motion++
+    }
     file == 2 && ($1 in tu) && $3 == "ok" && $4 != "nan" && $5 != "nan" {
       a = wrap($4 - tu[$1]); b = wrap($5 - tf[$1])
       e[n++] = (a + b) / 2; sum += (a + b) / 2
       if ((a > b ? a : b) > 15) cw++
+      if (straight[$1] && $6 != "nan" && ty[$1] != "nan") { y = $6 - ty[$1]; ysum += y < 0 ? -y : y; yn++ }
     }
     END {
       for (i = 1; i < n; i++) { v = e[i]; for (j = i - 1; j >= 0 && e[j] > v; j--) e[j + 1] = e[j]; e[j + 1] = v }
-      printf "%d %d %.4f %s %s %s %s %.4f\n", motion, n, motion ? n / motion : 0, q(0.5), q(0.9),
-        n ? e[n - 1] : "nan", n ? sum / n : "nan", motion ? cw / motion : 0
+      printf "%d %d %.4f %s %s %s %s %.4f %s %d\n", motion, n, motion ? n / motion : 0, q(0.5),
+        q(0.9), n ? e[n - 1] : "nan", n ? sum / n : "nan", motion ? cw / motion : 0,
+        yn ? ysum / yn : "nan", yn
     }' "$1" "$2"
 }
 
 SCENES_TSV="$WORK/scenes.tsv"
-printf 'generator\ttier\tseed\trun\texit\tseconds\tmotion_frames\tok_frames\tcoverage\tmedian_deg\tp90_deg\tmax_deg\tmean_deg\tconfidently_wrong\n' >"$SCENES_TSV"
+printf 'generator\ttier\tseed\trun\texit\tseconds\tmotion_frames\tok_frames\tcoverage\tmedian_deg\tp90_deg\tmax_deg\tmean_deg\tconfidently_wrong\tyaw_straight_deg\tyaw_straight_frames\n' >"$SCENES_TSV"
 printf '| generator | run | tier | seed | coverage | median | p90 | max | confidently wrong |\n|---|---|---|---|---|---|---|---|---|\n'
 for gen in "${GENS[@]}"; do
   read -r lo hi <<<"$(seed_range "$gen")"
@@ -131,12 +136,13 @@ for gen in "${GENS[@]}"; do
           seconds=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
         fi
         if [[ -f "$out" ]]; then
-          read -r motion ok cov med p90 max mean cw <<<"$(score "$dir/truth.tsv" "$out" $((k + m)))"
+          read -r motion ok cov med p90 max mean cw yaw yawn <<<"$(score "$dir/truth.tsv" "$out" $((k + m)))"
         else
-          read -r motion ok cov med p90 max mean cw <<<"0 0 0 nan nan nan nan 0"
+          read -r motion ok cov med p90 max mean cw yaw yawn <<<"0 0 0 nan nan nan nan 0 nan 0"
         fi
-        printf '%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$gen" "$tier" "$seed" "$run" \
-          "$code" "$seconds" "$motion" "$ok" "$cov" "$med" "$p90" "$max" "$mean" "$cw" >>"$SCENES_TSV"
+        printf '%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$gen" "$tier" "$seed" \
+          "$run" "$code" "$seconds" "$motion" "$ok" "$cov" "$med" "$p90" "$max" "$mean" "$cw" "$yaw" \
+          "$yawn" >>"$SCENES_TSV"
         awk -v g="$gen" -v r="$run" -v t="$tier" -v s="$seed" -v c="$cov" -v a="$med" -v b="$p90" \
           -v x="$max" -v w="$cw" -v code="$code" 'function d(v) { return v == "nan" ? "-" : sprintf("%.1f°", v) }
           BEGIN { printf "| %s | %s | %s | %s | %.1f %% | %s | %s | %s | %.1f %%%s |\n", g, r, t, s, 100 * c,
@@ -163,15 +169,17 @@ awk -F'\t' '
     if ($8 == 0) empty[key]++
     if ($13 != "nan") { means[key] = means[key] " " $13; if ($10 > wmed[key]) wmed[key] = $10; if ($11 > wp90[key]) wp90[key] = $11 }
     if (!(key in wcov) || $9 < wcov[key]) wcov[key] = $9
+    if ($16 > 0) { ysum[key] += $15 * $16; yn[key] += $16 }
   }
   END {
-    print "| generator | run | tier | scenes | median | p90 | max | worst scene median | worst scene p90 | coverage | worst coverage | confidently wrong | no output |"
-    print "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+    print "| generator | run | tier | scenes | median | p90 | max | worst scene median | worst scene p90 | coverage | worst coverage | confidently wrong | no output | yaw, straight arm |"
+    print "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
     for (i = 1; i <= keys; i++) {
       k = order[i]; split(k, f, "\t"); m = substr(means[k], 2)
-      printf "| %s | %s | %s | %d | %s | %s | %s | %.1f° | %.1f° | %.1f %% | %.1f %% | %.1f %% | %d |\n", f[1], f[2], f[3],
-        scenes[k], quant(m, 0.5), quant(m, 0.9), quant(m, 1), wmed[k], wp90[k],
-        100 * ok[k] / motion[k], 100 * wcov[k], 100 * cwf[k] / motion[k], empty[k] + 0
+      printf "| %s | %s | %s | %d | %s | %s | %s | %.1f° | %.1f° | %.1f %% | %.1f %% | %.1f %% | %d | %s |\n",
+        f[1], f[2], f[3], scenes[k], quant(m, 0.5), quant(m, 0.9), quant(m, 1), wmed[k], wp90[k],
+        100 * ok[k] / motion[k], 100 * wcov[k], 100 * cwf[k] / motion[k], empty[k] + 0,
+        yn[k] ? sprintf("%.1f° (%d frames)", ysum[k] / yn[k], yn[k]) : "-"
     }
   }' "$SCENES_TSV" >"$WORK/table.md"
 echo

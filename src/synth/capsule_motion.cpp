@@ -38,9 +38,9 @@ bool Clear(const Person& p, double side, const std::vector<BodyPiece>& body, con
 }
 
 // The pose that puts the wrist at `target` with the elbow bent towards `pole` (body frame).
-ArmPose SolveArm(const Person& p, double side, cv::Vec3d target, const cv::Vec3d& pole) {
+ArmPose SolveArm(const Person& p, double side, const cv::Vec3d& target, const cv::Vec3d& pole) {
   const cv::Vec3d s(side * p.half_width, p.shoulder_y, 0);
-  cv::Vec3d d = target - s;
+  const cv::Vec3d d = target - s;
   double dist = Len(d);
   const double reach = p.upper + p.fore - 1e-3, inner = std::abs(p.upper - p.fore) + 0.05;
   dist = std::clamp(dist, inner, reach);
