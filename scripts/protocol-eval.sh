@@ -28,7 +28,7 @@ FIRST=""
 SCENES=8
 RUNS=bgsub,lk,lk+joints
 SIZE=320x240
-usage() { sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; }
 while (($# > 0)); do
   case "$1" in
     --build) BUILD="$2"; shift 2 ;;
@@ -61,7 +61,6 @@ seed_range() {
     random:tuning) echo "1000 1999" ;;
     capsule:heldout) echo "300000 300999" ;;
     capsule:tuning) echo "3000 3999" ;;
-    *) echo "protocol-eval: unknown generator '$1' (random or capsule)" >&2; exit 2 ;;
   esac
 }
 
@@ -96,16 +95,22 @@ score() {
     }' "$1" "$2"
 }
 
-SCENES_TSV="$WORK/scenes.tsv"
-printf 'generator\ttier\tseed\trun\texit\tseconds\tmotion_frames\tok_frames\tcoverage\tmedian_deg\tp90_deg\tmax_deg\tmean_deg\tconfidently_wrong\tyaw_straight_deg\tyaw_straight_frames\n' >"$SCENES_TSV"
-printf '| generator | run | tier | seed | coverage | median | p90 | max | confidently wrong |\n|---|---|---|---|---|---|---|---|---|\n'
 for gen in "${GENS[@]}"; do
+  [[ "$gen" == random || "$gen" == capsule ]] || { echo "protocol-eval: unknown generator '$gen' (random or capsule)" >&2; exit 2; }
   read -r lo hi <<<"$(seed_range "$gen")"
   first_seed="${FIRST:-$lo}"
   if ((first_seed < lo || first_seed + SCENES - 1 > hi)); then
     echo "protocol-eval: seeds $first_seed..$((first_seed + SCENES - 1)) leave the $SET range $lo-$hi of $gen" >&2
     exit 2
   fi
+done
+
+SCENES_TSV="$WORK/scenes.tsv"
+printf 'generator\ttier\tseed\trun\texit\tseconds\tmotion_frames\tok_frames\tcoverage\tmedian_deg\tp90_deg\tmax_deg\tmean_deg\tconfidently_wrong\tyaw_straight_deg\tyaw_straight_frames\n' >"$SCENES_TSV"
+printf '| generator | run | tier | seed | coverage | median | p90 | max | confidently wrong |\n|---|---|---|---|---|---|---|---|---|\n'
+for gen in "${GENS[@]}"; do
+  read -r lo hi <<<"$(seed_range "$gen")"
+  first_seed="${FIRST:-$lo}"
   for tier in "${TIER_LIST[@]}"; do
     for ((seed = first_seed; seed < first_seed + SCENES; seed++)); do
       dir="$WORK/$gen-$tier-$seed"
