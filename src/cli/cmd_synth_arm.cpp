@@ -4,6 +4,7 @@
 
 #include "args.h"
 #include "armmimic/synth/arm_scene.h"
+#include "armmimic/synth/capsule_arm_scene.h"
 #include "armmimic/synth/random_arm_scene.h"
 #include "flag_for_key.h"
 #include "synth_commands.h"
@@ -58,6 +59,7 @@ int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& globa
   std::vector<std::string> outdir;
   std::string codec = o.codec;
   bool random = false;
+  std::string generator = "room";
   synth::SceneTier tier = synth::SceneTier::kMedium;
   ArgParser p(
       "synth arm",
@@ -65,7 +67,9 @@ int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& globa
       "      [--background-frames K] [--standstill-frames M] [--frames N] [--noise S]\n"
       "      [--codec MJPG|XVID|H264] [--quality Q] [--contrast C] [--drift D] [--shadow]\n"
       "      [--head-motion] [--motion swing|bend|yaw|mixed] [--side left|right]\n"
-      "  armmimic-cli synth arm OUTDIR --random [--tier easy|medium|hard] [--seed N] [--size WxH]",
+      "  armmimic-cli synth arm OUTDIR --random [--tier easy|medium|hard] [--seed N] [--size WxH]\n"
+      "  armmimic-cli synth arm OUTDIR --generator capsule [--tier medium|hard] [--seed N]\n"
+      "      [--size WxH]",
       "Renders a person in a room following the thesis protocol: K frames of the empty scene,\n"
       "M standstill frames with both arms hanging, then N frames of one arm moving with known\n"
       "upper-arm and forearm directions. Writes OUTDIR/scene.avi, armlength.png (the moving arm\n"
@@ -76,7 +80,14 @@ int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& globa
       "rate and the motion; docs/synth.md); only --seed and --size go with it. Seeds " +
           std::to_string(synth::kTuningSeedFirst) + "-" + std::to_string(synth::kTuningSeedLast) +
           "\nare for tuning, seeds " + std::to_string(synth::kHeldOutSeedFirst) + "-" +
-          std::to_string(synth::kHeldOutSeedLast) + " are held out for measurement only.");
+          std::to_string(synth::kHeldOutSeedLast) +
+          " are held out for measurement only.\n"
+          "--generator capsule draws a person of shaded 3-D capsules under a perspective camera\n"
+          "instead (a second generator, docs/synth.md); tuning seeds " +
+          std::to_string(synth::kCapsuleTuningSeedFirst) + "-" +
+          std::to_string(synth::kCapsuleTuningSeedLast) + ", held out " +
+          std::to_string(synth::kCapsuleHeldOutSeedFirst) + "-" +
+          std::to_string(synth::kCapsuleHeldOutSeedLast) + ".");
   p.Positionals(&outdir, "OUTDIR", 1, 1);
   p.Custom("--seed", "N", "random seed for textures, colours, noise and mixed motion (default 1)",
            [&o](const std::string& v) { return ParseSeedArg(v, &o.seed); });
@@ -115,13 +126,46 @@ int RunSynthArm(const std::vector<std::string>& args, const GlobalOptions& globa
              return "";
            });
   p.Flag("--random", &random, "draw the whole scene from the seed and the tier (docs/synth.md)");
-  p.Custom("--tier", "TIER", "with --random: easy, medium (default) or hard",
+  p.Custom("--generator", "NAME",
+           "room (default: the fixed room), random (as --random) or capsule (3-D capsules)",
+           [&generator](const std::string& v) -> std::string {
+             if (v != "room" && v != "random" && v != "capsule") {
+               return "'" + v + "' is not room, random or capsule";
+             }
+             generator = v;
+             return "";
+           });
+  p.Custom("--tier", "TIER", "with --random: easy, medium (default) or hard; capsule: medium, hard",
            [&tier](const std::string& v) -> std::string {
              if (!synth::ParseSceneTier(v, &tier)) return "'" + v + "' is not easy, medium or hard";
              return "";
            });
   if (auto code = p.Parse(args)) return *code;
-  if (p.Given("--tier") && !random) return p.UsageError("--tier goes with --random");
+  if (random && generator != "room" && generator != "random") {
+    return p.UsageError("--random cannot be combined with --generator " + generator);
+  }
+  random = random || generator == "random";
+  const bool capsule = generator == "capsule";
+  if (p.Given("--tier") && !random && !capsule) {
+    return p.UsageError("--tier goes with --random or --generator capsule");
+  }
+  if (capsule) {
+    for (const char* flag : kDrawnFlags) {
+      if (p.Given(flag)) {
+        return p.UsageError(std::string(flag) +
+                            " cannot be combined with --generator capsule: the seed draws it");
+      }
+    }
+    if (tier == synth::SceneTier::kEasy) {
+      return p.UsageError("--tier easy: capsule scenes have the tiers medium and hard");
+    }
+    synth::CapsuleArmSceneOptions co;
+    co.seed = o.seed;
+    co.tier = tier;
+    co.size = o.size;
+    if (Status st = co.Check(); !st.ok()) return p.UsageError(Worded(st));
+    return WriteCapsuleScene(co, outdir[0], global);
+  }
   if (random) {
     for (const char* flag : kDrawnFlags) {
       if (p.Given(flag)) {

@@ -9,12 +9,20 @@
 #include "armmimic/core/status.h"
 #include "command.h"
 
+namespace armmimic::synth {
+struct CapsuleArmSceneOptions;
+}  // namespace armmimic::synth
+
 namespace armmimic::cli {
 
 int RunSynthArm(const std::vector<std::string>& args,
                 const GlobalOptions& global);  // cmd_synth_arm.cpp
 int RunSynthMarker(const std::vector<std::string>& args,
                    const GlobalOptions& global);  // cmd_synth_marker.cpp
+
+// Writes a capsule scene (synth arm --generator capsule) and reports it; cmd_synth_capsule.cpp.
+int WriteCapsuleScene(const synth::CapsuleArmSceneOptions& options, const std::string& outdir,
+                      const GlobalOptions& global);
 
 // Runs one scene writer (synth::WriteArmScene or WriteMarkerScene, given `progress` and `cancel`)
 // under an InterruptGuard with a progress bar of `total` steps, and reports its failure: an

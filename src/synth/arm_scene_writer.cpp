@@ -23,6 +23,16 @@ std::string Num(double v, int decimals) { return FormatNumber(v, decimals); }
 Status WriteSceneFolder(const ArmSceneSource& scene, const SceneVideo& video, const AngleMeta& meta,
                         const std::string& outdir, const std::function<void(int, int)>& progress,
                         const std::atomic<bool>* cancel) {
+  TruthFile truth;
+  truth.meta = meta;
+  for (int f = 0; f < scene.frame_count(); ++f) truth.rows.push_back(scene.Truth(f).ToRow());
+  return WriteSceneFolder(scene, video, truth, outdir, progress, cancel);
+}
+
+Status WriteSceneFolder(const ArmSceneSource& scene, const SceneVideo& video,
+                        const TruthFile& truth, const std::string& outdir,
+                        const std::function<void(int, int)>& progress,
+                        const std::atomic<bool>* cancel) {
   std::error_code ec;
   std::filesystem::create_directories(outdir, ec);
   if (ec || !std::filesystem::is_directory(outdir)) {
@@ -85,9 +95,6 @@ Status WriteSceneFolder(const ArmSceneSource& scene, const SceneVideo& video, co
   st = WriteImageAtomically(outdir + "/background.png", scene.EmptyBackground());
   if (!st.ok()) return st;
 
-  TruthFile truth;
-  truth.meta = meta;
-  for (int f = 0; f < scene.frame_count(); ++f) truth.rows.push_back(scene.Truth(f).ToRow());
   st = WriteTruthFile(outdir + "/truth.tsv", truth);
   if (!st.ok()) return st;
   // The video last, so a complete scene.avi means a complete folder.

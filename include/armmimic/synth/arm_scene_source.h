@@ -83,5 +83,10 @@ struct SceneVideo {
 Status WriteSceneFolder(const ArmSceneSource& scene, const SceneVideo& video, const AngleMeta& meta,
                         const std::string& outdir, const std::function<void(int, int)>& progress,
                         const std::atomic<bool>* cancel = nullptr);
+// The same with the whole truth file given (a scene whose truth has extra columns).
+Status WriteSceneFolder(const ArmSceneSource& scene, const SceneVideo& video,
+                        const TruthFile& truth, const std::string& outdir,
+                        const std::function<void(int, int)>& progress,
+                        const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace armmimic::synth
