@@ -13,7 +13,7 @@ namespace {
 
 // Table key -> the Designer name of the field that edits it. A joint map's field is its offset
 // (its sign is the combo box beside it); the limits are the rows of one table; the port's
-// fields are on the Link and Controller tabs.
+// fields are on the Link and Controller tabs, the profile and the timeouts on the Controller tab.
 const std::vector<std::pair<const char*, const char*>>& FieldNames() {
   static const std::vector<std::pair<const char*, const char*>> names = {
       {"planner.cutoff_hz", "cutoff"},
@@ -34,6 +34,9 @@ const std::vector<std::pair<const char*, const char*>>& FieldNames() {
       {"port.parity", "parityCombo"},
       {"port.stop_bits", "stopBitsCombo"},
       {"port.flow", "flowCombo"},
+      {"send.profile_path", "profileCombo"},
+      {"send.prompt_timeout_s", "promptTimeout"},
+      {"send.motion_timeout_s", "motionTimeout"},
   };
   return names;
 }
@@ -65,6 +68,7 @@ void BindRobotOptionKeys(QWidget* panel) {
     if (tip.isEmpty()) tip = RowTip(robot::MappingOptionFields(), "mapping", k);
     if (tip.isEmpty()) tip = RowTip(robot::LimitsOptionFields(), "limits", k);
     if (tip.isEmpty()) tip = RowTip(serial::PortOptionFields(), "port", k);
+    if (tip.isEmpty()) tip = RowTip(robot::SendOptionFields(), "send", k);
     if (keys.size() == 1 && !tip.isEmpty()) {
       w->setToolTip(w->toolTip().isEmpty() ? tip : w->toolTip() + "\n" + tip);
     }

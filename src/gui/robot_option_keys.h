@@ -1,8 +1,8 @@
 // The robot panel's fields named by the keys of the robot and serial option tables
 // (armmimic/robot/option_tables.h, armmimic/serial/port_table.h): each editor of a planner,
-// mapping, limits or port setting carries the property "optionKey" (e.g. "planner.cutoff_hz"),
-// so an error about a key (Status::key()) can be shown at its field, and the table's help and
-// unit complete its tooltip.
+// mapping, limits, port or send setting carries the property "optionKey" (e.g.
+// "planner.cutoff_hz"), so an error about a key (Status::key()) can be shown at its field, and the
+// table's help and unit complete its tooltip.
 #pragma once
 
 #include <QString>
