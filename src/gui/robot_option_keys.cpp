@@ -1,6 +1,8 @@
 #include "robot_option_keys.h"
 
+#include <QDoubleSpinBox>
 #include <QVariant>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -53,6 +55,26 @@ QString RowTip(const std::vector<OptionField<O>>& fields, const std::string& tab
   return tip + QString("\nDefault %1").arg(QString::fromStdString(OptionDefaultText(*f)));
 }
 
+// A spin box that edits the number row `key` takes the row's decimals and range: the panel
+// offers exactly what Check() accepts (an exclusive bound is one step inside; no upper bound
+// keeps the form's, since a spin box needs one). False when `key` is no number row of `fields`.
+template <typename O>
+bool ApplyRowRange(const std::vector<OptionField<O>>& fields, const std::string& table,
+                   const std::string& key, QDoubleSpinBox* box) {
+  if (key.rfind(table + ".", 0) != 0) return false;
+  const OptionField<O>* f = FindOptionField(fields, key.substr(table.size() + 1));
+  if (!f || f->kind != OptionKind::kDouble) return false;
+  box->setDecimals(f->decimals);
+  box->setMinimum(f->min_exclusive ? f->min + std::pow(10.0, -f->decimals) : f->min);
+  if (!std::isinf(f->max)) box->setMaximum(f->max);
+  return true;
+}
+
+void ApplyRowRange(const std::string& key, QDoubleSpinBox* box) {
+  if (ApplyRowRange(robot::PlannerOptionFields(), "planner", key, box)) return;
+  ApplyRowRange(robot::SendOptionFields(), "send", key, box);
+}
+
 }  // namespace
 
 void BindRobotOptionKeys(QWidget* panel) {
@@ -72,6 +94,7 @@ void BindRobotOptionKeys(QWidget* panel) {
     if (keys.size() == 1 && !tip.isEmpty()) {
       w->setToolTip(w->toolTip().isEmpty() ? tip : w->toolTip() + "\n" + tip);
     }
+    if (auto* box = qobject_cast<QDoubleSpinBox*>(w)) ApplyRowRange(k, box);
   }
 }
 

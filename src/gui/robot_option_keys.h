@@ -11,7 +11,8 @@
 namespace armmimic::gui {
 
 // Sets "optionKey" on the fields below `panel` (the robot panel with its Designer form) that edit
-// a table row, and adds the row's help and unit to each field's tooltip.
+// a table row, adds the row's help and unit to each field's tooltip, and gives a number field
+// its row's decimals and range.
 void BindRobotOptionKeys(QWidget* panel);
 
 // The field below `root` that edits the setting `key`, or nullptr when the panel offers none.
