@@ -1,13 +1,17 @@
 // The robot panel's fields against the robot tables: every number field that edits a row shows
 // the row's decimals and default and offers no value the row's range refuses; the offsets of the
 // joint maps show their rows' defaults; a value typed at a field's limit plans without a refusal
-// from Check() about that field.
+// from Check() about that field; the Controller tab's fields are saved under their rows' keys,
+// and the names earlier versions saved them under still load.
+#include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QSettings>
 #include <QTest>
 #include <cmath>
 #include <set>
 
 #include "armmimic/robot/option_tables.h"
+#include "armmimic/serial/port_table.h"
 #include "gui_fixture.h"
 #include "main_window.h"
 #include "robot_option_keys.h"
@@ -90,6 +94,69 @@ TEST_F(RobotOptionKeysTest, APlannerFieldAtEitherEndOfItsRangeIsNotRefusedForIt)
     }
     box->setValue(shown);
   }
+}
+
+TEST_F(RobotOptionKeysTest, TheControllerFieldsAreSavedUnderTheirTableKeys) {
+  TempDir dir;
+  const QString ini = QString::fromStdString(dir.file("settings.ini"));
+  {
+    gui::MainWindow w;
+    auto* data_bits = w.robotPanel()->findChild<QComboBox*>("dataBitsCombo");
+    auto* flow = w.robotPanel()->findChild<QComboBox*>("flowCombo");
+    data_bits->setCurrentIndex(data_bits->findData(7));
+    flow->setCurrentIndex(flow->findData(int(serial::FlowControl::kRtsCts)));
+    w.robotPanel()->findChild<QDoubleSpinBox*>("promptTimeout")->setValue(2.5);
+    QSettings s(ini, QSettings::IniFormat);
+    s.setValue("robot/baud", 1200);  // an old name, dropped on save
+    w.robotPanel()->save(s);
+    s.beginGroup("robot");
+    for (const auto& row : serial::PortOptionFields()) {
+      EXPECT_TRUE(s.contains(QString::fromStdString("port." + row.key))) << row.key;
+    }
+    for (const auto& row : robot::SendOptionFields()) {
+      EXPECT_TRUE(s.contains(QString::fromStdString("send." + row.key))) << row.key;
+    }
+    EXPECT_EQ(s.value("port.data_bits").toString(), "7");
+    EXPECT_EQ(s.value("port.flow").toString(), "rtscts");
+    EXPECT_EQ(s.value("send.prompt_timeout_s").toString(), "2.5");
+    EXPECT_FALSE(s.contains("baud"));
+  }
+  gui::MainWindow w;
+  QSettings s(ini, QSettings::IniFormat);
+  w.robotPanel()->load(s);
+  EXPECT_EQ(w.robotPanel()->findChild<QComboBox*>("dataBitsCombo")->currentData().toInt(), 7);
+  EXPECT_EQ(w.robotPanel()->findChild<QDoubleSpinBox*>("promptTimeout")->value(), 2.5);
+}
+
+TEST_F(RobotOptionKeysTest, ControllerFieldsSavedUnderTheOldNamesStillLoad) {
+  TempDir dir;
+  const QString ini = QString::fromStdString(dir.file("old.ini"));
+  {
+    QSettings s(ini, QSettings::IniFormat);
+    s.beginGroup("robot");
+    s.setValue("dataBits", 7);
+    s.setValue("parity", "E");
+    s.setValue("flow", "xonxoff");
+    s.setValue("motionTimeout", 90.0);
+    s.setValue("port", "/dev/ttyUSB3");
+  }
+  gui::MainWindow w;
+  QSettings s(ini, QSettings::IniFormat);
+  w.robotPanel()->load(s);
+  const serial::PortSettings p = [&] {
+    auto* panel = w.robotPanel();
+    serial::PortSettings out;
+    out.data_bits = panel->findChild<QComboBox*>("dataBitsCombo")->currentData().toInt();
+    out.parity = panel->findChild<QComboBox*>("parityCombo")->currentData().toChar().toLatin1();
+    out.flow = static_cast<serial::FlowControl>(
+        panel->findChild<QComboBox*>("flowCombo")->currentData().toInt());
+    return out;
+  }();
+  EXPECT_EQ(p.data_bits, 7);
+  EXPECT_EQ(p.parity, 'E');
+  EXPECT_EQ(p.flow, serial::FlowControl::kXonXoff);
+  EXPECT_EQ(w.robotPanel()->findChild<QDoubleSpinBox*>("motionTimeout")->value(), 90.0);
+  EXPECT_EQ(w.robotPanel()->findChild<QComboBox*>("portCombo")->currentText(), "/dev/ttyUSB3");
 }
 
 }  // namespace
