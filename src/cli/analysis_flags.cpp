@@ -2,6 +2,7 @@
 // Length: Register is one call per flag, a flat list in --help order.
 #include "analysis_flags.h"
 #include "flag_for_key.h"
+#include "table_flags.h"
 
 #include <map>
 #include <set>
@@ -51,8 +52,27 @@ std::string AnalysisFlags::ParamList() {
   return out;
 }
 
+namespace {
+
+// The row `key` of an engine's table (a row the table must have).
+template <typename O>
+const OptionField<O>& Row(const std::vector<OptionField<O>>& fields, const char* key) {
+  return *FindOptionField(fields, key);
+}
+
+// Which engines read a flag, before the row's help.
+RowFlagWords For(const char* engines, const char* metavar = "") {
+  RowFlagWords w;
+  w.prefix = std::string(engines) + ": ";
+  w.metavar = metavar;
+  return w;
+}
+
+}  // namespace
+
 void AnalysisFlags::Register(ArgParser& p) {
   AnalysisOptions& f = f_;
+  EngineOptions& e = f.engine;
   p.String("--engine", &engine_name_, "NAME", "bgsub, lk, marker or pose (required)");
   p.String("--background", &f.background_path, "BG.png", "bgsub/lk: the empty scene image");
   p.Int("--background-frames", &f.background_frames, "K",
@@ -63,10 +83,17 @@ void AnalysisFlags::Register(ArgParser& p) {
         "bgsub/lk: first standstill frame; pose: first frame (default 0; a camera or stream "
         "drops F frames)",
         0);
-  p.Int("--standstill-frames", &standstill_, "N", "bgsub/lk: standstill length (default 60)", 1,
-        100000);
-  p.Int("--threshold", &threshold_, "T", "bgsub: grey-level difference threshold (default 45)", 1,
-        254);
+  {
+    // One flag for the standstill of both engines; their rows agree (OptionTablesTest).
+    const auto& bgsub = Row(BgsubOptionFields(), "standstill_frames");
+    const auto& lk = Row(LkOptionFields(), "standstill_frames");
+    p.Custom(bgsub.flag, RowMetavar(bgsub), RowHelp(bgsub, For("bgsub/lk")),
+             [&bgsub, &lk, &e](const std::string& v) {
+               const std::string error = ParseRowValue(bgsub, v, &e.bgsub);
+               return error.empty() ? ParseRowValue(lk, v, &e.lk) : error;
+             });
+  }
+  AddRowFlag(p, Row(BgsubOptionFields(), "threshold"), &e.bgsub, For("bgsub"));
   auto point = [](std::optional<cv::Point2d>* out) {
     return [out](const std::string& v) {
       cv::Point2d pt;
@@ -87,21 +114,18 @@ void AnalysisFlags::Register(ArgParser& p) {
     if (e.empty()) f.roi = roi;
     return e;
   });
-  p.Double("--initial-upper", &f.engine.lk.initial_upper_deg, "DEG",
-           "lk: upper-arm direction at the start (default -90)");
-  p.Double("--initial-fore", &f.engine.lk.initial_fore_deg, "DEG",
-           "lk: forearm direction at the start (default -90)");
+  AddRowFlag(p, Row(LkOptionFields(), "initial_upper_deg"), &e.lk, For("lk"));
+  AddRowFlag(p, Row(LkOptionFields(), "initial_fore_deg"), &e.lk, For("lk"));
   p.String("--reference", &f.reference_path, "REF.png",
            "marker: the joint at zero yaw and zero bend");
-  p.Int("--low", &f.engine.marker.low, "L", "marker: lower grey level of the markers (default 20)",
-        0, 255);
-  p.Int("--high", &f.engine.marker.high, "H",
-        "marker: upper grey level of the markers (default 80)", 0, 255);
-  p.Double("--fov", &f.engine.marker.fov_deg, "D",
-           "marker: the camera's horizontal field of view, degrees (default 60; 0: a distant "
-           "camera)");
-  p.String("--side", &side_name_, "left|right",
-           "pose, lk --auto-calibrate: the person's own arm (default: the better seen)");
+  AddRowFlag(p, Row(MarkerOptionFields(), "low"), &e.marker, For("marker"));
+  AddRowFlag(p, Row(MarkerOptionFields(), "high"), &e.marker, For("marker"));
+  AddRowFlag(p, Row(MarkerOptionFields(), "fov_deg"), &e.marker, For("marker"));
+  {
+    // Read after the engine is known (CheckFor): lk takes it only with --auto-calibrate.
+    const auto& side = Row(PoseOptionFields(), "side");
+    p.String(side.flag, &side_name_, "left|right", RowHelp(side, For("pose, lk --auto-calibrate")));
+  }
   p.String("--model", &f.model_dir, "DIR",
            "pose, lk --auto-calibrate: the folder holding movenet-lightning.json and .bin");
   p.Flag("--auto-calibrate", &f.auto_calibrate,
@@ -188,10 +212,10 @@ void AnalysisFlags::ApplyGiven(const ArgParser& p, AnalysisOptions* o) const {
     o->calibrate_side = o->engine.pose.side;
   }
   if (p.Given("--standstill-frames")) {
-    o->engine.bgsub.standstill_frames = standstill_;
-    o->engine.lk.standstill_frames = standstill_;
+    o->engine.bgsub.standstill_frames = f.engine.bgsub.standstill_frames;
+    o->engine.lk.standstill_frames = f.engine.lk.standstill_frames;
   }
-  if (p.Given("--threshold")) o->engine.bgsub.threshold = threshold_;
+  if (p.Given("--threshold")) o->engine.bgsub.threshold = f.engine.bgsub.threshold;
   if (p.Given("--initial-upper")) o->engine.lk.initial_upper_deg = f.engine.lk.initial_upper_deg;
   if (p.Given("--initial-fore")) o->engine.lk.initial_fore_deg = f.engine.lk.initial_fore_deg;
   // An explicit grey window is used as given; otherwise the marker engine may shift it when the

@@ -48,8 +48,6 @@ class AnalysisFlags {
   AnalysisOptions f_;
   std::vector<std::string> params_;
   std::string engine_name_, side_name_;
-  int standstill_ = 60;
-  int threshold_ = BgsubOptions().threshold;
   bool thesis_ = false;
 };
 

@@ -91,10 +91,15 @@ ArgParser::ArgParser(std::string command, std::string synopsis, std::string desc
       description_(std::move(description)) {}
 
 void ArgParser::Flag(const std::string& names, bool* out, const std::string& help) {
+  Switch(names, help, [out] { *out = true; });
+}
+
+void ArgParser::Switch(const std::string& names, const std::string& help,
+                       std::function<void()> on) {
   Option o;
   o.names = SplitNames(names);
   o.help = help;
-  o.flag = out;
+  o.on_switch = std::move(on);
   options_.push_back(std::move(o));
 }
 
@@ -215,9 +220,9 @@ std::optional<int> ArgParser::Parse(const std::vector<std::string>& args) {
     const Option* o = FindOption(name);
     if (!o) return UsageError("unknown option " + name);
     given_.insert(LongName(o->names));
-    if (o->flag) {
+    if (o->on_switch) {
       if (inline_value) return UsageError(name + " takes no value");
-      *o->flag = true;
+      o->on_switch();
       continue;
     }
     std::string value;

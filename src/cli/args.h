@@ -20,6 +20,8 @@ class ArgParser {
 
   // `names` is "-o,--output" or "--threshold". `metavar` shows in the help ("N", "FILE").
   void Flag(const std::string& names, bool* out, const std::string& help);
+  // A flag without a value that calls `on` when given.
+  void Switch(const std::string& names, const std::string& help, std::function<void()> on);
   void String(const std::string& names, std::string* out, const std::string& metavar,
               const std::string& help);
   void Int(const std::string& names, int* out, const std::string& metavar, const std::string& help,
@@ -48,7 +50,7 @@ class ArgParser {
     std::string metavar;  // empty for flags
     std::string help;
     std::function<std::string(const std::string&)> parse;
-    bool* flag = nullptr;
+    std::function<void()> on_switch;  // set for a flag without a value
   };
   const Option* FindOption(const std::string& name) const;
 

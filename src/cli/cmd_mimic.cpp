@@ -17,12 +17,14 @@
 #include "armmimic/core/output_file.h"
 #include "armmimic/live/mimic_run.h"
 #include "armmimic/robot/live_log.h"
+#include "armmimic/robot/option_tables.h"
 #include "armmimic/serial/serial_link.h"
 #include "command.h"
 #include "flag_for_key.h"
 #include "interrupt.h"
 #include "planner_flags.h"
 #include "port_flags.h"
+#include "table_flags.h"
 
 namespace armmimic::cli {
 namespace {
@@ -108,7 +110,8 @@ std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* 
   AnalysisFlags analysis_flags;
   PlannerFlags planner_flags(&o.stream.planner, true);
   std::vector<std::string> videos;
-  std::string camera, stream_url, profile_path;
+  std::string camera, stream_url;
+  robot::SendSettings send;  // --profile
   bool realtime = false;
   ArgParser p("mimic", kSynopsis, kDescription + AnalysisFlags::ParamList());
   p.Positionals(&videos, "VIDEO", 0, 1);
@@ -120,12 +123,14 @@ std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* 
   analysis_flags.Register(p);
   AddPortFlags(p, &m->port);
   p.Flag("--dry-run", &m->dry_run, "print the commands with their times; open no port");
-  p.String("--profile", &profile_path, "FILE", "controller profile (docs/profiles/)");
+  AddRowFlag(p, *FindOptionField(robot::SendOptionFields(), "profile_path"), &send,
+             WithMetavar("FILE"));
   planner_flags.RegisterMapping(p);
   planner_flags.RegisterFilter(p);
   planner_flags.RegisterLimits(p);
-  p.Double("--stale-after", &o.stream.stale_after_s, "S",
-           "hold the robot when no frame was measured for this long (default 0.2)");
+  for (const OptionField<robot::LiveStreamOptions>& row : robot::LiveStreamOptionFields()) {
+    AddRowFlag(p, row, &o.stream);
+  }
   if (auto code = p.Parse(args)) return code;
   if (auto code = PickInput(p, videos, camera, stream_url, realtime, &o.analysis)) return code;
   if (auto code = analysis_flags.Finish(p, &o.analysis)) return code;
@@ -133,7 +138,10 @@ std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* 
     return p.UsageError("--port is required (or --dry-run; 'send --list-ports' lists the ports)");
   }
   if (const Status s = m->port.Check(); !m->dry_run && !s.ok()) return p.UsageError(Worded(s));
-  if (!(o.stream.stale_after_s > 0)) return p.UsageError("--stale-after must be > 0");
+  if (const Status s = CheckOptionFields(robot::LiveStreamOptionFields(), "live", o.stream);
+      !s.ok()) {
+    return p.UsageError(Worded(s));
+  }
   if (auto code = planner_flags.ParseTexts(p)) return code;
   o.stream.kind = o.analysis.engine.kind == EngineKind::kMarker ? robot::SourceKind::kMarker
                                                                 : robot::SourceKind::kArm;
@@ -150,11 +158,13 @@ std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* 
       !s.ok()) {
     return p.UsageError(s.message());
   }
-  if (!profile_path.empty()) {
-    const Status s = robot::ReadProfile(profile_path, &o.stream.profile);
+  if (!send.profile_path.empty()) {
+    const Status s = robot::ReadProfile(send.profile_path, &o.stream.profile);
     if (!s.ok()) return Fail(Worded(s));
   }
-  if (const Status s = o.stream.Check(); !s.ok()) return p.UsageError("--profile: " + s.message());
+  if (const Status s = o.stream.Check(); !s.ok()) {
+    return p.UsageError(s.key().empty() ? "--profile: " + s.message() : Worded(s));
+  }
   return std::nullopt;
 }
 

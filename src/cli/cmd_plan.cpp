@@ -7,6 +7,7 @@
 #include "args.h"
 #include "armmimic/core/angle_file.h"
 #include "armmimic/core/output_file.h"
+#include "armmimic/robot/option_tables.h"
 #include "armmimic/robot/planner.h"
 #include "armmimic/robot/profile.h"
 #include "armmimic/robot/val_program.h"
@@ -15,6 +16,7 @@
 #include "incomplete_input.h"
 #include "interrupt.h"
 #include "planner_flags.h"
+#include "table_flags.h"
 
 namespace armmimic::cli {
 namespace {
@@ -26,9 +28,13 @@ std::string Num(double v, int decimals) { return FormatNumber(v, decimals); }
 int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   robot::PlannerOptions o;
   std::vector<std::string> input;
-  std::string output, profile_path, source_kind = "auto";
-  std::string mode, program_name, gap = "interpolate", on_speed = "stretch";
+  std::string output, source_kind = "auto";
+  robot::SendSettings send;        // --profile
+  robot::ControllerProfile given;  // --mode, --program-name (over the profile's)
   PlannerFlags flags(&o, false);
+  const auto planner_row = [](const char* key) -> const OptionField<robot::PlannerOptions>& {
+    return *FindOptionField(robot::PlannerOptionFields(), key);
+  };
 
   ArgParser p(
       "plan",
@@ -52,19 +58,18 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
     p.String("--source", &source_kind, "auto|arm|marker",
              "which engine the angles come from (default auto: from the file)");
   });
-  flags.RegisterFilter(p, [&] {
-    p.String("--gap", &gap, "hold|interpolate", "how lost frames are filled (default interpolate)");
-  });
+  flags.RegisterFilter(p, [&] { AddRowFlag(p, planner_row("gap"), &o); });
   flags.RegisterLimits(p);
-  p.String("--on-speed", &on_speed, "stretch|refuse",
-           "a step faster than the speed limit stretches the time (default) or refuses");
-  p.Double("--fallback-fps", &o.fallback_fps, "F",
-           "rows per second when the file's times do not increase (default 1)");
-  p.String("--profile", &profile_path, "FILE",
-           "controller profile (docs/profiles/default.profile); default: built in");
-  p.String("--mode", &mode, "stream|program",
-           "stream DO MOVE lines, or upload a program and EXECUTE it (default: the profile's)");
-  p.String("--program-name", &program_name, "NAME", "program name in program mode");
+  AddRowFlag(p, planner_row("speed"), &o);
+  AddRowFlag(p, planner_row("fallback_fps"), &o, WithMetavar("FPS"));
+  AddRowFlag(p, *FindOptionField(robot::SendOptionFields(), "profile_path"), &send,
+             WithMetavar("FILE"));
+  RowFlagWords profile_words;
+  profile_words.default_note = ", or the --profile file's";
+  for (const OptionField<robot::ControllerProfile>& row : robot::ProfileOptionFields()) {
+    profile_words.metavar = row.kind == OptionKind::kText ? "NAME" : "";
+    AddRowFlag(p, row, &given, profile_words);
+  }
   bool strict = false;
   p.Flag("--strict", &strict,
          "refuse an angle file marked complete=no (exit 1; without it: a warning)");
@@ -73,40 +78,29 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   if (output.empty()) return p.UsageError("-o/--output: the VAL program to write is required");
   {
     std::vector<NamedPath> inputs = {{"ANGLES.tsv", input[0]}};
-    if (!profile_path.empty()) inputs.push_back({"--profile", profile_path});
+    if (!send.profile_path.empty()) inputs.push_back({"--profile", send.profile_path});
     if (Status s = CheckOutputs(inputs, {{"-o", output}}); !s.ok()) {
       return p.UsageError(s.message());
     }
   }
   InterruptGuard guard;
   if (auto code = flags.ParseTexts(p)) return *code;
-  if (gap == "hold") {
-    o.gap = robot::GapMode::kHold;
-  } else if (gap != "interpolate") {
-    return p.UsageError("--gap: '" + gap + "' is not hold or interpolate");
-  }
-  if (on_speed == "refuse") {
-    o.speed = robot::SpeedPolicy::kRefuse;
-  } else if (on_speed != "stretch") {
-    return p.UsageError("--on-speed: '" + on_speed + "' is not stretch or refuse");
-  }
   if (source_kind != "auto" && source_kind != "arm" && source_kind != "marker") {
     return p.UsageError("--source: '" + source_kind + "' is not auto, arm or marker");
   }
   robot::ControllerProfile profile;
-  if (!profile_path.empty()) {
-    const Status s = robot::ReadProfile(profile_path, &profile);
+  if (!send.profile_path.empty()) {
+    const Status s = robot::ReadProfile(send.profile_path, &profile);
     if (!s.ok()) {
       std::cerr << "armmimic-cli plan: " << s.message() << "\n";
       return kExitFailure;
     }
   }
-  if (!mode.empty() && !robot::ParseSendMode(mode, &profile.mode)) {
-    return p.UsageError("--mode: '" + mode + "' is not stream or program");
-  }
-  if (!program_name.empty()) profile.program_name = program_name;
+  if (p.Given("--mode")) profile.mode = given.mode;
+  if (p.Given("--program-name")) profile.program_name = given.program_name;
   if (Status s = profile.Check(); !s.ok()) {
-    return p.UsageError((program_name.empty() ? "--profile: " : "--program-name: ") + s.message());
+    return p.UsageError((p.Given("--program-name") ? "--program-name: " : "--profile: ") +
+                        s.message());
   }
 
   AngleFile angles;

@@ -14,6 +14,7 @@
 #include "armmimic/core/output_file.h"
 #include "armmimic/robot/journal.h"
 #include "armmimic/robot/link_protocol.h"
+#include "armmimic/robot/option_tables.h"
 #include "armmimic/robot/profile.h"
 #include "armmimic/robot/send_session.h"
 #include "armmimic/robot/send_setup.h"
@@ -27,6 +28,7 @@
 #include "planner_flags.h"
 #include "port_flags.h"
 #include "progress.h"
+#include "table_flags.h"
 
 namespace armmimic::cli {
 namespace {
@@ -39,10 +41,8 @@ struct SendOptions {
   bool restart = false;
   int resume_at = 0;
   bool list_ports = false;
-  bool strict = false;  // refuse an angle file marked complete=no
-  std::string profile_path;
-  double timeout_s = -1;
-  double motion_timeout_s = -1;
+  bool strict = false;           // refuse an angle file marked complete=no
+  robot::SendSettings settings;  // --profile, --timeout, --motion-timeout
   robot::JointLimits limits;
 };
 
@@ -132,15 +132,13 @@ std::optional<int> ParseSend(const std::vector<std::string>& args, SendOptions* 
   p.Flag("--list-ports", &o->list_ports, "list the serial ports found and exit");
   p.Flag("--strict", &o->strict,
          "refuse an angle file marked complete=no (exit 1; without it: a warning)");
-  p.String("--profile", &o->profile_path, "FILE", "controller profile (docs/profiles/)");
-  p.Double("--timeout", &o->timeout_s, "S",
-           "seconds to wait for the prompt after a non-motion line (profile: prompt_timeout_s)");
-  p.Double("--motion-timeout", &o->motion_timeout_s, "S",
-           "seconds to wait for the prompt after a motion line (profile: motion_timeout_s)");
-  p.Custom("--limits", "J2=-200:20,...", "override joint limits (degrees)",
+  for (const OptionField<robot::SendSettings>& row : robot::SendOptionFields()) {
+    AddRowFlag(p, row, &o->settings, WithMetavar(row.kind == OptionKind::kText ? "FILE" : ""));
+  }
+  p.Custom("--limits", "J<n>=MIN:MAX,...", LimitsFlagHelp(),
            [&](const std::string& v) { return robot::ParseLimitsOverride(v, &o->limits); });
-  p.Custom("--speed-limit", "DEG_S", "joint speed limits, one value or six",
-           [&](const std::string& v) { return robot::ParseSpeedLimits(v, &o->limits); });
+  AddRowFlag(p, *FindOptionField(robot::LimitsOptionFields(), "max_speed_deg_s"), &o->limits,
+             WithMetavar("DEG/S[,...]"));
   if (auto code = p.Parse(args)) return code;
   if (o->list_ports) return ListPorts();
   if (o->inputs.empty()) return p.UsageError("missing the angle file or VAL program to send");
@@ -148,10 +146,7 @@ std::optional<int> ParseSend(const std::vector<std::string>& args, SendOptions* 
     return p.UsageError("--port is required (or --dry-run; --list-ports lists the ports)");
   }
   if (o->resume && o->restart) return p.UsageError("--resume and --restart exclude each other");
-  if (p.Given("--timeout") && !(o->timeout_s > 0)) return p.UsageError("--timeout must be > 0");
-  if (p.Given("--motion-timeout") && !(o->motion_timeout_s > 0)) {
-    return p.UsageError("--motion-timeout must be > 0");
-  }
+  if (const Status s = o->settings.Check(); !s.ok()) return p.UsageError(Worded(s));
   {
     const Status s = o->port.Check();
     if (!o->dry_run && !s.ok()) return p.UsageError(Worded(s));
@@ -161,7 +156,9 @@ std::optional<int> ParseSend(const std::vector<std::string>& args, SendOptions* 
   if (!o->dry_run) {
     // The journal is send's one output: it may not be the program or the profile.
     std::vector<NamedPath> inputs = {{"INPUT", o->inputs[0]}};
-    if (!o->profile_path.empty()) inputs.push_back({"--profile", o->profile_path});
+    if (!o->settings.profile_path.empty()) {
+      inputs.push_back({"--profile", o->settings.profile_path});
+    }
     const Status s =
         CheckOutputs(inputs, {{"the journal", robot::SendJournal::PathFor(o->inputs[0])}});
     if (!s.ok()) return p.UsageError(s.message());
@@ -175,11 +172,7 @@ Status PrepareSend(const SendOptions& o, robot::ControllerProfile* profile,
                    robot::SendSession* session) {
   const std::string& input = o.inputs[0];
 
-  robot::SendSettings settings;
-  settings.profile_path = o.profile_path;
-  settings.prompt_timeout_s = std::max(0.0, o.timeout_s);
-  settings.motion_timeout_s = std::max(0.0, o.motion_timeout_s);
-  if (const Status s = robot::LoadSendProfile(settings, profile); !s.ok()) return s;
+  if (const Status s = robot::LoadSendProfile(o.settings, profile); !s.ok()) return s;
 
   robot::ValProgram program;
   {

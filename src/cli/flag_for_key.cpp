@@ -31,6 +31,9 @@ std::string FlagFromTables(const std::string& key) {
            TableFlag(robot::PlannerOptionFields(), "planner", key),
            TableFlag(robot::MappingOptionFields(), "mapping", key),
            TableFlag(robot::LimitsOptionFields(), "limits", key),
+           TableFlag(robot::SendOptionFields(), "send", key),
+           TableFlag(robot::LiveStreamOptionFields(), "live", key),
+           TableFlag(robot::ProfileOptionFields(), "profile", key),
            TableFlag(serial::PortOptionFields(), "port", key),
        }) {
     if (!flag.empty()) return flag;

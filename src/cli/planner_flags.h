@@ -1,6 +1,7 @@
 // PlannerFlags: the mapping, filter, keyframe and limit flags `plan` and `mimic` share, parsed
 // into one robot::PlannerOptions with the same checks and messages ("the same mapping, limits,
-// speed limit, filter and deadband as plan").
+// speed limit, filter and deadband as plan"). Each flag comes from its row of the robot tables
+// (table_flags.h): flag, help, default and range.
 #pragma once
 
 #include <functional>
@@ -11,6 +12,10 @@
 #include "armmimic/robot/planner.h"
 
 namespace armmimic::cli {
+
+// The help of --limits, which sets both limits rows in its own J<n>=MIN:MAX form: the rows'
+// labels and defaults in that form.
+std::string LimitsFlagHelp();
 
 class PlannerFlags {
  public:
@@ -26,26 +31,20 @@ class PlannerFlags {
   // --limits, --speed-limit, --clamp.
   void RegisterLimits(ArgParser& p);
 
-  // After Parse: the texts of --limits, --speed-limit, --hold, --j2/j3-source. Exit code of a
-  // usage error, naming the flag.
+  // After Parse: the text of --limits. Exit code of a usage error, naming the flag.
   std::optional<int> ParseTexts(const ArgParser& p);
   // Sets the mapping for `kind` (its defaults, then the flags given) and checks every option.
   std::optional<int> Finish(const ArgParser& p, robot::SourceKind kind, bool follow_file_kind);
 
  private:
-  struct MapFlag {
-    bool given = false;
-    robot::JointMap map;
-  };
   // Registers the flag of the planner table's number row `key`; `live_help` replaces the row's
   // help for the causal planner.
   void NumberFlag(ArgParser& p, const char* key, const char* live_help);
 
   robot::PlannerOptions* o_;
   bool live_;
-  MapFlag map_[3];
-  std::string limits_text_, speed_text_, hold_text_, j2_source_, j3_source_;
-  robot::JointArray hold_{};
+  robot::MappingOptions given_mapping_;  // the mapping flags' values; Finish applies those given
+  std::string limits_text_;
 };
 
 }  // namespace armmimic::cli

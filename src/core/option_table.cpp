@@ -3,6 +3,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <cmath>
 
 #include "armmimic/core/angle_file.h"
 #include "armmimic/core/text.h"
@@ -40,6 +41,14 @@ bool ParseOptionBool(const std::string& text, bool* out) {
 
 bool ParseOptionNumber(const std::string& text, double* out) {
   return ParseFiniteDouble(text, out);
+}
+
+std::string OptionRefusedNumberText(double v) {
+  if (std::isnan(v)) return "nan";
+  const std::string shortest = OptionNumberText(v);
+  double back = 0;
+  if (ParseFiniteDouble(shortest, &back) && back == v) return shortest;
+  return OptionExactNumberText(v);
 }
 
 std::string OptionNoun(const std::string& label) {

@@ -9,6 +9,8 @@
 #include <QPushButton>
 #include <QSettings>
 
+#include "armmimic/robot/option_tables.h"
+#include "armmimic/serial/port_table.h"
 #include "recent_files.h"
 #include "ui_robot_panel.h"
 
@@ -26,6 +28,39 @@ QStringList InstalledProfiles() {
   }
   found.removeDuplicates();
   return found;
+}
+
+// The names earlier versions saved the port's line settings and the send settings under; they
+// are still read, and dropped on the next save.
+constexpr const char* kLegacyKeys[] = {"baud", "dataBits", "parity",        "stopBits",
+                                       "flow", "profile",  "promptTimeout", "motionTimeout"};
+
+// A saved value as text (an INI file reads a value with commas back as a list).
+std::string SavedText(const QVariant& v) {
+  return (v.typeId() == QMetaType::QStringList ? v.toStringList().join(',') : v.toString())
+      .toStdString();
+}
+
+// Reads the rows of `fields` saved under "TABLE.KEY" into `o`; `skip` names a row saved
+// elsewhere. An unreadable value (a hand-edited file) keeps the setting as it is.
+template <typename O>
+void LoadRows(QSettings& s, const std::vector<OptionField<O>>& fields, const std::string& table,
+              const std::string& skip, O* o) {
+  for (const OptionField<O>& row : fields) {
+    const std::string key = table + "." + row.key;
+    if (row.key == skip || !s.contains(QString::fromStdString(key))) continue;
+    SetOptionText(row, key, SavedText(s.value(QString::fromStdString(key))), o);
+  }
+}
+
+template <typename O>
+void SaveRows(QSettings& s, const std::vector<OptionField<O>>& fields, const std::string& table,
+              const std::string& skip, const O& o) {
+  for (const OptionField<O>& row : fields) {
+    if (row.key == skip) continue;
+    s.setValue(QString::fromStdString(table + "." + row.key),
+               QString::fromStdString(OptionExactText(row, o)));
+  }
 }
 
 }  // namespace
@@ -146,15 +181,11 @@ void ControllerSettings::chooseProfileFile() {
 }
 
 void ControllerSettings::save(QSettings& s) const {
-  const serial::PortSettings p = portSettings(QString());
-  s.setValue("baud", p.baud);
-  s.setValue("dataBits", p.data_bits);
-  s.setValue("parity", QString(QChar(p.parity)));
-  s.setValue("stopBits", p.stop_bits);
-  s.setValue("flow", serial::FlowControlName(p.flow));
-  s.setValue("profile", shownProfilePath());
-  s.setValue("promptTimeout", ui_.promptTimeout->value());
-  s.setValue("motionTimeout", ui_.motionTimeout->value());
+  // Under the keys of the port's and the send's table rows ("port.baud", "send.profile_path");
+  // the device itself is the panel's port field, saved by the panel.
+  for (const char* legacy : kLegacyKeys) s.remove(legacy);
+  SaveRows(s, serial::PortOptionFields(), "port", "port", portSettings(QString()));
+  SaveRows(s, robot::SendOptionFields(), "send", "", sendSettings());
 }
 
 void ControllerSettings::load(QSettings& s) {
@@ -165,10 +196,16 @@ void ControllerSettings::load(QSettings& s) {
   if (!parity.isEmpty()) p.parity = parity.at(0).toLatin1();
   p.stop_bits = s.value("stopBits", p.stop_bits).toInt();
   serial::ParseFlowControl(s.value("flow", "none").toString().toStdString(), &p.flow);
+  LoadRows(s, serial::PortOptionFields(), "port", "port", &p);
   setPortSettings(p);
-  ui_.promptTimeout->setValue(s.value("promptTimeout", 0.0).toDouble());
-  ui_.motionTimeout->setValue(s.value("motionTimeout", 0.0).toDouble());
-  const QString profile = s.value("profile").toString();
+  robot::SendSettings send;
+  send.profile_path = s.value("profile").toString().toStdString();
+  send.prompt_timeout_s = s.value("promptTimeout", 0.0).toDouble();
+  send.motion_timeout_s = s.value("motionTimeout", 0.0).toDouble();
+  LoadRows(s, robot::SendOptionFields(), "send", "", &send);
+  ui_.promptTimeout->setValue(send.prompt_timeout_s);
+  ui_.motionTimeout->setValue(send.motion_timeout_s);
+  const QString profile = QString::fromStdString(send.profile_path);
   // A profile file that went away is named in Messages; the built-in profile is used meanwhile.
   if (!profile.isEmpty() && !setProfileFile(profile)) setProfileFile(QString());
 }

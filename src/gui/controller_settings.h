@@ -2,7 +2,9 @@
 // controller, as `armmimic-cli send` takes them: the port's baud, data bits, parity, stop bits
 // and flow control (serial::PortSettings), the controller profile (the built-in one or a file),
 // and the two timeouts. It fills the same structs the CLI's flags fill and loads the profile
-// through robot::LoadSendProfile, so both shells read a profile file the same way.
+// through robot::LoadSendProfile, so both shells read a profile file the same way. Its fields are
+// saved under the keys of their table rows ("port.baud", "send.prompt_timeout_s"); the names
+// earlier versions used are still read.
 #pragma once
 
 #include <QObject>

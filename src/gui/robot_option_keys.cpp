@@ -1,6 +1,8 @@
 #include "robot_option_keys.h"
 
+#include <QDoubleSpinBox>
 #include <QVariant>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,7 +15,7 @@ namespace {
 
 // Table key -> the Designer name of the field that edits it. A joint map's field is its offset
 // (its sign is the combo box beside it); the limits are the rows of one table; the port's
-// fields are on the Link and Controller tabs.
+// fields are on the Link and Controller tabs, the profile and the timeouts on the Controller tab.
 const std::vector<std::pair<const char*, const char*>>& FieldNames() {
   static const std::vector<std::pair<const char*, const char*>> names = {
       {"planner.cutoff_hz", "cutoff"},
@@ -34,6 +36,9 @@ const std::vector<std::pair<const char*, const char*>>& FieldNames() {
       {"port.parity", "parityCombo"},
       {"port.stop_bits", "stopBitsCombo"},
       {"port.flow", "flowCombo"},
+      {"send.profile_path", "profileCombo"},
+      {"send.prompt_timeout_s", "promptTimeout"},
+      {"send.motion_timeout_s", "motionTimeout"},
   };
   return names;
 }
@@ -48,6 +53,26 @@ QString RowTip(const std::vector<OptionField<O>>& fields, const std::string& tab
   QString tip = QString::fromStdString(f->help);
   if (!f->unit.empty()) tip += QString(" (%1)").arg(QString::fromStdString(f->unit));
   return tip + QString("\nDefault %1").arg(QString::fromStdString(OptionDefaultText(*f)));
+}
+
+// A spin box that edits the number row `key` takes the row's decimals and range: the panel
+// offers exactly what Check() accepts (an exclusive bound is one step inside; no upper bound
+// keeps the form's, since a spin box needs one). False when `key` is no number row of `fields`.
+template <typename O>
+bool ApplyRowRange(const std::vector<OptionField<O>>& fields, const std::string& table,
+                   const std::string& key, QDoubleSpinBox* box) {
+  if (key.rfind(table + ".", 0) != 0) return false;
+  const OptionField<O>* f = FindOptionField(fields, key.substr(table.size() + 1));
+  if (!f || f->kind != OptionKind::kDouble) return false;
+  box->setDecimals(f->decimals);
+  box->setMinimum(f->min_exclusive ? f->min + std::pow(10.0, -f->decimals) : f->min);
+  if (!std::isinf(f->max)) box->setMaximum(f->max);
+  return true;
+}
+
+void ApplyRowRange(const std::string& key, QDoubleSpinBox* box) {
+  if (ApplyRowRange(robot::PlannerOptionFields(), "planner", key, box)) return;
+  ApplyRowRange(robot::SendOptionFields(), "send", key, box);
 }
 
 }  // namespace
@@ -65,9 +90,11 @@ void BindRobotOptionKeys(QWidget* panel) {
     if (tip.isEmpty()) tip = RowTip(robot::MappingOptionFields(), "mapping", k);
     if (tip.isEmpty()) tip = RowTip(robot::LimitsOptionFields(), "limits", k);
     if (tip.isEmpty()) tip = RowTip(serial::PortOptionFields(), "port", k);
+    if (tip.isEmpty()) tip = RowTip(robot::SendOptionFields(), "send", k);
     if (keys.size() == 1 && !tip.isEmpty()) {
       w->setToolTip(w->toolTip().isEmpty() ? tip : w->toolTip() + "\n" + tip);
     }
+    if (auto* box = qobject_cast<QDoubleSpinBox*>(w)) ApplyRowRange(k, box);
   }
 }
 

@@ -1,6 +1,6 @@
 // The robot panel's saved settings: the plan's mapping, filter and limits, the port and the
-// Controller tab's fields (QSettings group "robot"). The plan settings are saved under the keys
-// of their option table rows; the names earlier versions used are still read.
+// Controller tab's fields (QSettings group "robot"). Every setting is saved under the key of its
+// option table row; the names earlier versions used are still read.
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -55,7 +55,8 @@ void RobotPanel::save(QSettings& s) const {
   for (const auto& [key, value] : PanelSettings(const_cast<RobotPanel*>(this), o)) {
     s.setValue(QString::fromStdString(key), QString::fromStdString(value));
   }
-  s.setValue("port", port_->currentText());
+  s.remove("port");  // the name earlier versions used
+  s.setValue("port.port", port_->currentText());
   controller_->save(s);
   s.endGroup();
 }
@@ -101,7 +102,7 @@ void RobotPanel::load(QSettings& s) {
     // An unreadable value (a hand-edited file) keeps the setting as it is.
     robot::SetPlannerSetting(key + "=" + text.toStdString(), &o);
   }
-  const QString port = s.value("port").toString();
+  const QString port = s.value(s.contains("port.port") ? "port.port" : "port").toString();
   controller_->load(s);
   s.endGroup();
   setMappingKind(saved_kind);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "armmimic/core/text.h"
+#include "armmimic/robot/option_tables.h"
 
 namespace armmimic::robot {
 
@@ -16,8 +17,7 @@ Status LiveStreamOptions::Check() const {
         "live mimicking streams one DO MOVE at a time: the profile's mode must "
         "be stream, not program");
   }
-  if (!(stale_after_s > 0)) return Status::Error("the stale-frame timeout must be > 0 s");
-  return Status::Ok();
+  return CheckOptionFields(LiveStreamOptionFields(), "live", *this);  // the stale-frame timeout
 }
 
 Status LiveStream::Begin(const LiveStreamOptions& options) {

@@ -1,6 +1,7 @@
 // The robot layer's option tables: one row per setting of the planner, the mapping, the joint
-// limits and the link (option_tables.h). Defaults are the structs' own; the robot tests check
-// each table against its struct.
+// limits, the link, a send's profile and timeouts, the live stream and the profile's overrides
+// (option_tables.h). Defaults are the structs' own; the robot tests check each table against
+// its struct.
 #include "armmimic/robot/option_tables.h"
 
 #include <sstream>
@@ -17,6 +18,9 @@ using P = PlannerOptions;
 using M = MappingOptions;
 using L = JointLimits;
 using K = LinkSettings;
+using S = SendSettings;
+using LS = LiveStreamOptions;
+using CP = ControllerProfile;
 
 std::string JoinNumbers(const double* v, int n) {
   std::string out;
@@ -93,8 +97,10 @@ const std::vector<OptionField<PlannerOptions>>& PlannerOptionFields() {
           .AboveMin()
           .Unit("s")
           .Flag("--max-interval"),
-      Bool<P>("clamp", &P::clamp, false, "Clamp to the limits",
-              "clamp targets outside the limits instead of refusing (live: holding)")
+      Bool<P>(
+          "clamp", &P::clamp, false, "Clamp to the limits",
+          "clamp targets outside the limits (reported) instead of refusing them (live: instead of "
+          "holding the robot)")
           .Flag("--clamp")
           .Main(),
       Enum<P>("speed", &P::speed, SpeedPolicy::kStretch, {"stretch", "refuse"},
@@ -111,12 +117,13 @@ const std::vector<OptionField<PlannerOptions>>& PlannerOptionFields() {
 
 const std::vector<OptionField<MappingOptions>>& MappingOptionFields() {
   static const std::vector<OptionField<M>> fields = {
-      Map<&M::j1>("j1", "+1,0", "--map-j1", "J1 from yaw", "sign (+1/-1) and offset").Main(),
+      Map<&M::j1>("j1", "+1,0", "--map-j1", "J1 from yaw", "J1 from yaw: sign (+1/-1) and offset")
+          .Main(),
       Map<&M::j2>("j2", "-1,0", "--map-j2", "J2",
-                  "from elevation (arm) or bend (marker): sign,offset (marker default -1,-90)")
+                  "J2 from elevation (arm) or bend (marker, there -1,-90 by default): sign,offset")
           .Main(),
       Map<&M::j3>("j3", "-1,0", "--map-j3", "J3",
-                  "from flexion (arm; marker: held at the offset): sign,offset")
+                  "J3 from flexion (arm; marker: held at the offset): sign,offset")
           .Main(),
       Bool<M>("mirror", &M::mirror, false, "Mirror",
               "the person is seen mirrored: yaw turns J1 the other way (and signed sources flip)")
@@ -187,6 +194,60 @@ const std::vector<OptionField<LinkSettings>>& LinkOptionFields() {
               "a '*' prompt counts only after this long without more bytes (it may start an "
               "error line)")
           .Unit("s"),
+  };
+  return fields;
+}
+
+const std::vector<OptionField<SendSettings>>& SendOptionFields() {
+  static const std::vector<OptionField<S>> fields = {
+      Text<S>(
+          "profile_path", "", [](const S& o) { return o.profile_path; },
+          [](const std::string& text, S* o) {
+            o->profile_path = text;
+            return std::string();
+          },
+          "Controller profile",
+          "controller profile file (docs/profiles/); none: the built-in profile")
+          .Flag("--profile")
+          .Main(),
+      Real<S>("prompt_timeout_s", &S::prompt_timeout_s, 0, 0, kNoMax, 1, "Prompt timeout",
+              "time to wait for the prompt after a non-motion line; 0: the profile's "
+              "prompt_timeout_s")
+          .Unit("s")
+          .Flag("--timeout"),
+      Real<S>("motion_timeout_s", &S::motion_timeout_s, 0, 0, kNoMax, 1, "Motion timeout",
+              "time to wait for the prompt after a motion line; 0: the profile's "
+              "motion_timeout_s")
+          .Unit("s")
+          .Flag("--motion-timeout"),
+  };
+  return fields;
+}
+
+const std::vector<OptionField<LiveStreamOptions>>& LiveStreamOptionFields() {
+  static const std::vector<OptionField<LS>> fields = {
+      Real<LS>("stale_after_s", &LS::stale_after_s, 0.2, 0, kNoMax, 2, "Stale-frame timeout",
+               "hold the robot when no frame was measured for this long")
+          .AboveMin()
+          .Unit("s")
+          .Flag("--stale-after"),
+  };
+  return fields;
+}
+
+const std::vector<OptionField<ControllerProfile>>& ProfileOptionFields() {
+  static const std::vector<OptionField<CP>> fields = {
+      Enum<CP>("mode", &CP::mode, SendMode::kStream, {"stream", "program"}, "Send mode",
+               "stream DO MOVE lines, or upload a program and EXECUTE it")
+          .Flag("--mode"),
+      Text<CP>(
+          "program_name", "MIMIC", [](const CP& o) { return o.program_name; },
+          [](const std::string& text, CP* o) {
+            o->program_name = text;  // its rules (1..15 letters, digits, '_', '.') are Check()'s
+            return std::string();
+          },
+          "Program name", "program name in program mode")
+          .Flag("--program-name"),
   };
   return fields;
 }

@@ -1,8 +1,11 @@
 #include "armmimic/robot/send_setup.h"
 
 #include "armmimic/robot/journal.h"
+#include "armmimic/robot/option_tables.h"
 
 namespace armmimic::robot {
+
+Status SendSettings::Check() const { return CheckOptionFields(SendOptionFields(), "send", *this); }
 
 Status LoadSendProfile(const SendSettings& settings, ControllerProfile* profile) {
   *profile = ControllerProfile::Default();
@@ -10,10 +13,7 @@ Status LoadSendProfile(const SendSettings& settings, ControllerProfile* profile)
     const Status s = ReadProfile(settings.profile_path, profile);
     if (!s.ok()) return s;
   }
-  if (settings.prompt_timeout_s < 0 || settings.motion_timeout_s < 0) {
-    return Status::Error(settings.prompt_timeout_s < 0 ? "prompt timeout must be > 0"
-                                                       : "motion timeout must be > 0");
-  }
+  if (const Status s = settings.Check(); !s.ok()) return s;
   if (settings.prompt_timeout_s > 0) profile->prompt_timeout_s = settings.prompt_timeout_s;
   if (settings.motion_timeout_s > 0) profile->motion_timeout_s = settings.motion_timeout_s;
   return Status::Ok();

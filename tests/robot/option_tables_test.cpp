@@ -1,6 +1,6 @@
 // The robot layer's option tables against their structs: documented defaults equal the structs'
 // own, every value written reads back the same, and Check() refuses an out-of-range value with
-// the key of its row.
+// the key of its row, repeating the value.
 #include "armmimic/robot/option_tables.h"
 
 #include <gtest/gtest.h>
@@ -54,6 +54,31 @@ TEST(RobotOptionTablesTest, DefaultsAreTheStructsAndValuesReadBack) {
   k.wake_attempts = 5;
   k.prompt_settle_s = 0.25;
   CheckDefaultsAndRoundTrip(LinkOptionFields(), "link", k);
+  SendSettings s;
+  s.profile_path = "docs/profiles/slow controller.profile";
+  s.prompt_timeout_s = 2.5;
+  s.motion_timeout_s = 90;
+  CheckDefaultsAndRoundTrip(SendOptionFields(), "send", s);
+  LiveStreamOptions live;
+  live.stale_after_s = 0.35;
+  CheckDefaultsAndRoundTrip(LiveStreamOptionFields(), "live", live);
+  ControllerProfile profile;
+  profile.mode = SendMode::kProgram;
+  profile.program_name = "ARM2";
+  CheckDefaultsAndRoundTrip(ProfileOptionFields(), "profile", profile);
+}
+
+TEST(RobotOptionTablesTest, SendAndLiveChecksAreTheirTablesRanges) {
+  SendSettings s;
+  EXPECT_TRUE(s.Check().ok());  // 0: the profile's timeouts
+  s.motion_timeout_s = -1;
+  EXPECT_EQ(s.Check().key(), "send.motion_timeout_s");
+  EXPECT_EQ(s.Check().message(), "motion timeout is -1 s; it must be >= 0 s");
+  LiveStreamOptions live;
+  EXPECT_TRUE(live.Check().ok());
+  live.stale_after_s = 0;
+  EXPECT_EQ(live.Check().key(), "live.stale_after_s");
+  EXPECT_EQ(live.Check().message(), "stale-frame timeout is 0 s; it must be > 0 s");
 }
 
 TEST(RobotOptionTablesTest, CheckNamesTheKeyOfTheRowOutOfRange) {
@@ -61,15 +86,15 @@ TEST(RobotOptionTablesTest, CheckNamesTheKeyOfTheRowOutOfRange) {
   EXPECT_TRUE(o.Check().ok());
   o.cutoff_hz = -1;
   EXPECT_EQ(o.Check().key(), "planner.cutoff_hz");
-  EXPECT_EQ(o.Check().message(), "cutoff must be >= 0 Hz");
+  EXPECT_EQ(o.Check().message(), "cutoff is -1 Hz; it must be >= 0 Hz");
   o = PlannerOptions();
   o.max_jump_deg_s = 0;
   EXPECT_EQ(o.Check().key(), "planner.max_jump_deg_s");
-  EXPECT_EQ(o.Check().message(), "max jump speed must be > 0 deg/s");
+  EXPECT_EQ(o.Check().message(), "max jump speed is 0 deg/s; it must be > 0 deg/s");
   o = PlannerOptions();
   o.min_interval_s = 2;  // above the max interval (1)
   EXPECT_EQ(o.Check().key(), "planner.max_interval_s");
-  EXPECT_EQ(o.Check().message(), "max interval must not be below the min interval");
+  EXPECT_EQ(o.Check().message(), "max interval is 1 s; it must not be below the min interval 2 s");
   o = PlannerOptions();
   o.limits.max_speed_deg_s[4] = 0;
   EXPECT_EQ(o.Check().key(), "limits.max_speed_deg_s");

@@ -173,10 +173,22 @@ Status SetOptionText(const OptionField<O>& f, const std::string& name, const std
 // The label of a row as a noun in a sentence: "Max. interval" -> "max. interval".
 std::string OptionNoun(const std::string& label);
 
+// A value a check refused, for its message: the shortest form that is exactly `v` ("0.3",
+// "1e-05", "nan").
+std::string OptionRefusedNumberText(double v);
+
+// The value `v` of the number row `f` with its unit, for a message: "-1 Hz", "4", "0.5 s".
+template <typename O>
+std::string OptionRefusedText(const OptionField<O>& f, double v) {
+  const std::string text =
+      f.kind == OptionKind::kInt ? OptionValueText(f, v) : OptionRefusedNumberText(v);
+  return f.unit.empty() ? text : text + " " + f.unit;
+}
+
 // The range checks of a settings struct: every numeric field of `fields` in its range, and the
 // relations between fields (rules of another shape stay in the struct's Check(), after these).
-// Errors carry the key "<table>.<key>" and say what the setting must be, in the table's words
-// ("cutoff must be >= 0 Hz").
+// Errors carry the key "<table>.<key>", repeat the refused value and say what the setting must
+// be, in the table's words ("cutoff is -1 Hz; it must be >= 0 Hz").
 template <typename O>
 Status CheckOptionFields(const std::vector<OptionField<O>>& fields, const std::string& table,
                          const O& o) {
@@ -190,7 +202,8 @@ Status CheckOptionFields(const std::vector<OptionField<O>>& fields, const std::s
     } else {
       must += "in [" + OptionValueText(f, f.min) + ", " + OptionValueText(f, f.max) + "]";
     }
-    return Status::Error(table + "." + f.key, OptionNoun(f.label) + " must be " + must +
+    return Status::Error(table + "." + f.key, OptionNoun(f.label) + " is " +
+                                                  OptionRefusedText(f, v) + "; it must be " + must +
                                                   (f.unit.empty() ? "" : " " + f.unit));
   }
   for (const auto& f : fields) {
@@ -208,9 +221,9 @@ Status CheckOptionFields(const std::vector<OptionField<O>>& fields, const std::s
     }
     return Status::Error(
         table + "." + upper->key,
-        OptionNoun(upper->label) +
-            (f.strictly_below ? " must be above the " : " must not be below the ") +
-            OptionNoun(f.label));
+        OptionNoun(upper->label) + " is " + OptionRefusedText(*upper, u) +
+            (f.strictly_below ? "; it must be above the " : "; it must not be below the ") +
+            OptionNoun(f.label) + " " + OptionRefusedText(f, v));
   }
   return Status::Ok();
 }

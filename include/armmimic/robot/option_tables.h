@@ -1,7 +1,10 @@
 // The robot layer's option tables (armmimic/core/option_table.h): the planner ("planner.*"),
-// the joint mapping ("mapping.*"), the joint limits ("limits.*") and the link's timing
-// ("link.*"). The structs' Check() uses them, the CLI binds its flags to their keys, and a
-// planned program's header records every value (OptionTableValues) so that it can be read back.
+// the joint mapping ("mapping.*"), the joint limits ("limits.*"), the link's timing ("link.*"),
+// what a send reads besides the program ("send.*": the profile file and the timeouts), the live
+// stream's own setting ("live.*") and the two profile settings `plan` can override
+// ("profile.*": the mode and the program name). The structs' Check() uses them, the CLI
+// registers its flags from their rows, and a planned program's header records every planner,
+// mapping and limits value (OptionTableValues) so that it can be read back.
 #pragma once
 
 #include <string>
@@ -11,8 +14,11 @@
 #include "armmimic/core/option_table.h"
 #include "armmimic/robot/limits.h"
 #include "armmimic/robot/link_protocol.h"
+#include "armmimic/robot/live_stream.h"
 #include "armmimic/robot/mapping.h"
 #include "armmimic/robot/planner.h"
+#include "armmimic/robot/profile.h"
+#include "armmimic/robot/send_setup.h"
 
 namespace armmimic::robot {
 
@@ -20,6 +26,11 @@ const std::vector<OptionField<PlannerOptions>>& PlannerOptionFields();
 const std::vector<OptionField<MappingOptions>>& MappingOptionFields();
 const std::vector<OptionField<JointLimits>>& LimitsOptionFields();
 const std::vector<OptionField<LinkSettings>>& LinkOptionFields();
+const std::vector<OptionField<SendSettings>>& SendOptionFields();
+const std::vector<OptionField<LiveStreamOptions>>& LiveStreamOptionFields();
+// Only the profile's settings a shell sets besides the profile file (the mode and the program
+// name); the file's other keys are the profile's own format (docs/profiles/default.profile).
+const std::vector<OptionField<ControllerProfile>>& ProfileOptionFields();
 
 // Every value of `o` in table order as ("TABLE.KEY", "VALUE") pairs that SetOptionText reads
 // back exactly.

@@ -17,10 +17,12 @@ struct SendSettings {
   std::string profile_path;     // "": the built-in profile
   double prompt_timeout_s = 0;  // > 0: replaces the profile's prompt_timeout_s (--timeout)
   double motion_timeout_s = 0;  // > 0: replaces the profile's motion_timeout_s (--motion-timeout)
+  // The ranges of the table's rows (option_tables.h, "send.*"): a timeout is >= 0.
+  Status Check() const;
 };
 
 // The profile a send uses: the file's (errors name "file:line") or the built-in one, with the
-// timeouts given. A timeout that is given but not > 0 is an error naming it.
+// timeouts given. A negative timeout is an error keyed by its row (Check()).
 Status LoadSendProfile(const SendSettings& settings, ControllerProfile* profile);
 
 // How a send starts, from the shells' two switches (--resume, --restart; both is an error the

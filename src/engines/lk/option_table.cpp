@@ -33,10 +33,12 @@ const std::vector<OptionField<LkOptions>>& LkOptionFields() {
               "side of the body box the moving arm is on, as seen on screen"),
       Real<L>("initial_upper_deg", &L::initial_upper_deg, -90, -360, 360, 1, "Initial upper arm",
               "upper-arm direction at the start, degrees")
+          .Unit("deg")
           .Flag("--initial-upper")
           .Main(),
       Real<L>("initial_fore_deg", &L::initial_fore_deg, -90, -360, 360, 1, "Initial forearm",
               "forearm direction at the start, degrees")
+          .Unit("deg")
           .Flag("--initial-fore")
           .Main(),
       Int<L>("max_corners", &L::max_corners, 300, 4, 10000, "Max. corners",

@@ -29,7 +29,7 @@ Status LkOptions::Check() const {
   if (Status st = CheckOptionFields(LkOptionFields(), "lk", *this); !st) return st;
   if (window_px % 2 == 0) {  // cv::calcOpticalFlowPyrLK's window has a centre pixel
     return Status::Error("lk.window_px",
-                         "LK window must be odd (got " + std::to_string(window_px) + ")");
+                         "LK window is " + std::to_string(window_px) + "; it must be odd");
   }
   return Status::Ok();
 }

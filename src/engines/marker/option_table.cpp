@@ -52,6 +52,7 @@ const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields() {
           .Main(),
       Real<M>("fov_deg", &M::fov_deg, 60, 0, 140, 1, "Camera field of view",
               "the camera's horizontal field of view, degrees (0: a distant camera)")
+          .Unit("deg")
           .Flag("--fov")
           .Main(),
       Real<M>("max_marker_turn_deg", &M::max_marker_turn_deg, 74, 1, 89, 1, "Max. marker turn",
@@ -72,7 +73,7 @@ Status MarkerOptions::Check() const {
   if (Status st = CheckOptionFields(MarkerOptionFields(), "marker", *this); !st) return st;
   if (median_size % 2 == 0) {  // cv::medianBlur takes odd windows only
     return Status::Error("marker.median_size",
-                         "median window must be odd (got " + std::to_string(median_size) + ")");
+                         "median window is " + std::to_string(median_size) + "; it must be odd");
   }
   return Status::Ok();
 }

@@ -26,7 +26,8 @@ bool ParsePoseSide(const std::string& name, PoseSide* out) {
 Status PoseOptions::Check() const {
   if (Status st = CheckOptionFields(PoseOptionFields(), "pose", *this); !st) return st;
   if (arm_crop > 0 && arm_crop < 1) {  // a look smaller than the upper body's extent
-    return Status::Error("pose.arm_crop", "arm look size must be 0 (one look) or in [1, 4]");
+    return Status::Error("pose.arm_crop", "arm look size is " + OptionRefusedNumberText(arm_crop) +
+                                              "; it must be 0 (one look) or in [1, 4]");
   }
   return Status::Ok();
 }

@@ -116,7 +116,10 @@ void CheckRefusesOutsideEachRange(const std::vector<OptionField<O>>& fields, con
       const Status st = o.Check();
       ASSERT_FALSE(st.ok());
       EXPECT_EQ(st.key(), std::string(table) + "." + f.key);
-      EXPECT_NE(st.message().find(OptionNoun(f.label) + " must be"), std::string::npos)
+      // The refused value is repeated: "<noun> is <value>[ unit]; it must be ...".
+      EXPECT_EQ(st.message().rfind(
+                    OptionNoun(f.label) + " is " + OptionRefusedText(f, v) + "; it must be ", 0),
+                0u)
           << st.message();
       ++refused;
     }
@@ -147,9 +150,11 @@ TEST(OptionFieldsTest, ChecksKeepTheRulesNoRangeSays) {
   MarkerOptions marker;
   marker.median_size = 4;
   EXPECT_EQ(marker.Check().key(), "marker.median_size");
+  EXPECT_EQ(marker.Check().message(), "median window is 4; it must be odd");
   PoseOptions pose;
   pose.arm_crop = 0.5;  // in [0, 4], but neither 0 (one look) nor a look of at least 1
   EXPECT_EQ(pose.Check().key(), "pose.arm_crop");
+  EXPECT_EQ(pose.Check().message(), "arm look size is 0.5; it must be 0 (one look) or in [1, 4]");
   pose.arm_crop = 0;
   EXPECT_TRUE(pose.Check().ok());
 }
@@ -175,6 +180,7 @@ TEST(OptionFieldsTest, ChecksRefuseWhatTheRelationsForbid) {
   m = MarkerOptions();
   m.min_area = 300;  // above max_area = 200
   EXPECT_EQ(m.Check().key(), "marker.max_area");
+  EXPECT_EQ(m.Check().message(), "max. area is 200; it must not be below the min. area 300");
   m = MarkerOptions();
   m.max_aspect = 0.1;  // below min_aspect = 0.2
   EXPECT_EQ(m.Check().key(), "marker.max_aspect");
