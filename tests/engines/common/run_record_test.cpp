@@ -222,7 +222,7 @@ TEST(RunRecordKeys, ARepeatedOrUnknownKeyIsRefusedWithTheLine) {
 // A value the run cannot take is quoted by its start only, on one line, whatever its key.
 TEST(RunRecord, ALongBadValueIsQuotedByItsStart) {
   const std::string huge = std::string(5000, '7') + "\nx";
-  for (const std::string& key : {"lk.window_px", "start", "shoulder", "roi", "calibrate_side"}) {
+  for (const std::string key : {"lk.window_px", "start", "shoulder", "roi", "calibrate_side"}) {
     AnalysisOptions o;
     const Status st = RunFromMeta({{"engine", "lk"}, {key, huge}}, "old.tsv", &o);
     ASSERT_FALSE(st.ok()) << key;
