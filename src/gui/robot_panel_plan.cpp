@@ -157,6 +157,8 @@ void RobotPanel::setPlannerOptions(const robot::PlannerOptions& o) {
 
 void RobotPanel::setAngleFile(const QString& path) {
   animate_button_->setChecked(false);
+  angles_changing_ = false;
+  resume_offered_ = false;
   if (path.isEmpty()) {
     plan_.Clear();
     source_->setText(tr("no angles yet: run the analysis"));
@@ -175,10 +177,12 @@ void RobotPanel::setAngleFile(const QString& path) {
                        .arg(QString::fromStdString(plan_.angles().Meta("engine", "?"))));
   followFileKind(robot::DetectSourceKind(plan_.angles()));
   replan();
+  offerResume();
 }
 
 bool RobotPanel::setValProgram(const QString& path) {
   animate_button_->setChecked(false);
+  angles_changing_ = false;
   const Status st = plan_.LoadProgram(path.toStdString(), profile_);
   if (!st) {
     emit errorOccurred(QString::fromStdString(st.message()));
@@ -192,6 +196,7 @@ bool RobotPanel::setValProgram(const QString& path) {
   source_->setText(tr("%1: %2 moves, sent as written (the plan settings do not apply)")
                        .arg(QFileInfo(path).fileName())
                        .arg(plan_.trajectory().keyframes.size()));
+  offerResume();
   return plan_.planned();
 }
 
