@@ -144,7 +144,8 @@ class RobotPanel : public QWidget {
   QTimer sim_poll_;
   double anim_t_ = 0;
   int video_frame_ = 0;
-  QString last_plan_failure_;  // noted once in Messages
+  QString last_plan_failure_;      // noted once in Messages
+  QString last_plan_failure_key_;  // the setting it is about (Status::key()), or ""
   bool angles_changing_ = false;
   bool resume_offered_ = false;
   // Plan settings.

@@ -12,7 +12,9 @@
 #include "armmimic/robot/send_setup.h"
 #include "armmimic/robot/send_summary.h"
 #include "controller_settings.h"
+#include "field_error.h"
 #include "robot_link.h"
+#include "robot_option_keys.h"
 #include "robot_panel.h"
 #include "robot_words.h"
 #include "send_questions.h"
@@ -129,6 +131,7 @@ bool RobotPanel::resumeSend(bool confirmed) {
 
 bool RobotPanel::startSend(robot::SendStart::Mode mode, bool confirmed) {
   if (!plan_.planned()) {
+    MarkFieldError(RobotOptionField(this, last_plan_failure_key_));  // the field that refused it
     emit errorOccurred(
         last_plan_failure_.isEmpty()
             ? tr("Nothing to send: no plan (run the analysis first)")

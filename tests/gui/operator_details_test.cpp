@@ -2,6 +2,7 @@
 // status in words, keypoint scores that do not overlap, fields the engine does not read greyed,
 // and the 3-D view following the simulated controller's connection.
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFontMetricsF>
 #include <QLineEdit>
 #include <QPushButton>
@@ -12,6 +13,7 @@
 #include "analysis_job.h"
 #include "arm_view_3d.h"
 #include "engine_settings_panel.h"
+#include "field_error.h"
 #include "gui_fixture.h"
 #include "log_view.h"
 #include "main_window.h"
@@ -121,6 +123,28 @@ TEST_F(OperatorDetailsTest, TheThreeDViewFollowsTheSimulatedControllersConnectio
   EXPECT_TRUE(panel->view3d()->caption().startsWith("frame") ||
               panel->view3d()->caption().startsWith("plan"))
       << panel->view3d()->caption().toStdString();
+}
+
+TEST_F(OperatorDetailsTest, ARefusedPlanIsToldInThePanelsWordsAtItsField) {
+  MainWindow w;
+  ShowAndAnalyze(w);
+  gui::RobotPanel* panel = w.robotPanel();
+  ASSERT_TRUE(panel->plan().planned());
+  // 29 Hz on a 30 fps video: above half the frame rate, refused by the planner (its key
+  // planner.cutoff_hz), which the panel words with the field's label.
+  auto* cutoff = panel->findChild<QDoubleSpinBox*>("cutoff");
+  ASSERT_NE(cutoff, nullptr);
+  cutoff->setValue(29);
+  ASSERT_FALSE(panel->plan().planned()) << w.log()->text().toStdString();
+  const QString label = gui::FieldLabel(cutoff);
+  EXPECT_NE(w.log()->text().indexOf("Robot plan not made: " + label + ": "), -1)
+      << w.log()->text().toStdString();
+  EXPECT_EQ(w.log()->text().indexOf("--cutoff"), -1) << w.log()->text().toStdString();
+  EXPECT_FALSE(gui::HasFieldError(cutoff));  // planning on its own frames nothing
+  EXPECT_FALSE(panel->sendPlan(true));       // the operator asks: the field is framed
+  EXPECT_TRUE(gui::HasFieldError(cutoff));
+  EXPECT_NE(w.log()->text().indexOf("the plan was refused: " + label), -1)
+      << w.log()->text().toStdString();
 }
 
 }  // namespace
