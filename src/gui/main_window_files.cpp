@@ -1,5 +1,8 @@
 // MainWindow's file commands: angle files and sessions in, CSV and sessions out, what a dropped
-// file is, and the question before closing with a send running or results unsaved.
+// file is, where a plan is written, and the questions before closing (an analysis or a send
+// running, results unsaved).
+// Length: every file the window reads or writes, and what becomes of them on closing, in one
+// place; each function is short.
 #include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
