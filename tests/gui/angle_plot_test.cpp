@@ -281,6 +281,8 @@ TEST_F(PlotOnScreen, ACurveCrossingTheSeamIsBrokenThereAndReadsItsTrueValue) {
   // Hovering reads the values as measured, not unwrapped.
   QString readout;
   QObject::connect(&plot_, &AnglePlot::hovered, [&](const QString& t) { readout = t; });
+  QTest::mouseMove(plot_.viewport(), At(24, 0));  // a move, wherever the pointer was before
+  ASSERT_TRUE(WaitUntil([&] { return readout.startsWith("frame 24"); }, 2000));
   QTest::mouseMove(plot_.viewport(), At(26, 0));
   ASSERT_TRUE(WaitUntil([&] { return readout.startsWith("frame 26"); }, 2000));
   EXPECT_TRUE(readout.contains(QString("fore 178.2") + QChar(0x00B0)) ||
