@@ -65,14 +65,14 @@ AnalysisJob::AnalysisJob(QObject* parent) : QObject(parent), worker_(new Analysi
   connect(worker_, &AnalysisWorker::analysisFinished, this,
           [this](const QString& error, const QString& key, const AnalysisSummary& summary) {
             running_ = false;
-            summary_ = summary;
             if (!error.isEmpty()) {
-              result_path_.clear();
+              // The last result stays: a failed run replaces nothing.
               emit failed(error, key);
               emit finished(false, false);
               return;
             }
             result_path_ = pending_path_;
+            summary_ = summary;
             emit finished(true, summary.cancelled);
           });
   connect(worker_, &AnalysisWorker::backgroundFinished, this,

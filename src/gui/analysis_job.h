@@ -53,6 +53,8 @@ class AnalysisJob : public QObject {
   void cancel();
   // The angle file of the last finished analysis ("" when none).
   QString resultPath() const { return result_path_; }
+  // The folder the results live in until exported (removed with this job).
+  QString resultFolder() const { return session_.path(); }
   // Copies the last result to `path` (atomically: a failed export leaves no half file).
   // Returns "" or what went wrong, naming the file.
   QString exportResult(const QString& path) const;

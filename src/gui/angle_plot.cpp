@@ -39,6 +39,7 @@ class PlotLayer : public QGraphicsItem {
     brush_ = brush;
     update();
   }
+  const QPainterPath& path() const { return path_; }
   QRectF boundingRect() const override { return bounds_; }
   QPainterPath shape() const override {
     QPainterPath p;
@@ -326,6 +327,7 @@ void AnglePlot::redrawLayers() {
     QPainterPath path;
     QPolygonF run;  // consecutive measured frames
     int previous = -2;
+    double previous_v = 0;
     for (const AngleRow& row : rows_) {
       if (row.frame < first || row.frame > last) continue;
       const double v = valueOf(row, PlotCurve(c));
@@ -334,8 +336,20 @@ void AnglePlot::redrawLayers() {
         run.clear();
       }
       if (!std::isfinite(v)) continue;
+      if (!run.isEmpty() && std::abs(v - previous_v) > 180) {
+        // A direction crossing ±180° between two frames turned the short way: the line leaves
+        // at one edge and comes back at the other, instead of a wall across the plot.
+        const double step = v - previous_v + (v < previous_v ? 360 : -360);
+        const double edge = step > 0 ? 180 : -180;
+        const double at = previous + (edge - previous_v) / step;
+        run << toChart(at, edge);
+        AddRun(run, &path);
+        run.clear();
+        run << toChart(at, -edge);
+      }
       run << toChart(row.frame, v);
       previous = row.frame;
+      previous_v = v;
     }
     if (!run.isEmpty()) AddRun(run, &path);
     curve_items_[c]->setPath(path);
@@ -367,6 +381,18 @@ void AnglePlot::setCursorFrame(int frame) {
   const QRectF area = chart()->plotArea();
   const double cx = toChart(frame, 0).x();
   cursor_->setLine(cx, area.top(), cx, area.bottom());
+}
+
+double AnglePlot::largestStepDeg(PlotCurve curve) const {
+  const QPainterPath& path = curve_items_[int(curve)]->path();
+  const QRectF area = chart()->plotArea();
+  const double per_px = (y_->max() - y_->min()) / area.height();
+  double largest = 0;
+  for (int i = 1; i < path.elementCount(); ++i) {
+    if (!path.elementAt(i).isLineTo()) continue;
+    largest = std::max(largest, std::abs(path.elementAt(i).y - path.elementAt(i - 1).y) * per_px);
+  }
+  return largest;
 }
 
 int AnglePlot::pointCount() const {

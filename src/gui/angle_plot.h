@@ -45,6 +45,9 @@ class AnglePlot : public QChartView {
   int bendCount() const;             // measured frames on the bend curve (marker views)
   bool yawShown() const;             // the yaw curve and its legend entry
   QList<QPointF> yawPoints() const;  // (frame, yaw) drawn: signed for marker views
+  // The largest change in degrees along one drawn segment of `curve` (a curve crossing ±180° is
+  // broken at the edge, so never more than 180).
+  double largestStepDeg(PlotCurve curve) const;
   // Runs of consecutive frames a curve is drawn through, as (first, last) frame pairs.
   std::vector<std::pair<int, int>> runs(PlotCurve curve) const;
   // The frame axis' label step: 1, 2, 5, 10, 20, ... so that every label is a whole frame (in

@@ -225,9 +225,12 @@ QToolButton* EngineSettingsPanel::resetButton(EngineKind engine) const {
 void EngineSettingsPanel::updateEnabled() {
   const auto kind = static_cast<EngineKind>(engine_->currentData().toInt());
   const bool marker = kind == EngineKind::kMarker;
-  bg_mode_->setEnabled(!marker);
-  background_row_->setEnabled(!marker && bg_mode_->currentIndex() == kBgImage);
-  bg_frames_->setEnabled(!marker && bg_mode_->currentIndex() == kBgFrames);
+  // The pose network needs no background: its mode, image (with its "…" button) and frames are
+  // greyed with the rest of what it does not read.
+  const bool background = !marker && kind != EngineKind::kPose;
+  bg_mode_->setEnabled(background);
+  background_row_->setEnabled(background && bg_mode_->currentIndex() == kBgImage);
+  bg_frames_->setEnabled(background && bg_mode_->currentIndex() == kBgFrames);
   arm_length_row_->setEnabled(kind == EngineKind::kBgsub);
   reference_row_->setEnabled(marker);
   start_->setEnabled(!marker);
@@ -235,7 +238,6 @@ void EngineSettingsPanel::updateEnabled() {
   elbow_wrist_box_->setEnabled(kind == EngineKind::kLk);
   auto_calibrate_->setEnabled(kind == EngineKind::kLk);
   roi_box_->setEnabled(!marker);
-  bg_mode_->setEnabled(!marker && kind != EngineKind::kPose);
 }
 
 AnalysisOptions EngineSettingsPanel::options() const {

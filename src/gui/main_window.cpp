@@ -18,6 +18,7 @@
 #include "angle_plot.h"
 #include "app_actions.h"
 #include "engine_settings_panel.h"
+#include "focus_return.h"
 #include "icons.h"
 #include "log_view.h"
 #include "mimic_controller.h"
@@ -74,6 +75,7 @@ MainWindow::MainWindow(QWidget* parent)
   connect(recent_, &RecentFiles::openRequested, this,
           [this](const QString& p) { openInputs({p}); });
   GuardShortcuts(this);
+  ReturnFocusAfterDialogs(this);  // Esc aborts a send the confirmation has just started
 
   throttle_.setSingleShot(true);
   throttle_.setInterval(40);
@@ -83,6 +85,7 @@ MainWindow::MainWindow(QWidget* parent)
   wireAnalysis();
   wireMimic();
   robot_->setInputFiles([this] { return sessionInputs(); });
+  robot_->setPlanFile([this] { return planFilePath(); });
   restoreSettings();
   updateStatus();
 }
@@ -168,6 +171,7 @@ void MainWindow::wireActions() {
     plot_->setFrameRange(info.frame_count, info.fps);
     angles_->updateTimeAxisButton();
     if (!takePendingResults()) {
+      session_path_.clear();  // another input: the session no longer describes what is shown
       results_.clear();
       job_->forgetResult();
       plot_->setResults(results_);
@@ -238,12 +242,21 @@ void MainWindow::wireAnalysis() {
   });
   connect(job_, &AnalysisJob::finished, this, [this](bool ok, bool cancelled) {
     setBusy(false);
+    if (!ok && before_run_) {
+      // A run that failed changes nothing: the angles, overlay, plot and plan shown before it.
+      results_ = before_run_->results;
+      unsaved_ = before_run_->unsaved;
+      robot_->setAnglesChanging(false);
+    }
+    const bool analysis = before_run_.has_value();
+    before_run_.reset();
     refreshViews();
-    if (ok && !job_->resultPath().isEmpty()) {
+    updateStatus();
+    if (ok && analysis) {
       unsaved_ = results_.rows() > 0;
-      log_->info(job_->describeResult(cancelled));
-      robot_->setAngleFile(job_->resultPath());
-      ui_->plotDock->raise();  // the angles just measured, not old errors
+      if (!job_->resultPath().isEmpty()) log_->info(job_->describeResult(cancelled));
+      robot_->setAngleFile(job_->resultPath());  // the plan follows the angles shown
+      ui_->plotDock->raise();                    // the angles just measured, not old errors
     }
   });
 }
@@ -296,9 +309,14 @@ bool MainWindow::startAnalysis() {
   for (const QString& s : player_->inputs()) options.inputs.push_back(s.toStdString());
   live_ = player_->isLive();
   if (live_) player_->close();  // the analysis reads the camera itself
+  // Refused options change nothing; a run shows its own rows, and the plan of the angles it
+  // replaces may not be sent while it lasts.
+  if (!job_->start(options, live_)) return false;
+  before_run_ = Shown{results_, unsaved_};
   results_.clear();
   pending_.reset();
-  return job_->start(options, live_);
+  robot_->setAnglesChanging(true);
+  return true;
 }
 
 std::vector<NamedPath> MainWindow::sessionInputs() const {

@@ -78,6 +78,8 @@ class MainWindow : public QMainWindow {
   void closeEvent(QCloseEvent* event) override;
   // Asks before closing while sending, or with unsaved results. True: close.
   bool confirmClose();
+  bool confirmQuitDuringAnalysis();
+  QString incompleteResultPath() const;
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
 
@@ -98,6 +100,9 @@ class MainWindow : public QMainWindow {
   void saveSettings() const;
   // The files the session reads, which no export may replace.
   std::vector<NamedPath> sessionInputs() const;
+  // Where a send writes its plan (and keeps its journal): SESSION.val beside the session opened
+  // or saved, else VIDEO.val beside the video, else beside an angle file opened; "" when none.
+  QString planFilePath() const;
   // Logs why `path` may not be written as `what`; true when refused.
   bool refuseInput(const QString& what, const QString& path);
 
@@ -121,12 +126,18 @@ class MainWindow : public QMainWindow {
   double time_s_ = 0;
   bool live_ = false;
   bool unsaved_ = false;
+  QString session_path_;  // the session opened or saved last, while its input stays open
   struct Pending {
     ResultStore results;
     QString angle_path;
     int frame = -1;  // the frame to show (-1: the first)
   };
   std::optional<Pending> pending_;  // results waiting for their video to open
+  struct Shown {
+    ResultStore results;
+    bool unsaved = false;
+  };
+  std::optional<Shown> before_run_;  // while an analysis runs: what it replaces, if it succeeds
 };
 
 }  // namespace armmimic::gui

@@ -1,6 +1,10 @@
 // MainWindow's file commands: angle files and sessions in, CSV and sessions out, what a dropped
-// file is, and the question before closing with a send running or results unsaved.
+// file is, where a plan is written, and the questions before closing (an analysis or a send
+// running, results unsaved).
+// Length: every file the window reads or writes, and what becomes of them on closing, in one
+// place; each function is short.
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
 #include <QFile>
 #include <QFileInfo>
@@ -78,6 +82,21 @@ QString MainWindow::suggestedPath(const QString& suffix) const {
   return RecentFiles::lastDir().isEmpty() ? name : RecentFiles::lastDir() + "/" + name;
 }
 
+QString MainWindow::planFilePath() const {
+  auto beside = [](const QString& path) {
+    const QFileInfo f(path);
+    return f.isDir() ? f.absoluteFilePath() + ".val"
+                     : f.absoluteDir().filePath(f.completeBaseName() + ".val");
+  };
+  if (!session_path_.isEmpty()) return beside(session_path_);
+  if (player_->isOpen() && !player_->isLive() && !player_->inputs().isEmpty()) {
+    return beside(player_->inputs().first());
+  }
+  const QString angles = job_->resultPath();
+  if (!angles.isEmpty() && !angles.startsWith(job_->resultFolder() + "/")) return beside(angles);
+  return QString();
+}
+
 void MainWindow::showResults(const ResultStore& results, const QString& angle_path) {
   results_ = results;
   plot_->setResults(results_);
@@ -140,6 +159,7 @@ bool MainWindow::openAngleFile(const QString& path) {
   ResultStore results;
   for (const AngleRow& row : file.rows) results.add(ArmMeasurement::FromRow(row));
   job_->adoptResult(path);
+  session_path_.clear();
   RecentFiles::rememberDir(path);
   log_->info(tr("Opened the angle file %1: %2 rows, engine %3")
                  .arg(path)
@@ -191,6 +211,7 @@ bool MainWindow::openSession(const QString& path) {
     for (const AngleRow& row : file.rows) results.add(ArmMeasurement::FromRow(row));
   }
   RecentFiles::rememberDir(path);
+  session_path_ = QFileInfo(path).absoluteFilePath();  // its plan and journal go beside it
   log_->info(tr("Opened the session %1").arg(path));
   if (!s.ignored.isEmpty()) log_->info(tr("%1: %2").arg(path, s.ignored));
   const QString angles = s.angle_text.isEmpty() ? QString() : job_->resultPath();
@@ -219,6 +240,7 @@ bool MainWindow::saveSession(const QString& path) {
     return false;
   }
   RecentFiles::rememberDir(path);
+  session_path_ = QFileInfo(path).absoluteFilePath();
   log_->info(tr("Saved the session to %1").arg(path));
   unsaved_ = false;
   return true;
@@ -260,7 +282,57 @@ void MainWindow::askCsvExport(bool visible_only) {
   }
 }
 
+// Where the rows of an analysis stopped by quitting are kept: beside the video (or in the last
+// folder used), never over an existing file.
+QString MainWindow::incompleteResultPath() const {
+  QString dir = RecentFiles::lastDir(), base = "angles";
+  if (player_->isOpen() && !player_->isLive() && !player_->inputs().isEmpty()) {
+    const QFileInfo input(player_->inputs().first());
+    dir = input.absolutePath();
+    base = input.isDir() ? input.fileName() : input.completeBaseName();
+  }
+  if (dir.isEmpty()) dir = QDir::homePath();
+  QString path = QDir(dir).filePath(base + "-incomplete.tsv");
+  for (int n = 2; QFileInfo::exists(path); ++n) {
+    path = QDir(dir).filePath(QString("%1-incomplete-%2.tsv").arg(base).arg(n));
+  }
+  return path;
+}
+
+// Quitting during an analysis: asked first; when the operator quits anyway, the run stops and
+// its rows so far are kept as an angle file marked complete=no, as `armmimic-cli analyze` keeps
+// them when interrupted. True: close.
+bool MainWindow::confirmQuitDuringAnalysis() {
+  if (!job_->isRunning() || !before_run_) return true;
+  const QString path = incompleteResultPath();
+  QMessageBox box(QMessageBox::Warning, tr("Quit during the analysis?"),
+                  tr("The analysis is running: %1 frames measured so far.").arg(results_.size()),
+                  QMessageBox::Cancel, this);
+  box.setObjectName("quitDuringAnalysis");
+  box.setInformativeText(tr("Quitting stops it and keeps the rows so far in %1, marked as an "
+                            "incomplete result (complete=no).")
+                             .arg(path));
+  QPushButton* quit = box.addButton(tr("Keep the rows and quit"), QMessageBox::DestructiveRole);
+  box.setDefaultButton(QMessageBox::Cancel);
+  box.exec();
+  if (box.clickedButton() != static_cast<QAbstractButton*>(quit)) return false;
+  bool stopped = false;  // the run ended by the cancel, its rows so far the result
+  const QMetaObject::Connection watch =
+      connect(job_, &AnalysisJob::finished, this,
+              [&](bool ok, bool cancelled) { stopped = ok && cancelled; });
+  job_->cancel();
+  const bool ended = job_->waitForFinished(30000);
+  disconnect(watch);
+  if (!ended) {
+    log_->error(tr("The analysis did not stop within 30 s; quit again to wait longer"));
+    return false;
+  }
+  // A run that ended on its own meanwhile is an ordinary result: the questions below.
+  return !stopped || exportAngles(path);
+}
+
 bool MainWindow::confirmClose() {
+  if (!confirmQuitDuringAnalysis()) return false;
   if (robot_->link()->isSending()) {
     QMessageBox box(QMessageBox::Warning, tr("Quit while sending?"),
                     tr("A program is being sent to the robot. Quitting aborts the send after the "

@@ -4,6 +4,7 @@
 #include "overlay.h"
 
 #include "armmimic/engines/pose.h"
+#include "score_labels.h"
 
 #include <algorithm>
 #include <cmath>
@@ -79,6 +80,10 @@ OverlayTexts MakeOverlayTexts(const ArmMeasurement* m, int frame_index, int fram
       break;
   }
   if (!m->note.empty()) t.state += ": " + QString::fromStdString(m->note);
+  if (m->phase == MeasurementPhase::kOk && std::isfinite(m->confidence)) {
+    t.state +=
+        (m->note.empty() ? ": " : "; ") + QString("confidence %1").arg(m->confidence, 0, 'f', 2);
+  }
   return t;
 }
 
@@ -108,16 +113,21 @@ void PaintSkeleton(QPainter& p, const ArmMeasurement& m, double unit) {
   QFont font = p.font();
   font.setPointSizeF(5.0 * unit);
   p.setFont(font);
+  std::vector<QPointF> dots;
+  std::vector<double> scores;
+  for (int i = 0; i < kPoseKeypointCount; ++i) {
+    dots.push_back(Q(m.pose_keypoints[i]));
+    scores.push_back(m.pose_scores[i]);
+  }
+  const auto labels = PlaceScoreLabels(dots, scores, QFontMetricsF(font, p.device()), unit);
   for (int i = 0; i < kPoseKeypointCount; ++i) {
     const bool seen = m.pose_scores[i] >= kSeen;
     const QColor colour = seen ? QColor(120, 230, 255) : QColor(150, 150, 150);
-    const QPointF c = Q(m.pose_keypoints[i]);
     p.setPen(Qt::NoPen);
     p.setBrush(colour);
-    p.drawEllipse(c, 1.8 * unit, 1.8 * unit);
+    p.drawEllipse(dots[i], 1.8 * unit, 1.8 * unit);
     p.setBrush(Qt::NoBrush);
-    HaloText(p, c + QPointF(3 * unit, -2 * unit), QString::number(m.pose_scores[i], 'f', 2),
-             colour);
+    if (labels[i]) HaloText(p, labels[i]->baseline, labels[i]->text, colour);
   }
 }
 

@@ -79,6 +79,10 @@ RobotPanel::RobotPanel(QWidget* parent)
     emit linkStateChanged(on ? tr("robot: %1").arg(dev) : tr("robot: not connected"));
     emit message(on ? tr("Connected to %1").arg(dev) : tr("Disconnected from %1").arg(dev));
     if (on && sim_->isRunning()) sim_poll_.start();
+    if (!on) {
+      sim_poll_.stop();
+      showPose();  // the 3-D view follows the link: no controller's pose once it is gone
+    }
     updateButtons();
   });
   connect(link_, &RobotLink::error, this, &RobotPanel::errorOccurred);
@@ -138,8 +142,9 @@ void RobotPanel::wireLinkBox() {
       emit message(tr("Simulated controller stopped"));
       refreshPorts();
       updateButtons();
-    } else {
-      startSimulator(sim_speed_->value());
+      showPose();  // the plan again, not the stopped controller's last pose
+    } else if (startSimulator(sim_speed_->value())) {
+      connectTo(sim_->devicePath());  // started to be sent to: Send is ready at once
     }
   });
   connect(connect_button_, &QPushButton::clicked, this, [this] {
@@ -176,8 +181,9 @@ void RobotPanel::updateButtons() {
   connect_button_->setText(connected ? tr("Disconnect") : tr("Connect"));
   sim_button_->setText(sim_->isRunning() ? tr("Stop simulated controller")
                                          : tr("Start simulated controller"));
-  send_button_->setEnabled(connected && plan_.planned() && !sending);
-  resume_button_->setEnabled(connected && plan_.planned() && !sending);
+  const bool sendable = connected && plan_.planned() && !sending && !angles_changing_;
+  send_button_->setEnabled(sendable);
+  resume_button_->setEnabled(sendable);
   pause_button_->setEnabled(sending);
   abort_button_->setEnabled(sending);
   if (!sending) {
@@ -186,6 +192,11 @@ void RobotPanel::updateButtons() {
   }
   port_->setEnabled(!connected);
   controller_->setPortEditable(!connected);
+}
+
+void RobotPanel::setAnglesChanging(bool changing) {
+  angles_changing_ = changing;
+  updateButtons();
 }
 
 void RobotPanel::setVideoFrame(int frame) {
@@ -203,6 +214,8 @@ void RobotPanel::showPose() {
     const int k = plan_.KeyframeForFrame(video_frame_);
     showArm(plan_.trajectory().keyframes[std::max(0, k)].joint_deg,
             tr("plan near frame %1").arg(video_frame_));
+  } else {
+    showArm(robot::JointArray{0, -90, 0, 0, 0, 0}, tr("no plan"));
   }
 }
 

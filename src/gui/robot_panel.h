@@ -62,6 +62,14 @@ class RobotPanel : public QWidget {
   void load(QSettings& settings);
 
   bool replan();
+  // Where a send writes the plan before it sends it (SESSION.val or VIDEO.val): the journal goes
+  // beside it, so a later process can resume. "" when there is nowhere to write it.
+  void setPlanFile(std::function<QString()> path) { plan_file_ = std::move(path); }
+  // The file the current plan is sent as: that file, or the program opened from a file.
+  QString planFile() const;
+  // The plan shown has an unfinished send in the journal beside its file (said in Messages when
+  // the plan was made from a file or a session): Resume… continues it.
+  bool resumeOffered() const { return resume_offered_; }
   // Refuses (errorOccurred) a path that is the angle file or one of `inputs_` files.
   bool exportVal(const QString& path);
   // The session's files (video, images), which exportVal never replaces.
@@ -83,6 +91,10 @@ class RobotPanel : public QWidget {
  public slots:
   // The angle file of the finished analysis ("" clears the plan).
   void setAngleFile(const QString& path);
+  // While an analysis replaces the angles shown, the plan made from the old ones may not be
+  // sent: Send and Resume stay off until setAngleFile, or until the run fails (false).
+  void setAnglesChanging(bool changing);
+  bool anglesChanging() const { return angles_changing_; }
   // A VAL program to send as it is written (checked against the limits first).
   bool setValProgram(const QString& path);
   void setVideoFrame(int frame);
@@ -109,15 +121,19 @@ class RobotPanel : public QWidget {
   void followFileKind(robot::SourceKind kind);
   void setMappingKind(robot::SourceKind kind);
   bool startSend(robot::SendStart::Mode mode, bool confirmed);
-  // The program the plan gives with `profile`, and the input its journal is named after.
-  Status programToSend(const robot::ControllerProfile& profile, robot::ValProgram* program,
-                       std::string* input) const;
+  // The program the plan gives with `profile`, and the file it is sent as (its journal is
+  // FILE.journal); `write` first writes a plan to that file. False: errorOccurred said why.
+  bool programToSend(const robot::ControllerProfile& profile, bool write, bool confirmed,
+                     robot::ValProgram* program, std::string* input);
+  void offerResume();
+  bool writePlanFile(const std::string& text, const QString& path, bool confirmed);
   // The panel's words for the refusals of a resume (SendSession::Prepare checks them again).
   bool checkResumable(const robot::ValProgram& program, const std::string& input);
 
   std::unique_ptr<Ui::RobotPanelForm> ui_;  // ui/robot_panel.ui
   RobotPlan plan_;
   std::function<std::vector<NamedPath>()> inputs_;
+  std::function<QString()> plan_file_;
   robot::ControllerProfile profile_;
   RobotLink* link_;
   SimController* sim_;
@@ -128,7 +144,10 @@ class RobotPanel : public QWidget {
   QTimer sim_poll_;
   double anim_t_ = 0;
   int video_frame_ = 0;
-  QString last_plan_failure_;  // noted once in Messages
+  QString last_plan_failure_;      // noted once in Messages
+  QString last_plan_failure_key_;  // the setting it is about (Status::key()), or ""
+  bool angles_changing_ = false;
+  bool resume_offered_ = false;
   // Plan settings.
   QLabel* source_;
   QCheckBox* mirror_;

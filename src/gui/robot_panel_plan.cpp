@@ -15,10 +15,12 @@
 
 #include "arm_view_3d.h"
 #include "armmimic/core/output_file.h"
+#include "field_error.h"
 #include "recent_files.h"
 #include "robot_option_keys.h"
 #include "robot_panel.h"
 #include "robot_preview.h"
+#include "robot_words.h"
 #include "ui_robot_panel.h"
 
 namespace armmimic::gui {
@@ -157,6 +159,8 @@ void RobotPanel::setPlannerOptions(const robot::PlannerOptions& o) {
 
 void RobotPanel::setAngleFile(const QString& path) {
   animate_button_->setChecked(false);
+  angles_changing_ = false;
+  resume_offered_ = false;
   if (path.isEmpty()) {
     plan_.Clear();
     source_->setText(tr("no angles yet: run the analysis"));
@@ -175,10 +179,12 @@ void RobotPanel::setAngleFile(const QString& path) {
                        .arg(QString::fromStdString(plan_.angles().Meta("engine", "?"))));
   followFileKind(robot::DetectSourceKind(plan_.angles()));
   replan();
+  offerResume();
 }
 
 bool RobotPanel::setValProgram(const QString& path) {
   animate_button_->setChecked(false);
+  angles_changing_ = false;
   const Status st = plan_.LoadProgram(path.toStdString(), profile_);
   if (!st) {
     emit errorOccurred(QString::fromStdString(st.message()));
@@ -192,6 +198,7 @@ bool RobotPanel::setValProgram(const QString& path) {
   source_->setText(tr("%1: %2 moves, sent as written (the plan settings do not apply)")
                        .arg(QFileInfo(path).fileName())
                        .arg(plan_.trajectory().keyframes.size()));
+  offerResume();
   return plan_.planned();
 }
 
@@ -248,13 +255,17 @@ bool RobotPanel::replan() {
   const Status st = options.Check() ? plan_.Plan(options) : options.Check();
   view3d_->setPath(plan_.planned() ? plan_.trajectory() : robot::Trajectory());
   if (!st) {
-    report_->setText(tr("<font color='#d03b2f'>Not planned: %1</font>")
-                         .arg(QString::fromStdString(st.message()).toHtmlEscaped()) +
+    // In the panel's words: the field's label (Status::key()), never a command-line flag.
+    QWidget* field = RobotOptionField(this, QString::fromStdString(st.key()));
+    const QString why = field ? FieldLabel(field) + ": " + QString::fromStdString(st.message())
+                              : RobotPanelWords(st);
+    report_->setText(tr("<font color='#d03b2f'>Not planned: %1</font>").arg(why.toHtmlEscaped()) +
                      violations);
     // Planning runs on its own after every analysis and settings change: the reason stays in
     // the plan report (red) and is noted once in Messages, without raising an error the
-    // operator did not ask for. Sending or exporting a refused plan is the error.
-    const QString why = QString::fromStdString(st.message());
+    // operator did not ask for. Sending or exporting a refused plan is the error, and frames
+    // the field.
+    last_plan_failure_key_ = QString::fromStdString(st.key());
     if (why != last_plan_failure_) emit message(tr("Robot plan not made: %1").arg(why));
     last_plan_failure_ = why;
     updateButtons();
@@ -262,6 +273,7 @@ bool RobotPanel::replan() {
     return false;
   }
   last_plan_failure_.clear();
+  last_plan_failure_key_.clear();
   const robot::PlanReport& r = plan_.report();
   report_->setText(tr("%1 moves over %2 s (%3 rows used, %4 filled, %5 clamped, +%6 s for speed)")
                        .arg(plan_.trajectory().keyframes.size())
@@ -302,7 +314,11 @@ bool RobotPanel::exportVal(const QString& path) {
 
 void RobotPanel::exportValInteractive(const QString& suggested) {
   if (!plan_.planned()) {
-    emit errorOccurred(tr("No plan to export: run the analysis, then check the Robot panel"));
+    MarkFieldError(RobotOptionField(this, last_plan_failure_key_));
+    emit errorOccurred(
+        last_plan_failure_.isEmpty()
+            ? tr("No plan to export: run the analysis, then check the Robot panel")
+            : tr("No plan to export: the plan was refused: %1").arg(last_plan_failure_));
     return;
   }
   const QString path = QFileDialog::getSaveFileName(

@@ -77,7 +77,8 @@ Status RobotPlan::Plan(const robot::PlannerOptions& options) {
   const Status st = robot::PlanTrajectory(angles_, options_, &trajectory_, &report_);
   // Named by what the operator analysed: the angle file itself is a temporary one.
   if (!st) {
-    return Status::Error("the analysis of " + angles_.Meta("source", "?") + ": " + st.message());
+    return Status::Error(st.key(),
+                         "the analysis of " + angles_.Meta("source", "?") + ": " + st.message());
   }
   planned_ = true;
   return Status::Ok();

@@ -6,6 +6,15 @@
 namespace armmimic::gui {
 
 QString SendQuestion(const robot::SendSummary& s, const QString& device) {
+  if (!s.resumed_at.empty()) {
+    return QObject::tr(
+               "Resume at %1: send the %2 of %3 lines still to send to %4? The arm will "
+               "move as follows:")
+        .arg(QString::fromStdString(s.resumed_at))
+        .arg(s.remaining_lines)
+        .arg(s.total_lines)
+        .arg(device);
+  }
   return QObject::tr("Send %1 lines to %2? The arm will move as follows:").arg(s.lines).arg(device);
 }
 
@@ -22,6 +31,20 @@ bool ConfirmSend(QWidget* parent, const robot::SendSummary& summary, const QStri
   box.setDefaultButton(QMessageBox::Cancel);
   box.exec();
   return box.clickedButton() == static_cast<QAbstractButton*>(move);
+}
+
+bool AskReplacePlan(QWidget* parent, const QString& path) {
+  QMessageBox box(QMessageBox::Question, QObject::tr("Replace the plan file?"),
+                  QObject::tr("%1 holds a different plan.").arg(path), QMessageBox::Cancel, parent);
+  box.setObjectName("replacePlan");
+  box.setInformativeText(QObject::tr(
+      "The send writes the plan it sends to this file and keeps its journal beside it. Replace "
+      "it with the plan shown? (An unfinished send of the old plan can then no longer be "
+      "resumed.)"));
+  QPushButton* replace = box.addButton(QObject::tr("Replace"), QMessageBox::AcceptRole);
+  box.setDefaultButton(QMessageBox::Cancel);
+  box.exec();
+  return box.clickedButton() == static_cast<QAbstractButton*>(replace);
 }
 
 UnfinishedChoice AskAboutUnfinished(QWidget* parent, const robot::UnfinishedSend& unfinished,

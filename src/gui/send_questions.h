@@ -19,6 +19,10 @@ QString SendDetails(const robot::SendSummary& summary);
 // True only when the operator clicks "Move the robot": Esc, Cancel or closing do not move it.
 bool ConfirmSend(QWidget* parent, const robot::SendSummary& summary, const QString& device);
 
+// Whether a send may replace the different plan already in `path` (and so start its journal
+// over). True only for "Replace".
+bool AskReplacePlan(QWidget* parent, const QString& path);
+
 enum class UnfinishedChoice { kResume, kStartOver, kCancel };
 UnfinishedChoice AskAboutUnfinished(QWidget* parent, const robot::UnfinishedSend& unfinished,
                                     const QString& program);

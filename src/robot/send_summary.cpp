@@ -42,6 +42,14 @@ SendSummary SummarizeSend(const SendSession& session) {
   }
   s.duration_s = timed ? session.duration_s() - TimeBefore(program, start) : kNaN;
   const std::vector<ArmPosition> after = ArmPositionsAfterEachLine(program);
+  s.total_lines = static_cast<int>(program.lines.size());
+  s.remaining_lines = s.total_lines - static_cast<int>(std::min(start, program.lines.size()));
+  for (std::size_t i = std::min(start, after.size()); !s.resumed_at.empty() && i-- > 0;) {
+    if (!after[i].known) continue;
+    s.has_resume_pose = true;
+    s.resume_pose_deg = after[i].joint_deg;
+    break;
+  }
   for (std::size_t i = start; i < after.size(); ++i) {
     if (!after[i].known) continue;
     const JointArray& j = after[i].joint_deg;
@@ -64,7 +72,15 @@ std::string FormatSendSummary(const SendSummary& s) {
   std::string out = std::to_string(s.lines) + " lines (" + std::to_string(s.moves) + " motion)";
   out += std::isnan(s.duration_s) ? ", no planned times"
                                   : ", about " + FormatNumber(s.duration_s, 1) + " s";
-  if (!s.resumed_at.empty()) out += ", resuming at " + s.resumed_at;
+  if (!s.resumed_at.empty()) {
+    out += ", resuming at " + s.resumed_at + ": " + std::to_string(s.remaining_lines) + " of " +
+           std::to_string(s.total_lines) + " program lines still to send";
+    if (s.has_resume_pose) {
+      out += "\nThe arm must stand where the acknowledged lines left it:";
+      for (int k = 0; k < kJoints; ++k)
+        out += " J" + std::to_string(k + 1) + " " + Deg(s.resume_pose_deg[k]);
+    }
+  }
   out += "\nStart pose (the first target):";
   if (s.has_start) {
     for (int k = 0; k < kJoints; ++k)

@@ -1,5 +1,7 @@
 // The angle plot as the operator reads it: the degree labels stay readable at any height of the
 // Angles dock.
+#include <algorithm>
+
 #include <QChart>
 #include <QGraphicsScene>
 #include <QGraphicsTextItem>
@@ -241,6 +243,51 @@ TEST_F(PlotOnScreen, SavesItselfAsPngAndSvgAndItsRangeAsRows) {
   ASSERT_EQ(rows.size(), 5u);
   EXPECT_EQ(rows.front().frame, 8);
   EXPECT_FALSE(rows[2].ok());  // frame 10, lost, is a row of its own
+}
+
+// The forearm of a real clip between frames 25 and 26: -178.25° then 178.15°, a turn of about
+// 4° across the ±180° seam, which must not be drawn as a line across the whole plot.
+TEST_F(PlotOnScreen, ACurveCrossingTheSeamIsBrokenThereAndReadsItsTrueValue) {
+  gui::ResultStore store;
+  const double fore[] = {-170, -174, -178.25, 178.15, 175, 171};
+  for (int i = 0; i < 6; ++i) {
+    ArmMeasurement m;
+    m.frame = 23 + i;
+    m.time_s = m.frame / 30.0;
+    m.phase = MeasurementPhase::kOk;
+    m.upper_deg = -90 + i;
+    m.fore_deg = fore[i];
+    store.add(m);
+  }
+  plot_.setFrameRange(30, 30);
+  plot_.setResults(store);
+  QTest::qWait(20);
+  EXPECT_LE(plot_.largestStepDeg(gui::PlotCurve::kFore), 180.0);
+  EXPECT_LT(plot_.largestStepDeg(gui::PlotCurve::kFore), 10.0);  // the 4° turn, in two halves
+  EXPECT_LT(plot_.largestStepDeg(gui::PlotCurve::kUpper), 2.0);
+  // Both halves are drawn: near -180° before the seam, near +180° after it.
+  const QImage shot = plot_.grab().toImage();
+  auto drawn_near = [&](double frame, double deg) {
+    const QPoint p = At(frame, deg);
+    for (int dy = -3; dy <= 3; ++dy) {
+      const QColor c = shot.pixelColor(p.x(), std::clamp(p.y() + dy, 0, shot.height() - 1));
+      if (c.blue() > 150 && c.red() < 80) return true;  // the forearm's blue
+    }
+    return false;
+  };
+  EXPECT_TRUE(drawn_near(24.5, -176)) << "before the seam";
+  EXPECT_TRUE(drawn_near(26.5, 176.5)) << "after the seam";
+  EXPECT_FALSE(drawn_near(25.5, 0)) << "no wall across the plot";
+  // Hovering reads the values as measured, not unwrapped.
+  QString readout;
+  QObject::connect(&plot_, &AnglePlot::hovered, [&](const QString& t) { readout = t; });
+  QTest::mouseMove(plot_.viewport(), At(24, 0));  // a move, wherever the pointer was before
+  ASSERT_TRUE(WaitUntil([&] { return readout.startsWith("frame 24"); }, 2000));
+  QTest::mouseMove(plot_.viewport(), At(26, 0));
+  ASSERT_TRUE(WaitUntil([&] { return readout.startsWith("frame 26"); }, 2000));
+  EXPECT_TRUE(readout.contains(QString("fore 178.2") + QChar(0x00B0)) ||
+              readout.contains(QString("fore 178.1") + QChar(0x00B0)))
+      << readout.toStdString();
 }
 
 }  // namespace

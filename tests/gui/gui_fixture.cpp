@@ -103,6 +103,11 @@ void GuiTest::SetUp() {
 void GuiTest::TearDown() {
   // The test's folder goes with it: nothing may write settings there afterwards.
   SettingsIn(SharedTempDir("gui-settings").path());
+  // A send writes its plan and journal beside the shared scene's video: the next test starts
+  // without them.
+  for (const char* name : {"scene.val", "scene.val.journal"}) {
+    if (g_scenes) std::filesystem::remove(std::filesystem::path(g_scenes->arm_dir) / name);
+  }
 }
 
 const GuiScenes& GuiTest::scenes() { return *g_scenes; }

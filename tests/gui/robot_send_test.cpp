@@ -229,7 +229,8 @@ TEST_F(RobotSendTest, ADroppedSendResumesFromTheJournalToTheSameFinalPose) {
 
   finished = false;
   const QString confirm = ClickAndConfirm(Button("resumeButton"));
-  EXPECT_NE(confirm.indexOf("resuming at plan.val:"), -1) << confirm.toStdString();
+  // The plan was written beside the video before the send, and is named as that file.
+  EXPECT_NE(confirm.indexOf("resuming at scene.val:"), -1) << confirm.toStdString();
   ASSERT_TRUE(WaitUntil([&] { return finished; }, 60000)) << w.log()->text().toStdString();
   ASSERT_TRUE(ok) << w.log()->text().toStdString() << panel_->replyLog().toStdString();
   // The move in flight when the link dropped was settled by asking the arm.
@@ -260,8 +261,8 @@ TEST_F(RobotSendTest, ResumeRefusesAJournalOfAnotherProgramOrNone) {
   Connect(w);
   Button("resumeButton")->click();
   EXPECT_NE(w.log()->text().indexOf("there is no journal"), -1) << w.log()->text().toStdString();
-  // A journal beside the angle file, left by a send of other lines.
-  const std::string journal = robot::SendJournal::PathFor(panel_->plan().angle_path());
+  // A journal beside the plan's file (VIDEO.val), left by a send of other lines.
+  const std::string journal = robot::SendJournal::PathFor(panel_->planFile().toStdString());
   {
     robot::SendJournal j;
     ASSERT_TRUE(j.Open(journal,

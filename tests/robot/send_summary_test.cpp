@@ -88,6 +88,15 @@ TEST(SendSummary, AResumeSummarisesOnlyTheRest) {
   EXPECT_EQ(s.max_deg[1], -60);
   EXPECT_EQ(s.resumed_at, "p.val:5");
   EXPECT_NE(FormatSendSummary(s).find("resuming at p.val:5"), std::string::npos);
+  // What is left of the program, and where the two acknowledged lines left the arm.
+  EXPECT_EQ(s.remaining_lines, 2);
+  EXPECT_EQ(s.total_lines, 4);
+  ASSERT_TRUE(s.has_resume_pose);
+  EXPECT_EQ(s.resume_pose_deg[0], 0);
+  EXPECT_EQ(s.resume_pose_deg[1], -90);
+  const std::string text = FormatSendSummary(s);
+  EXPECT_NE(text.find("2 of 4 program lines still to send"), std::string::npos) << text;
+  EXPECT_NE(text.find("left it: J1 0.0 J2 -90.0 J3 0.0"), std::string::npos) << text;
 }
 
 TEST(SendSummary, AnUntimedProgramSaysSo) {

@@ -21,6 +21,12 @@ struct SendSummary {
   JointArray max_deg{};
   JointLimits limits;      // the limits every line is checked against
   std::string resumed_at;  // "PROGRAM.val:12" after a resume, else ""
+  // After a resume: the program's lines not yet acknowledged (of `total_lines`), and where the
+  // acknowledged ones left the arm, which is where it must stand before the rest moves it.
+  int remaining_lines = 0;
+  int total_lines = 0;
+  bool has_resume_pose = false;
+  JointArray resume_pose_deg{};
 };
 
 // After SendSession::Prepare.

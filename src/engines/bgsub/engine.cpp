@@ -201,13 +201,18 @@ class BgsubEngine final : public Engine {
             ? 0.0
             : std::clamp(std::min(fit.upper_support, fit.fore_support) * (1 - fit.against) / 0.5,
                          0.0, 1.0);
-    std::ostringstream note;
-    note.precision(2);
-    note << "fit u " << fit.upper_support << " f " << fit.fore_support << " a " << fit.against
-         << " m " << fit.margin << " c " << fit.clutter;
+    // In words for the operator; the numbers are the confidence (its own column).
+    std::string note = "both segments fit";
+    if (fit.clutter > kMaxClutter) {
+      note = "the arm's surroundings look like arm too";
+    } else if (std::min(fit.upper_support, fit.fore_support) < 0.5) {
+      note = fit.upper_support < fit.fore_support ? "the upper arm fits weakly"
+                                                  : "the forearm fits weakly";
+    }
+    if (fit.against > 0.25) note += ", with moving pixels against it";
     const cv::Point2d o = cv::Point2d(region_.tl()) + cv::Point2d(evidence_.window_tl());
     m->phase = MeasurementPhase::kOk;
-    m->note = note.str();
+    m->note = note;
     m->confidence = conf;
     m->upper_deg = fit.upper_deg;
     m->fore_deg = fit.fore_deg;
