@@ -4,6 +4,7 @@
 // Length: DrawRig draws every value of the rig from one seeded generator in a fixed order.
 #include "armmimic/synth/marker_rig.h"
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -97,10 +98,9 @@ void DrawRig(const MarkerRigOptions& o, MarkerRig* rig, rig::RigScene* sc) {
   r.principal_px = {w / 2 + U(rng, -pp, pp), h / 2 + U(rng, -pp, pp)};
   r.pitch_deg = easy ? U(rng, -3, 3) : U(rng, -7, 7);
   r.roll_deg = easy ? 0 : hard ? U(rng, -0.8, 0.8) : U(rng, -0.5, 0.5);
-  // The pivot anywhere the lower markers stay in the image: near a side or the bottom edge too.
   const double reach = (r.pivot_distance + r.marker_radius) * r.radius_px;
-  r.pivot_px = {U(rng, 1.15 * r.radius_px + 3, w - 1.15 * r.radius_px - 3),
-                U(rng, reach + 3, h - reach - 1.5)};
+  const std::array<double, 2> across = {1.15 * r.radius_px + 3, w - 1.15 * r.radius_px - 3};
+  const std::array<double, 2> down = {reach + 3, h - reach - 1.5};
   r.blur_px = (easy ? U(rng, 0.3, 0.5) : hard ? U(rng, 0.5, 0.9) : U(rng, 0.4, 0.7)) * k;
   r.noise = easy ? 1.5 : hard ? 3 : 2;
   r.specular = easy ? U(rng, 0.05, 0.15) : hard ? U(rng, 0.15, 0.4) : U(rng, 0.1, 0.3);
@@ -118,11 +118,26 @@ void DrawRig(const MarkerRigOptions& o, MarkerRig* rig, rig::RigScene* sc) {
   const cv::Matx33d roll(std::cos(q), -std::sin(q), 0, std::sin(q), std::cos(q), 0, 0, 0, 1);
   cam.from_world = roll * pitch * base;
   // Place the camera so that the pivot (the world origin) is seen at pivot_px, one radius being
-  // radius_px there.
+  // radius_px there: anywhere the reference shows the three markers whole, near a side or the
+  // bottom edge too.
   const double distance = cam.focal_px / r.radius_px;
-  cam.centre = V3(0, 0, 0);
-  const V3 towards_pivot = cam.Ray(r.pivot_px.x, r.pivot_px.y);  // world, from the camera
-  cam.centre = -distance * towards_pivot;
+  const double a = RadFromDeg(r.marker_angle_deg), e = r.pivot_distance, mr = r.marker_radius;
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    r.pivot_px = {U(rng, across[0], across[1]), U(rng, down[0], down[1])};
+    cam.centre = V3(0, 0, 0);
+    const V3 towards_pivot = cam.Ray(r.pivot_px.x, r.pivot_px.y);  // world, from the camera
+    cam.centre = -distance * towards_pivot;
+    bool whole = true;
+    for (const V3& c :
+         {V3(-std::sin(a), -e, std::cos(a)), V3(std::sin(a), -e, std::cos(a)), V3(0, e, 1)}) {
+      for (const V3& d : {V3(mr, 0, 0), V3(-mr, 0, 0), V3(0, mr, 0), V3(0, -mr, 0)}) {
+        cv::Point2d px;
+        whole &= cam.Project(c + d, &px) && px.x >= 1.5 && px.y >= 1.5 && px.x <= w - 2.5 &&
+                 px.y <= h - 2.5;
+      }
+    }
+    if (whole) break;
+  }
   r.elevation_deg = DegFromRad(std::asin(cam.centre[1] / cv::norm(cam.centre)));
 
   sc->marker_radius = r.marker_radius;

@@ -119,7 +119,11 @@ bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_rati
   cv::Rect w(blob->box.x - 2, blob->box.y - 2 - grow, blob->box.width + 4,
              blob->box.height + 4 + 2 * grow);
   const cv::Rect image(0, 0, gray.cols, gray.rows);
-  if ((w & image) != w) return false;
+  // A marker near the image's edge keeps the part of its ring the image shows; one that touches
+  // the edge is cut and has no centre to measure.
+  const cv::Rect inner(1, 1, gray.cols - 2, gray.rows - 2);
+  if ((blob->box & inner) != blob->box) return false;
+  w &= image;
   // The blob may be one fragment of its marker (flood fill is relative to the seed): widen the
   // window while its edge still holds marker-dark pixels.
   {
@@ -149,7 +153,7 @@ bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_rati
       if (dark_count({w.x + w.width - 1, w.y, 1, w.height}) >= 2) w.width += 1, grown = true;
       if (dark_count({w.x, w.y, w.width, 1}) >= 2) w.y -= 1, w.height += 1, grown = true;
       if (dark_count({w.x, w.y + w.height - 1, w.width, 1}) >= 2) w.height += 1, grown = true;
-      if ((w & image) != w) return false;
+      w &= image;
       if (!grown) break;
     }
   }

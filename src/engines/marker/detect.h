@@ -43,7 +43,8 @@ std::vector<MarkerBlob> FindMarkerCandidates(const cv::Mat& bgr, const MarkerOpt
 // surface's shading), and every pixel of the window counts by how dark it is between the
 // surround and the marker level. `core_ratio` is marker / surround level learnt from the
 // reference (<= 0: take the darkest median-filtered value in the blob). False when the blob
-// touches the image border or has no contrast (the blob keeps its bounding-box centre).
+// touches the image border (a window the border cuts is kept) or has no contrast (the blob keeps
+// its bounding-box centre).
 // `min_height`: the window spans at least this many rows (the reference marker's height).
 bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_ratio, int min_height,
                   MarkerBlob* blob);

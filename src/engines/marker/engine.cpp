@@ -113,8 +113,9 @@ class MarkerEngine : public Engine {
     }
     if (!r.ok) return m;
     m.phase = MeasurementPhase::kOk;
-    m.yaw_signed_deg = DegFromRad(r.yaw);
-    m.yaw_deg = std::abs(m.yaw_signed_deg);
+    m.yaw_deg = std::abs(DegFromRad(r.yaw));
+    // The signed column only where the sign rests on evidence; the row stays ok for yaw_deg.
+    m.yaw_signed_deg = r.sign_known ? DegFromRad(r.yaw) : kNaN;
     m.bend_deg = std::isfinite(r.bend) ? Wrap180(DegFromRad(r.bend)) : kNaN;
     m.shoulder_px = r.pivot_px;  // the pivot, for the overlay
     m.marker_centres = {r.upper_px, r.left_px, r.right_px};
@@ -152,17 +153,24 @@ class MarkerEngine : public Engine {
     reference_blobs_ = static_cast<int>(blobs.size());
     if (ChooseReferenceTriple(blobs, scratch_.filtered, options_.thesis_mode, t)) return true;
     if (!options_.auto_window || options_.thesis_mode) return false;
+    // The thesis' area bounds suit its markers at its distance; the cylinder model measures any
+    // size, so larger markers (or a nearer camera) are looked for too, the triple's symmetry
+    // still deciding which blobs are the markers.
     const int width = requested_.high - requested_.low;
-    for (int shift = 5; shift <= 255; shift += 5) {
-      for (int sign : {-1, 1}) {
-        MarkerOptions o = requested_;
-        o.low = requested_.low + sign * shift;
-        o.high = o.low + width;
-        if (o.low < 0 || o.high > 255) continue;
-        blobs = FindMarkerCandidates(ref, o, &scratch_);
-        if (ChooseReferenceTriple(blobs, scratch_.filtered, false, t)) {
-          options_ = o;
-          return true;
+    for (int area_scale : {1, 3, 9}) {
+      for (int shift = 0; shift <= 255; shift += 5) {
+        for (int sign : {-1, 1}) {
+          if (shift == 0 && (sign < 0 || area_scale == 1)) continue;
+          MarkerOptions o = requested_;
+          o.max_area = requested_.max_area * area_scale;
+          o.low = requested_.low + sign * shift;
+          o.high = o.low + width;
+          if (o.low < 0 || o.high > 255) continue;
+          blobs = FindMarkerCandidates(ref, o, &scratch_);
+          if (ChooseReferenceTriple(blobs, scratch_.filtered, false, t)) {
+            options_ = o;
+            return true;
+          }
         }
       }
     }

@@ -28,8 +28,9 @@ std::vector<int> RowRange(double from, double to, int rows) {
 
 // The silhouette's two steps in `profiles` (each over the same columns, first column x0), about
 // symmetric about `mid` (within 3 pixels) at half-widths [lo, hi]: the pair of columns with the
-// largest summed gradient magnitude (each band sees its own background, so the step's sign may
-// differ).
+// largest product of gradient magnitudes: both edges must show (a shadow on the wall beside the
+// joint makes one strong step that a sum would pair with nothing). Each band sees its own
+// background, so the step's sign may differ.
 bool SymmetricEdges(const std::vector<std::vector<double>>& profiles, int x0, double mid, double lo,
                     double hi, int* left, int* right) {
   auto g = [&](int i) {
@@ -45,7 +46,7 @@ bool SymmetricEdges(const std::vector<std::vector<double>>& profiles, int x0, do
     const int i = xl - x0;
     const int j = static_cast<int>(std::lround(2 * mid - xl)) - x0;
     for (int dj = -3; dj <= 3; ++dj) {  // the markers' midpoint is only near the axis
-      const double s = g(i) + g(j + dj);
+      const double s = g(i) * g(j + dj);
       if (s > best) best = s, *left = i + x0, *right = j + dj + x0;
     }
   }

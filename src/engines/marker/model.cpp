@@ -99,6 +99,7 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
   // plainly. Of two sides left, the one whose upper marker is found plainly (its silhouette as
   // clear as in the reference) wins if the other finds none.
   std::size_t pick = 0;
+  bool side_seen = true;  // the single marker's side rests on the image, not the upper marker
   UpperMeasurement upper = Upper(gray, cyl, cal, options, yaw.hypotheses[0].yaw);
   out.candidates.insert(out.candidates.end(), upper.spots.begin(), upper.spots.end());
   if (yaw.hypotheses.size() == 2) {
@@ -128,22 +129,34 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
       return out;
     }
     if (alive[1]) pick = 1, upper = other;
+    // The other side is ruled out by the image itself (its other lower marker would show and
+    // does not), or both sides turn the joint the same way; otherwise only the upper marker
+    // chose, and its test may be fooled (a dark spot where the wrong side puts it).
+    const YawHypothesis& a = yaw.hypotheses[0];
+    const YawHypothesis& b = yaw.hypotheses[1];
+    side_seen = yaw.hypotheses[1 - pick].other_missing || (a.yaw > 0) == (b.yaw > 0);
   }
   const YawHypothesis& h = yaw.hypotheses[pick];
   out.ok = true;
   out.yaw = h.yaw;
+  // A yaw within two expected spreads of zero has no sign to tell.
+  out.sign_known = side_seen && std::abs(h.yaw) >= 2 * h.sigma;
   if (h.left) out.left_px = h.left->centre_px;
   if (h.right) out.right_px = h.right->centre_px;
   const std::string markers = h.left && h.right ? "both lower markers"
                               : h.left          ? "the left lower marker"
                                                 : "the right lower marker";
+  const std::string sign =
+      out.sign_known ? ""
+      : side_seen    ? "; sign unknown: the yaw is within its spread of zero"
+                     : "; sign unknown: only the upper marker tells which lower marker shows";
   if (upper.found && !upper.ambiguous) {
     out.bend = upper.bend;
     out.upper_px = upper.centre_px;
     out.note = "yaw from " + markers + " (+-" + FormatNumber(DegFromRad(h.sigma), 2) +
-               " deg); bend from the upper marker";
+               " deg); bend from the upper marker" + sign;
   } else {
-    out.note = "yaw from " + markers + "; no bend: " + upper.note;
+    out.note = "yaw from " + markers + sign + "; no bend: " + upper.note;
   }
   return out;
 }
