@@ -149,7 +149,8 @@ void DrawRig(const MarkerRigOptions& o, MarkerRig* rig, rig::RigScene* sc) {
   sc->marker_albedo = U(rng, 0.06, 0.2);
   sc->specular = r.specular;
   sc->shininess = r.shininess;
-  sc->light = easy ? cv::normalize(V3(U(rng, -0.4, 0.4), U(rng, 0.2, 0.6), 0.85))
+  // Easy: the light beside the camera, so the joint's shadow falls mostly behind it.
+  sc->light = easy ? cv::normalize(V3(U(rng, -0.15, 0.15), U(rng, 0.1, 0.35), 0.9))
                    : cv::normalize(V3(U(rng, -0.9, 0.9), U(rng, 0.1, 0.6), U(rng, 0.4, 0.9)));
   sc->ambient = U(rng, 0.25, 0.45);
   sc->gain = easy ? U(rng, 0.9, 1.1) : U(rng, 0.75, 1.2);

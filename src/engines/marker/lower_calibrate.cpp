@@ -26,30 +26,44 @@ std::vector<int> RowRange(double from, double to, int rows) {
   return out;
 }
 
-// The silhouette's two steps in `profiles` (each over the same columns, first column x0), about
-// symmetric about `mid` (within 3 pixels) at half-widths [lo, hi]: the pair of columns with the
-// largest product of gradient magnitudes: both edges must show (a shadow on the wall beside the
-// joint makes one strong step that a sum would pair with nothing). Each band sees its own
-// background, so the step's sign may differ.
-bool SymmetricEdges(const std::vector<std::vector<double>>& profiles, int x0, double mid, double lo,
-                    double hi, int* left, int* right) {
-  auto g = [&](int i) {
-    double sum = 0;
-    for (const std::vector<double>& p : profiles) {
-      if (i >= 1 && i + 1 < static_cast<int>(p.size())) sum += std::abs(p[i + 1] - p[i - 1]);
-    }
-    return sum;
-  };
-  double best = 0;
-  *left = *right = -1;
+// The silhouette's two steps in `profiles` (each over the same columns, first column x0) either
+// side of `mid` (the lower markers' midpoint) at half-widths [lo, hi]: the pair of columns with
+// the largest product of gradient magnitudes, so that both edges must show. Each band sees its
+// own background, so the step's sign may differ. The markers' midpoint lies off the axis when
+// the camera sees the joint from aside (at zero yaw they are symmetric about the front, not
+// about the line of sight), so the pair need not be symmetric about it. Between its edges the
+// surface's shading is smooth (the bands hold no marker): a pair with a steeper step inside
+// than at either edge has an edge on the wall beyond the limb (a shadow's edge) and is taken
+// only when no pair passes that test (a limb as bright as the wall shows only a faint step).
+bool SilhouetteEdges(const std::vector<std::vector<double>>& profiles, int x0, double mid,
+                     double lo, double hi, int* left, int* right) {
+  const int width = profiles.empty() ? 0 : static_cast<int>(profiles[0].size());
+  std::vector<double> g(width, 0.0);
+  for (int i = 1; i + 1 < width; ++i) {
+    for (const std::vector<double>& p : profiles) g[i] += std::abs(p[i + 1] - p[i - 1]);
+  }
+  double best[2] = {0, 0};  // smooth inside, any
+  int pick[2][2] = {{-1, -1}, {-1, -1}};
   for (int xl = static_cast<int>(std::ceil(mid - hi)); xl <= mid - lo; ++xl) {
     const int i = xl - x0;
-    const int j = static_cast<int>(std::lround(2 * mid - xl)) - x0;
-    for (int dj = -3; dj <= 3; ++dj) {  // the markers' midpoint is only near the axis
-      const double s = g(i) * g(j + dj);
-      if (s > best) best = s, *left = i + x0, *right = j + dj + x0;
+    if (i < 1 || i + 1 >= width || g[i] == 0) continue;
+    for (int xr = static_cast<int>(std::ceil(mid + lo)); xr <= mid + hi; ++xr) {
+      const int j = xr - x0;
+      if (j < 1 || j + 1 >= width) continue;
+      const double s = g[i] * g[j];
+      if (s <= best[0] && s <= best[1]) continue;
+      double inside = 0;
+      for (int k = i + 3; k <= j - 3; ++k) inside = std::max(inside, g[k]);
+      const bool smooth = inside < std::min(g[i], g[j]);
+      for (int c = 0; c < 2; ++c) {
+        if (c == 0 && !smooth) continue;
+        if (s > best[c]) best[c] = s, pick[c][0] = xl, pick[c][1] = xr;
+      }
     }
   }
+  const int c = pick[0][0] >= 0 ? 0 : 1;
+  *left = pick[c][0];
+  *right = pick[c][1];
   return *left >= 0;
 }
 
@@ -173,7 +187,7 @@ bool FirstSilhouette(const cv::Mat& gray, const Layout& g, double upper_y, doubl
   for (int b = 0; b < 2; ++b) ColumnProfile(gray, first[b].rows, g.x0, g.width, &profiles[b]);
   int li = 0, ri = 0;
   if (first[0].rows.size() + first[1].rows.size() < 4 ||
-      !SymmetricEdges(profiles, g.x0, g.mid, 0.45 * g.n, 1.7 * g.n, &li, &ri)) {
+      !SilhouetteEdges(profiles, g.x0, g.mid, 0.45 * g.n, 1.7 * g.n, &li, &ri)) {
     *message = "the joint shows too few rows beside its markers to find its silhouette";
     return false;
   }
@@ -196,14 +210,22 @@ bool FirstSilhouette(const cv::Mat& gray, const Layout& g, double upper_y, doubl
 // them that show only the surface.
 bool ChooseBands(const cv::Mat& gray, const Layout& g, const CylinderView& cyl, double left,
                  double right, LowerCalibration* cal, std::string* message) {
-  const double d = cyl.distance();
-  const double toward = g.off / d * 1.2 + 2, away = g.off / std::max(1.0, d - 1) * 1.2 + 2;
-  const bool below_horizon = g.y_low >= g.cy;
-  cal->band_top = std::max(
-      0, static_cast<int>(std::floor(g.y_low - 0.5 * g.h - (below_horizon ? toward : away))));
-  cal->band_bottom =
-      std::min(gray.rows - 1,
-               static_cast<int>(std::ceil(g.y_low + 0.5 * g.h + (below_horizon ? away : toward))));
+  // A lower marker turned to theta moves along its row's line to the principal row by the ratio
+  // of its depths: each marker's rows, over every turn it can be read at (and a little beyond,
+  // up to 80 degrees), plus its half-height at that depth and a pixel for a camera tilted a
+  // little (its horizon row is not quite the principal row).
+  double top = g.y_low, bottom = g.y_low;
+  for (double x : {g.mid - 0.5 * g.n, g.mid + 0.5 * g.n}) {
+    const double depth0 = cyl.Depth(cyl.ThetaFromX(x));
+    for (double deg = -80; deg <= 80; deg += 2) {
+      const double scale = depth0 / cyl.Depth(RadFromDeg(deg));
+      const double y = g.cy + (g.y_low - g.cy) * scale;
+      top = std::min(top, y - 0.5 * g.h * scale - 1);
+      bottom = std::max(bottom, y + 0.5 * g.h * scale + 1);
+    }
+  }
+  cal->band_top = std::max(0, static_cast<int>(std::floor(top)));
+  cal->band_bottom = std::min(gray.rows - 1, static_cast<int>(std::ceil(bottom)));
   const double pivot_y = g.y_low - g.e_px;
   cal->bands[0].rows = RowRange(pivot_y + 1.15 * cyl.half_width_px(), cal->band_top - 2, gray.rows);
   cal->bands[1].rows = RowsOnTheSurface(
