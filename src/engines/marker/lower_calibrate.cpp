@@ -186,8 +186,9 @@ bool FirstSilhouette(const cv::Mat& gray, const Layout& g, double upper_y, doubl
   std::vector<std::vector<double>> profiles(2);
   for (int b = 0; b < 2; ++b) ColumnProfile(gray, first[b].rows, g.x0, g.width, &profiles[b]);
   int li = 0, ri = 0;
+  // The lower markers lie on the surface: each edge lies beyond the nearer marker's centre.
   if (first[0].rows.size() + first[1].rows.size() < 4 ||
-      !SilhouetteEdges(profiles, g.x0, g.mid, 0.45 * g.n, 1.7 * g.n, &li, &ri)) {
+      !SilhouetteEdges(profiles, g.x0, g.mid, 0.5 * g.n + 1.5, 1.7 * g.n, &li, &ri)) {
     *message = "the joint shows too few rows beside its markers to find its silhouette";
     return false;
   }
@@ -245,6 +246,12 @@ bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, in
   LowerScratch scratch;
   for (int pass = 0; pass < 2; ++pass) {
     MeasureLowerMarkers(gray, *cal, x0, surface, true, scan, &scratch);
+    // A marker the limb cuts is read from its inner end and the disc's half-chord, which needs
+    // the markers' angular radius: the whole one's.
+    if (scan->markers.size() == 1 && !scan->markers[0].cut && cal->delta == 0) {
+      cal->delta = scan->markers[0].radius;
+      MeasureLowerMarkers(gray, *cal, x0, surface, true, scan, &scratch);
+    }
     if (scan->markers.size() != 2) {
       *message = "found " + std::to_string(scan->markers.size()) +
                  " dark patches across the joint at the lower markers' height, expected 2";
@@ -267,7 +274,7 @@ bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, in
   const LowerMarker& r = scan->markers[1];
   cal->theta_left0 = l.theta;
   cal->theta_right0 = r.theta;
-  cal->delta = 0.5 * (l.radius + r.radius);
+  cal->delta = l.cut ? r.radius : r.cut ? l.radius : 0.5 * (l.radius + r.radius);
   const double f = camera.focal_px, cy = camera.principal_px.y;
   const CylinderView& c = scan->cylinder;
   cal->height = 0.5 * ((cy - l.centre_px.y) * c.Depth(l.theta) / f +
@@ -336,14 +343,13 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
     const double known = weak == 0 ? cal->right_edge_px : cal->left_edge_px;
     const double edge = HiddenEdge(camera, known, weak, left_px, right_px, upper_px);
     double& fitted = weak == 0 ? cal->left_edge_px : cal->right_edge_px;
-    // A faint step that both bands place alike is the limb or the shading inside it, never
-    // beyond: the symmetry moves it only outwards (the markers' centroids shift a little under
-    // side light, which would otherwise narrow a plainly seen joint).
-    const bool agree = !(bands[0].strength[weak] != 0 && bands[1].strength[weak] != 0 &&
-                         std::abs(bands[0].edge_px[weak] - bands[1].edge_px[weak]) > 1);
+    // A faint step is the limb or the shading inside it, never beyond: the symmetry moves it
+    // only outwards (the markers' centroids shift a little under side light, and a marker's
+    // centroid is not its centre's image when the camera sees the joint from aside or tilted,
+    // which would otherwise narrow a plainly seen joint or cut a marker).
     const bool outwards = (weak == 0 ? fitted - edge : edge - fitted) > 0;
     if (!std::isnan(edge)) {
-      if (steepest(weak) == 0 || (std::abs(edge - fitted) > 1 && (outwards || !agree))) {
+      if (steepest(weak) == 0 || (std::abs(edge - fitted) > 1 && outwards)) {
         fitted = edge;
       }
     } else if (steepest(weak) == 0) {
