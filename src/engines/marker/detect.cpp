@@ -320,11 +320,10 @@ SurfaceStretch SampleStretch(const cv::Mat& filtered, cv::Point2d a, cv::Point2d
   return out;
 }
 
-bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, const cv::Mat& filtered,
-                           bool thesis_mode, MarkerTriple* out) {
-  if (thesis_mode) return ThreeLargest(blobs, out);
+std::vector<MarkerTriple> RankReferenceTriples(const std::vector<MarkerBlob>& blobs,
+                                               const cv::Mat& filtered, int limit) {
   const int count = std::min<int>(static_cast<int>(blobs.size()), 16);
-  double best = 1e9;
+  std::vector<std::pair<double, MarkerTriple>> ranked;
   for (int i = 0; i < count; ++i) {
     for (int j = 0; j < count; ++j) {
       const MarkerBlob& a = blobs[i];
@@ -345,14 +344,27 @@ bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, const cv::Mat& 
         const SurfaceStretch up = SampleStretch(filtered, mid, c.centre);
         if (pair.uneven > 0.25 || up.uneven > 0.25) continue;
         const double score = off / n + dy / n + 0.5 * size_diff + pair.uneven + up.uneven;
-        if (score < best) {
-          best = score;
-          *out = Ordered(c, a, b);
-        }
+        ranked.emplace_back(score, Ordered(c, a, b));
       }
     }
   }
-  return best < 1e9;
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<MarkerTriple> out;
+  for (const auto& [score, t] : ranked) {
+    if (static_cast<int>(out.size()) >= limit) break;
+    out.push_back(t);
+  }
+  return out;
+}
+
+bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, const cv::Mat& filtered,
+                           bool thesis_mode, MarkerTriple* out) {
+  if (thesis_mode) return ThreeLargest(blobs, out);
+  const std::vector<MarkerTriple> ranked = RankReferenceTriples(blobs, filtered, 1);
+  if (ranked.empty()) return false;
+  *out = ranked[0];
+  return true;
 }
 
 MarkerAngles ComputeThesisAngles(const MarkerTriple& t, const MarkerReference& ref) {

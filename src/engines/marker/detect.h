@@ -67,6 +67,10 @@ struct MarkerReference {
 // surface (even), not background.
 bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, const cv::Mat& filtered,
                            bool thesis_mode, MarkerTriple* out);
+// The `limit` most symmetric triples, best first (the cylinder model calibrates from the first
+// one it can measure).
+std::vector<MarkerTriple> RankReferenceTriples(const std::vector<MarkerBlob>& blobs,
+                                               const cv::Mat& filtered, int limit);
 // Thesis 4.2.5: the three largest survivors, the top-most as upper.
 bool ThreeLargest(const std::vector<MarkerBlob>& blobs, MarkerTriple* out);
 

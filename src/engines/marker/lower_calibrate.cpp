@@ -27,44 +27,44 @@ std::vector<int> RowRange(double from, double to, int rows) {
 }
 
 // The silhouette's two steps in `profiles` (each over the same columns, first column x0) either
-// side of `mid` (the lower markers' midpoint) at half-widths [lo, hi]: the pair of columns with
-// the largest product of gradient magnitudes, so that both edges must show. Each band sees its
-// own background, so the step's sign may differ. The markers' midpoint lies off the axis when
-// the camera sees the joint from aside (at zero yaw they are symmetric about the front, not
-// about the line of sight), so the pair need not be symmetric about it. Between its edges the
-// surface's shading is smooth (the bands hold no marker): a pair with a steeper step inside
-// than at either edge has an edge on the wall beyond the limb (a shadow's edge) and is taken
-// only when no pair passes that test (a limb as bright as the wall shows only a faint step).
+// side of `mid` (the lower markers' midpoint), each at least `lo` and at most `hi` from it (the
+// markers lie on the surface: each edge lies beyond the nearer marker's centre). Going outwards
+// from the markers, each edge is the first step at least a quarter as steep as the steepest on
+// its side: the limb is the first silhouette met, a shadow's or a poster's edge on the wall
+// beyond it may be steeper (each band sees its own background, so a step's sign may differ).
+// The markers' midpoint lies off the axis when the camera sees the joint from aside, so the
+// edges need not be symmetric about it.
 bool SilhouetteEdges(const std::vector<std::vector<double>>& profiles, int x0, double mid,
                      double lo, double hi, int* left, int* right) {
+  constexpr double kShare = 0.25;
   const int width = profiles.empty() ? 0 : static_cast<int>(profiles[0].size());
   std::vector<double> g(width, 0.0);
   for (int i = 1; i + 1 < width; ++i) {
     for (const std::vector<double>& p : profiles) g[i] += std::abs(p[i + 1] - p[i - 1]);
   }
-  double best[2] = {0, 0};  // smooth inside, any
-  int pick[2][2] = {{-1, -1}, {-1, -1}};
-  for (int xl = static_cast<int>(std::ceil(mid - hi)); xl <= mid - lo; ++xl) {
-    const int i = xl - x0;
-    if (i < 1 || i + 1 >= width || g[i] == 0) continue;
-    for (int xr = static_cast<int>(std::ceil(mid + lo)); xr <= mid + hi; ++xr) {
-      const int j = xr - x0;
-      if (j < 1 || j + 1 >= width) continue;
-      const double s = g[i] * g[j];
-      if (s <= best[0] && s <= best[1]) continue;
-      double inside = 0;
-      for (int k = i + 3; k <= j - 3; ++k) inside = std::max(inside, g[k]);
-      const bool smooth = inside < std::min(g[i], g[j]);
-      for (int c = 0; c < 2; ++c) {
-        if (c == 0 && !smooth) continue;
-        if (s > best[c]) best[c] = s, pick[c][0] = xl, pick[c][1] = xr;
+  int* out[2] = {left, right};
+  for (int side = 0; side < 2; ++side) {
+    const int step = side == 0 ? -1 : 1;
+    const int from = static_cast<int>(side == 0 ? std::floor(mid - lo) : std::ceil(mid + lo));
+    const int to = static_cast<int>(side == 0 ? std::ceil(mid - hi) : std::floor(mid + hi));
+    auto inside = [&](int x) { return x - x0 >= 1 && x - x0 + 1 < width; };
+    double steepest = 0;
+    for (int x = from; step * (to - x) >= 0; x += step) {
+      if (inside(x)) steepest = std::max(steepest, g[x - x0]);
+    }
+    *out[side] = -1;
+    if (steepest == 0) return false;
+    for (int x = from; step * (to - x) >= 0; x += step) {
+      if (inside(x) && g[x - x0] >= kShare * steepest) {
+        // The step's own peak, a column or two further out.
+        int peak = x;
+        while (inside(peak + step) && g[peak + step - x0] > g[peak - x0]) peak += step;
+        *out[side] = peak;
+        break;
       }
     }
   }
-  const int c = pick[0][0] >= 0 ? 0 : 1;
-  *left = pick[c][0];
-  *right = pick[c][1];
-  return *left >= 0;
+  return *left >= 0 && *right >= 0;
 }
 
 // Measures a band's two edges near `left`, `right` (image columns): the steepest step (tracked in
@@ -241,14 +241,14 @@ bool ChooseBands(const cv::Mat& gray, const Layout& g, const CylinderView& cyl, 
 // Marker grey over surface grey at the two markers' centres, then the markers measured with it:
 // their zero-yaw angles, angular radius and height.
 bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, int x0,
-                             const std::vector<double>& surface, LowerCalibration* cal,
-                             LowerScan* scan, std::string* message) {
+                             const std::vector<double>& surface, bool allow_cut,
+                             LowerCalibration* cal, LowerScan* scan, std::string* message) {
   LowerScratch scratch;
   for (int pass = 0; pass < 2; ++pass) {
     MeasureLowerMarkers(gray, *cal, x0, surface, true, scan, &scratch);
     // A marker the limb cuts is read from its inner end and the disc's half-chord, which needs
     // the markers' angular radius: the whole one's.
-    if (scan->markers.size() == 1 && !scan->markers[0].cut && cal->delta == 0) {
+    if (allow_cut && scan->markers.size() == 1 && !scan->markers[0].cut && cal->delta == 0) {
       cal->delta = scan->markers[0].radius;
       MeasureLowerMarkers(gray, *cal, x0, surface, true, scan, &scratch);
     }
@@ -280,6 +280,43 @@ bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, in
   cal->height = 0.5 * ((cy - l.centre_px.y) * c.Depth(l.theta) / f +
                        (cy - r.centre_px.y) * c.Depth(r.theta) / f);
   return true;
+}
+
+// The lower markers are equal discs: measured across the cylinder they have the same angular
+// radius, whatever the camera's tilt (both lie at one height). A silhouette edge placed wrongly
+// stretches the angles on its side, so the weaker edge is moved (within a third of a radius)
+// to where the two radii agree best, when they differ by over 3 % at the steps' edges. Markers
+// the limb cuts give no radius and leave the edges as they are.
+void EqualDiscs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
+                const std::vector<double>& surface, int weak, LowerCalibration* cal,
+                LowerScan* scan) {
+  auto unequal = [](const LowerScan& sc) {
+    const double a = sc.markers[0].radius, b = sc.markers[1].radius;
+    if (sc.markers[0].cut || sc.markers[1].cut || !(a > 0) || !(b > 0)) return kNaN;
+    return std::abs(a - b) / (a + b);
+  };
+  double best = unequal(*scan);
+  if (!(best > 0.03)) return;
+  const double start = weak == 0 ? cal->left_edge_px : cal->right_edge_px;
+  const double reach = 0.35 * 0.5 * (cal->right_edge_px - cal->left_edge_px);
+  const LowerCalibration base = *cal;
+  for (double d = -reach; d <= reach; d += 0.25) {
+    LowerCalibration c = base;
+    (weak == 0 ? c.left_edge_px : c.right_edge_px) = start + d;
+    c.delta = 0;
+    c.marker_ratio = LowerCalibration().marker_ratio;
+    LowerScan sc;
+    sc.left_edge_px = c.left_edge_px;
+    sc.right_edge_px = c.right_edge_px;
+    sc.cylinder = CylinderView(camera, c.left_edge_px, c.right_edge_px);
+    std::string ignored;
+    if (!sc.cylinder.valid() ||
+        !MeasureReferenceMarkers(gray, camera, x0, surface, false, &c, &sc, &ignored)) {
+      continue;
+    }
+    const double q = unequal(sc);
+    if (q < best) best = q, *cal = c, *scan = sc;
+  }
 }
 
 }  // namespace
@@ -339,18 +376,20 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   };
   int weak = steepest(0) < steepest(1) ? 0 : 1;
   if (unsure(1 - weak) && !unsure(weak)) weak = 1 - weak;
+  double symmetric_edge = kNaN;
   if (unsure(weak)) {
     const double known = weak == 0 ? cal->right_edge_px : cal->left_edge_px;
     const double edge = HiddenEdge(camera, known, weak, left_px, right_px, upper_px);
     double& fitted = weak == 0 ? cal->left_edge_px : cal->right_edge_px;
-    // A faint step is the limb or the shading inside it, never beyond: the symmetry moves it
-    // only outwards (the markers' centroids shift a little under side light, and a marker's
-    // centroid is not its centre's image when the camera sees the joint from aside or tilted,
-    // which would otherwise narrow a plainly seen joint or cut a marker).
-    const bool outwards = (weak == 0 ? fitted - edge : edge - fitted) > 0;
+    // The markers' symmetry places an edge no step shows. It is only approximate (under side
+    // light, seen from aside or by a tilted camera a marker's centroid is not its centre's
+    // image, and the upper marker lies at another height): a faint step's own edge is tried
+    // after it, and EqualDiscs refines whichever shows both lower markers whole.
     if (!std::isnan(edge)) {
-      if (steepest(weak) == 0 || (std::abs(edge - fitted) > 1 && outwards)) {
+      if (steepest(weak) == 0) {
         fitted = edge;
+      } else if (std::abs(edge - fitted) > 1 && steepest(weak) < kPlain) {
+        symmetric_edge = edge;
       }
     } else if (steepest(weak) == 0) {
       *message = "the joint's silhouette does not stand out from the background on one side";
@@ -359,11 +398,31 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   }
   cal->search_px = std::max(3, static_cast<int>(std::lround(0.1 * (right - left))));
   cal->marker_height_px = g.h;
-  *scan = LowerScan();
-  scan->left_edge_px = cal->left_edge_px;
-  scan->right_edge_px = cal->right_edge_px;
-  scan->cylinder = CylinderView(camera, cal->left_edge_px, cal->right_edge_px);
-  return MeasureReferenceMarkers(gray, camera, g.x0, surface, cal, scan, message);
+  // At zero yaw both lower markers show whole, near a limb as they may be: a silhouette that
+  // cuts one is wrong. The faint edge placed by the markers' symmetry is tried first,
+  // then the steps' own; a marker cut by the limb is accepted only when neither shows both whole.
+  const double fitted_edges[2] = {cal->left_edge_px, cal->right_edge_px};
+  std::string first_message;
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    const bool moved = attempt % 2 == 0;
+    if (moved && std::isnan(symmetric_edge)) continue;
+    cal->left_edge_px = fitted_edges[0];
+    cal->right_edge_px = fitted_edges[1];
+    if (moved) (weak == 0 ? cal->left_edge_px : cal->right_edge_px) = symmetric_edge;
+    cal->delta = 0;
+    cal->marker_ratio = LowerCalibration().marker_ratio;
+    *scan = LowerScan();
+    scan->left_edge_px = cal->left_edge_px;
+    scan->right_edge_px = cal->right_edge_px;
+    scan->cylinder = CylinderView(camera, cal->left_edge_px, cal->right_edge_px);
+    if (MeasureReferenceMarkers(gray, camera, g.x0, surface, attempt >= 2, cal, scan, message)) {
+      EqualDiscs(gray, camera, g.x0, surface, weak, cal, scan);
+      return true;
+    }
+    if (first_message.empty()) first_message = *message;
+  }
+  *message = first_message;
+  return false;
 }
 
 }  // namespace armmimic::internal

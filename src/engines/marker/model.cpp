@@ -116,6 +116,14 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
       const bool hidden = UpperTurn(cal, yaw.hypotheses[i].yaw) > RadFromDeg(kHiddenDeg);
       alive[i] = !yaw.hypotheses[i].other_missing && !(hidden && telling[1 - i]);
     }
+    // The side that puts the other lower marker where the image shows part of it (at the limb)
+    // is told by the image itself.
+    const bool seen[2] = {yaw.hypotheses[0].other_seen, yaw.hypotheses[1].other_seen};
+    bool by_image = false;
+    if (alive[0] && alive[1] && seen[0] != seen[1]) {
+      alive[seen[0] ? 1 : 0] = false;
+      by_image = true;
+    }
     if (alive[0] && alive[1]) {  // the side whose upper marker shows plainly, if only one does
       if (telling[0] && !plain[1]) {
         alive[1] = false;
@@ -134,22 +142,21 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
     // chose, and its test may be fooled (a dark spot where the wrong side puts it).
     const YawHypothesis& a = yaw.hypotheses[0];
     const YawHypothesis& b = yaw.hypotheses[1];
-    side_seen = yaw.hypotheses[1 - pick].other_missing || (a.yaw > 0) == (b.yaw > 0);
+    side_seen = by_image || yaw.hypotheses[1 - pick].other_missing || (a.yaw > 0) == (b.yaw > 0);
   }
   const YawHypothesis& h = yaw.hypotheses[pick];
   out.ok = true;
   out.yaw = h.yaw;
-  // A yaw within two expected spreads of zero has no sign to tell.
-  out.sign_known = side_seen && std::abs(h.yaw) >= 2 * h.sigma;
+  // Two lower markers measure the signed yaw through zero (near zero its sign is as good as its
+  // value); one marker's sign is only as good as the choice of its side.
+  out.sign_known = side_seen;
   if (h.left) out.left_px = h.left->centre_px;
   if (h.right) out.right_px = h.right->centre_px;
   const std::string markers = h.left && h.right ? "both lower markers"
                               : h.left          ? "the left lower marker"
                                                 : "the right lower marker";
   const std::string sign =
-      out.sign_known ? ""
-      : side_seen    ? "; sign unknown: the yaw is within its spread of zero"
-                     : "; sign unknown: only the upper marker tells which lower marker shows";
+      out.sign_known ? "" : "; sign unknown: only the upper marker tells which lower marker shows";
   if (upper.found && !upper.ambiguous) {
     out.bend = upper.bend;
     out.upper_px = upper.centre_px;

@@ -20,20 +20,33 @@ double Wrap(double a) {
   return a;
 }
 
-// Would the marker at `theta` show in the band, and does it? True when it would show at least
-// a pixel wide and the image has well under half of its dark area there.
-bool MissingWhereItWouldShow(const LowerScan& scan, const LowerCalibration& cal, double theta,
-                             const LowerMarker& seen) {
+// How far a marker's predicted angle may be off (the yaw's own error, the model's on a lens or
+// rig it only approximates): near a limb a marker that far further round may be hidden.
+constexpr double kPredictionMarginDeg = 4;
+
+enum class OtherMarker { kUndecided, kMissing, kSeen };
+
+// Would the marker at `theta` show in the band even `kPredictionMarginDeg` further round, and
+// does it? Missing when it would show at least a pixel wide and the image has well under half
+// of its dark area there; seen when the image has over half of it (a sliver at the limb counts).
+// The silhouette's edge pixels mix in the background and tell neither.
+OtherMarker OtherMarkerAt(const LowerScan& scan, const LowerCalibration& cal, double theta,
+                          const LowerMarker& seen) {
   const CylinderView& cyl = scan.cylinder;
-  const double lo = std::max(theta - cal.delta, -cyl.limb());
-  const double hi = std::min(theta + cal.delta, cyl.limb());
-  if (hi <= lo) return false;
-  const double x0 = cyl.XFromTheta(lo), x1 = cyl.XFromTheta(hi);
-  const double width = std::abs(x1 - x0);
-  if (width < 0.4) return false;  // too thin to tell
+  const double round =
+      theta >= 0 ? RadFromDeg(kPredictionMarginDeg) : -RadFromDeg(kPredictionMarginDeg);
+  const double lo = std::max(theta + round - cal.delta, -cyl.limb());
+  const double hi = std::min(theta + round + cal.delta, cyl.limb());
+  if (hi <= lo) return OtherMarker::kUndecided;
+  const double x0 = std::max(cyl.XFromTheta(lo), scan.left_edge_px + 1);
+  const double x1 = std::min(cyl.XFromTheta(hi), scan.right_edge_px - 1);
+  const double width = x1 - x0;
+  if (width < 1) return OtherMarker::kUndecided;  // too thin to tell
   // A disc's mean chord is pi/4 of its diameter; the part past the limb shows its middle rows.
   const double expected = width * 0.75 * cal.marker_height_px;
-  return scan.CoverageBetween(x0 - 1, x1 + 1, &seen) < 0.35 * expected;
+  const double found = scan.CoverageBetween(x0 - 1, x1 + 1, &seen);
+  if (found < 0.35 * expected) return OtherMarker::kMissing;
+  return found > 0.5 * expected ? OtherMarker::kSeen : OtherMarker::kUndecided;
 }
 
 }  // namespace
@@ -105,7 +118,9 @@ YawSolution SolveYaw(const LowerScan& scan, const LowerCalibration& cal, double 
     h.sigma = seen.sigma;
     (side == 0 ? h.left : h.right) = &seen;
     const double other = side == 0 ? seen.theta + spacing0 : seen.theta - spacing0;
-    h.other_missing = MissingWhereItWouldShow(scan, cal, other, seen);
+    const OtherMarker at = OtherMarkerAt(scan, cal, other, seen);
+    h.other_missing = at == OtherMarker::kMissing;
+    h.other_seen = at == OtherMarker::kSeen;
     out.hypotheses.push_back(h);
   }
   return out;
