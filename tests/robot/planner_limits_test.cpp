@@ -121,7 +121,7 @@ TEST(Planner, HoldsJ1OnMarkerRowsWhoseYawSignIsUnknown) {
   marker.has_file_column = true;
   marker.has_signed_yaw_column = true;
   for (AngleRow& r : marker.rows) {
-    r.yaw_signed_deg = r.frame < 20 ? -5 : kNaN;  // frames 20.. : size known, sign not
+    r.yaw_signed_deg = r.frame < 120 ? -5 : kNaN;  // rows 20.. : size known, sign not
   }
   PlannerOptions o = Options();
   o.cutoff_hz = 0;

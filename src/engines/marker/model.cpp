@@ -116,14 +116,6 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
       const bool hidden = UpperTurn(cal, yaw.hypotheses[i].yaw) > RadFromDeg(kHiddenDeg);
       alive[i] = !yaw.hypotheses[i].other_missing && !(hidden && telling[1 - i]);
     }
-    // The side that puts the other lower marker where the image shows part of it (at the limb)
-    // is told by the image itself.
-    const bool seen[2] = {yaw.hypotheses[0].other_seen, yaw.hypotheses[1].other_seen};
-    bool by_image = false;
-    if (alive[0] && alive[1] && seen[0] != seen[1]) {
-      alive[seen[0] ? 1 : 0] = false;
-      by_image = true;
-    }
     if (alive[0] && alive[1]) {  // the side whose upper marker shows plainly, if only one does
       if (telling[0] && !plain[1]) {
         alive[1] = false;
@@ -137,12 +129,20 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
       return out;
     }
     if (alive[1]) pick = 1, upper = other;
-    // The other side is ruled out by the image itself (its other lower marker would show and
-    // does not), or both sides turn the joint the same way; otherwise only the upper marker
-    // chose, and its test may be fooled (a dark spot where the wrong side puts it).
+    // The other side is ruled out by the lower part itself (its other lower marker would show
+    // and does not), or both sides turn the joint the same
+    // way, or the upper part decides plainly: this side finds the upper marker with the upper
+    // part's silhouette around it, and the other side finds no dark spot at all where it puts
+    // the upper marker, or turns it round the back. Otherwise the sign rests on which of two
+    // dark spots looked more like the marker, which clutter or a dark wall can fake.
     const YawHypothesis& a = yaw.hypotheses[0];
     const YawHypothesis& b = yaw.hypotheses[1];
-    side_seen = by_image || yaw.hypotheses[1 - pick].other_missing || (a.yaw > 0) == (b.yaw > 0);
+    const int other_side = 1 - static_cast<int>(pick);
+    const bool upper_decides =
+        telling[pick] && (uppers[other_side]->spots.empty() ||
+                          UpperTurn(cal, yaw.hypotheses[other_side].yaw) > RadFromDeg(kHiddenDeg));
+    side_seen =
+        yaw.hypotheses[other_side].other_missing || (a.yaw > 0) == (b.yaw > 0) || upper_decides;
   }
   const YawHypothesis& h = yaw.hypotheses[pick];
   out.ok = true;
@@ -155,8 +155,9 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
   const std::string markers = h.left && h.right ? "both lower markers"
                               : h.left          ? "the left lower marker"
                                                 : "the right lower marker";
-  const std::string sign =
-      out.sign_known ? "" : "; sign unknown: only the upper marker tells which lower marker shows";
+  const std::string sign = out.sign_known ? ""
+                                          : "; sign unknown: the lower marker could be either, and "
+                                            "the upper one does not tell plainly";
   if (upper.found && !upper.ambiguous) {
     out.bend = upper.bend;
     out.upper_px = upper.centre_px;

@@ -16,9 +16,8 @@ struct YawHypothesis {
   const LowerMarker* left = nullptr;
   const LowerMarker* right = nullptr;
   // One marker read as this side: the other one would show, and the image has no dark patch
-  // there (other_missing), or has one (other_seen: a marker the limb cuts, say).
+  // there.
   bool other_missing = false;
-  bool other_seen = false;
 };
 
 struct YawSolution {
