@@ -1,7 +1,8 @@
 // Marker engine speed per image at 320x240 after decoding (target: >= 1000 images/s on one
 // core), on ray-cast views with yaw over +-110 degrees (both lower markers readable, or one)
 // with and without dark clutter, the thesis' acos path, and for scale the PNG decoding of the
-// same views. Run: build/bench/marker_bench
+// same views, and views of the second renderer's rigs (medium and hard sets, yaw +-60). Run:
+// taskset -c 0 build/bench/marker_bench
 #include <memory>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "armmimic/engines/engine.h"
+#include "armmimic/synth/marker_rig.h"
 #include "armmimic/synth/marker_scene.h"
 
 namespace {
@@ -56,6 +58,41 @@ void MarkerProcess(benchmark::State& state, const char* lighting, int clutter, b
   state.counters["ok_share"] = static_cast<double>(ok) / std::max<int64_t>(1, state.iterations());
 }
 
+// Views of the rig renderer (`synth marker --renderer rig`), told the rig's lens.
+void MarkerProcessRig(benchmark::State& state, const char* set, uint64_t seed) {
+  synth::MarkerRigOptions o;
+  o.set = set;
+  o.seed = seed;
+  o.views = 16;
+  const synth::MarkerRigRenderer rig(o);
+  std::vector<Frame> frames(o.views);
+  for (int i = 0; i < o.views; ++i) {
+    frames[i].image = rig.Render(i);
+    frames[i].index = i;
+  }
+  EngineOptions options;
+  options.kind = EngineKind::kMarker;
+  options.marker.fov_deg = rig.rig().fov_deg;
+  const std::unique_ptr<Engine> engine = Engine::Create(options);
+  EngineContext context;
+  context.reference = rig.Reference();
+  if (!engine->Begin(context).ok()) {
+    state.SkipWithError("the rig's reference does not calibrate");
+    return;
+  }
+  std::size_t i = 0;
+  int ok = 0;
+  for (auto _ : state) {
+    const ArmMeasurement m = engine->Process(frames[i++ % frames.size()]);
+    ok += m.phase == MeasurementPhase::kOk;
+    benchmark::DoNotOptimize(m.yaw_deg);
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["images_per_s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["ok_share"] = static_cast<double>(ok) / std::max<int64_t>(1, state.iterations());
+}
+
 // Decoding the same views from PNG, as `analyze` reads a folder of images.
 void DecodePng(benchmark::State& state) {
   const synth::MarkerSceneOptions o = Scene("normal", 0);
@@ -78,6 +115,9 @@ BENCHMARK_CAPTURE(MarkerProcess, clutter8_320x240, "normal", 8, false)
 BENCHMARK_CAPTURE(MarkerProcess, side_320x240, "side", 0, false)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(MarkerProcess, thesis_normal_320x240, "normal", 0, true)
     ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(MarkerProcessRig, rig_medium_320x240, "medium", 501)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(MarkerProcessRig, rig_hard_320x240, "hard", 601)->Unit(benchmark::kMicrosecond);
 BENCHMARK(DecodePng)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

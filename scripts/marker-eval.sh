@@ -20,6 +20,17 @@
 # largest yaw error within 5 degrees of zero / how many such views were read; bend_mae/max over
 # the views read with a bend; bend_read = share of views whose upper marker faces the camera
 # within 75 degrees that got a bend; wrong = views read with an error over 15 degrees.
+#
+# MARKER_EVAL_MODE=renderers compares both renderers instead (docs/marker.md, "Two renderers"):
+# `synth marker` (--renderer scene) and the independent `synth marker --renderer rig`, three sets
+# each (easy, medium, hard), 7 scenes of 4 views = 28 views per set, yaw in [-60, 60], bend in
+# [-60, 60]. The rig's own lens (its truth.tsv's fov_deg) is given to analyze as --fov. Seeds:
+# MARKER_EVAL_SET=heldout (default here) 5001-5007, 5101-5107, 5201-5207, never used to tune
+# anything; tuning: 1-12, 101-112, 201-212 (MARKER_EVAL_SEEDS=N the first N of each hundred).
+# Columns: answered (ok rows of 28), readable (views with a lower marker facing the camera within
+# 75 degrees), yaw_mae (yaw_deg against |yaw|, answered views), bend_mae (answered with a bend),
+# signed_max (largest error of an answered signed yaw), signed_off5 (answered signed yaws more
+# than 5 degrees off), signed_nan (answered rows whose sign was not told).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR="${1:-build}"
@@ -27,6 +38,78 @@ CLI="$BUILD_DIR/bin/armmimic-cli"
 [[ -x "$CLI" ]] || { echo "marker-eval: $CLI not found; build first (scripts/build.sh $BUILD_DIR)" >&2; exit 2; }
 WORK="${2:-$(mktemp -d /tmp/armmimic-marker-eval-XXXXXX)}"
 mkdir -p "$WORK"
+
+if [[ "${MARKER_EVAL_MODE:-tiers}" == renderers ]]; then
+  case "${MARKER_EVAL_SET:-heldout}" in
+    heldout) FIRST=5001; SCENES=7 ;;
+    tuning) FIRST=1; SCENES="${MARKER_EVAL_SEEDS:-12}" ;;
+    *) echo "marker-eval: MARKER_EVAL_SET must be tuning or heldout" >&2; exit 2 ;;
+  esac
+  declare -A SCENE_FLAGS=(
+    [easy]="--background simple --lighting normal"
+    [medium]="--background mixed --lighting mixed"
+    [hard]="--background mixed --lighting mixed --clutter 8 --noise 3"
+  )
+  declare -A BASE=([easy]=0 [medium]=100 [hard]=200)
+  ROWS="$WORK/renderer-rows.tsv"
+  : >"$ROWS"
+  for renderer in scene rig; do
+    for set in easy medium hard; do
+      for ((k = 0; k < SCENES; k++)); do
+        seed=$((FIRST + BASE[$set] + k))
+        dir="$WORK/$renderer-$set-$seed"
+        if [[ $renderer == rig ]]; then
+          synth=(--renderer rig --set "$set")
+        else
+          read -r -a synth <<<"${SCENE_FLAGS[$set]}"
+        fi
+        if [[ ! -f "$dir/truth.tsv" ]]; then
+          "$CLI" -q synth marker "$dir" --seed "$seed" --views 4 --max-yaw 60 --max-bend 60 "${synth[@]}"
+        fi
+        fov=$(sed -n 's/.* fov_deg=\([0-9.]*\).*/\1/p' "$dir/truth.tsv" | head -1)
+        if ! "$CLI" -q analyze "$dir/views" -o "$dir/angles.tsv" --engine marker \
+          --reference "$dir/reference.png" --fov "${fov:-60}" 2>"$dir/analyze.err"; then
+          echo "marker-eval: $renderer $set seed $seed: $(tail -1 "$dir/analyze.err")" >&2
+          awk -F'\t' -v r="$renderer" -v s="$set" '/^#/ { next }
+            $1 == "frame" { for (i = 1; i <= NF; i++) t[$i] = i; next }
+            { print r, s, $t["yaw_signed_deg"], $t["bend_deg"], $t["readable"], "lost", "nan", "nan", "nan" }' \
+            OFS='\t' "$dir/truth.tsv" >>"$ROWS"
+          continue
+        fi
+        # renderer, set, truth signed yaw, truth bend, readable, status, yaw_deg, signed, bend.
+        awk -F'\t' -v r="$renderer" -v s="$set" '
+          FNR == 1 { file++ }
+          /^#/ { next }
+          file == 1 && $1 == "frame" { for (i = 1; i <= NF; i++) t[$i] = i; next }
+          file == 1 { yaw[$1] = $t["yaw_signed_deg"]; bend[$1] = $t["bend_deg"]; rd[$1] = $t["readable"]; next }
+          file == 2 && $1 == "frame" { for (i = 1; i <= NF; i++) a[$i] = i; next }
+          file == 2 { f = $1; print r, s, yaw[f], bend[f], rd[f], $a["status"], $a["yaw_deg"],
+                      $a["yaw_signed_deg"], $a["bend_deg"] }' OFS='\t' "$dir/truth.tsv" "$dir/angles.tsv" >>"$ROWS"
+      done
+    done
+  done
+  echo "marker-eval: renderers, ${MARKER_EVAL_SET:-heldout} seeds, per-view rows in $ROWS"
+  awk -F'\t' '
+    function abs(v) { return v < 0 ? -v : v }
+    { k = $1 " " $2; n[k]++; rd[k] += $5 }
+    $6 == "ok" {
+      ok[k]++; e = abs($7 - abs($3)); ys[k] += e
+      if ($8 == "nan") nan[k]++
+      else { es = abs($8 - $3); if (es > sm[k]) sm[k] = es; if (es > 5) off[k]++ }
+      if ($9 != "nan") { bs[k] += abs($9 - $4); bn[k]++ }
+    }
+    END {
+      printf "%-8s %-7s %6s %9s %9s %8s %9s %10s %11s %10s\n", "renderer", "set", "views", "readable",
+        "answered", "yaw_mae", "bend_mae", "signed_max", "signed_off5", "signed_nan"
+      split("scene rig", rs, " "); split("easy medium hard", ss, " ")
+      for (i = 1; i <= 2; i++) for (j = 1; j <= 3; j++) {
+        k = rs[i] " " ss[j]; if (!n[k]) continue
+        printf "%-8s %-7s %6d %9d %9d %8.2f %9.2f %10.2f %11d %10d\n", rs[i], ss[j], n[k], rd[k], ok[k],
+          ok[k] ? ys[k] / ok[k] : 0, bn[k] ? bs[k] / bn[k] : 0, sm[k], off[k], nan[k]
+      }
+    }' "$ROWS"
+  exit 0
+fi
 read -r -a SYNTH_EXTRA <<<"${MARKER_EVAL_SYNTH:-}"
 read -r -a EXTRA <<<"${MARKER_EVAL_FLAGS:-}"
 

@@ -94,6 +94,7 @@ std::string FlagForKey(const std::string& key) {
       {"marker_scene.clutter", "--clutter"},
       {"marker_scene.camera", "--camera"},
       {"marker_scene.fov_deg", "--fov"},
+      {"marker_scene.set", "--set"},
   };
   const auto it = flags.find(key);
   if (it != flags.end()) return it->second;

@@ -119,6 +119,7 @@ AnglePlot::AnglePlot(QWidget* parent)
   lost_bands_ = new PlotLayer(clip_);
   lost_ticks_ = new PlotLayer(clip_);
   for (PlotLayer*& item : curve_items_) item = new PlotLayer(clip_);
+  unsigned_yaw_ = new PlotLayer(clip_);
   cursor_ = new QGraphicsLineItem(clip_);
   connect(chart, &QChart::plotAreaChanged, this, &AnglePlot::fitDegreeTicks);
   connect(chart, &QChart::plotAreaChanged, this, &AnglePlot::redrawLayers);
@@ -139,6 +140,7 @@ void AnglePlot::applyTheme() {
     legend_[c]->setPen(QPen(kCurveColors[c], 1.5));
     curve_items_[c]->setPen(QPen(kCurveColors[c], 1.5, Qt::SolidLine, Qt::RoundCap));
   }
+  unsigned_yaw_->setPen(QPen(kCurveColors[int(PlotCurve::kYaw)], 1.2, Qt::DotLine));
   lost_->setColor(kLost);
   lost_->setBorderColor(kLost);
   lost_->setMarkerSize(6);
@@ -240,7 +242,12 @@ void AnglePlot::setResults(const ResultStore& results) {
   const bool signed_yaw = std::any_of(rows_.begin(), rows_.end(), [](const AngleRow& r) {
     return r.ok() && std::isfinite(r.yaw_signed_deg);
   });
-  legend_[int(PlotCurve::kYaw)]->setName(signed_yaw ? tr("yaw (signed)") : tr("yaw"));
+  signed_yaw_ = signed_yaw;
+  const bool unknown =
+      std::any_of(rows_.begin(), rows_.end(), [this](const AngleRow& r) { return signUnknown(r); });
+  legend_[int(PlotCurve::kYaw)]->setName(!signed_yaw ? tr("yaw")
+                                         : unknown   ? tr("yaw (signed; dotted +-: sign unknown)")
+                                                     : tr("yaw (signed)"));
   // An engine that measures no yaw (LK) gets no yaw entry in the legend; no results yet, all.
   legend_[int(PlotCurve::kYaw)]->setVisible(has_yaw_ || rows_.empty());
   redrawLayers();
@@ -255,8 +262,10 @@ double AnglePlot::valueOf(const AngleRow& row, PlotCurve c) const {
       return row.upper_deg;
     case PlotCurve::kFore:
       return row.fore_deg;
-    case PlotCurve::kYaw:
-      return std::isfinite(row.yaw_signed_deg) ? row.yaw_signed_deg : row.yaw_deg;
+    case PlotCurve::kYaw:  // a signed curve leaves a gap where the sign is unknown
+      return std::isfinite(row.yaw_signed_deg) ? row.yaw_signed_deg
+             : signed_yaw_                     ? std::nan("")
+                                               : row.yaw_deg;
     case PlotCurve::kBend:
       return row.bend_deg;
   }
@@ -372,6 +381,17 @@ void AnglePlot::redrawLayers() {
   }
   lost_bands_->setPath(bands);
   lost_ticks_->setPath(ticks);
+  // A yaw whose sign is unknown: hollow marks at +|yaw| and -|yaw|, joined by a dotted line.
+  QPainterPath unsigned_marks;
+  for (const QPointF& p : unsignedYawPoints()) {
+    if (p.x() < first || p.x() > last || !curveShown(PlotCurve::kYaw)) continue;
+    const QPointF up = toChart(p.x(), p.y()), down = toChart(p.x(), -p.y());
+    unsigned_marks.addEllipse(up, 3.0, 3.0);
+    unsigned_marks.addEllipse(down, 3.0, 3.0);
+    unsigned_marks.moveTo(up);
+    unsigned_marks.lineTo(down);
+  }
+  unsigned_yaw_->setPath(unsigned_marks);
   const double cx = toChart(cursor_frame_, 0).x();
   cursor_->setLine(cx, area.top(), cx, area.bottom());
 }
@@ -428,6 +448,18 @@ QList<QPointF> AnglePlot::yawPoints() const {
   for (const AngleRow& row : rows_) {
     const double v = valueOf(row, PlotCurve::kYaw);
     if (std::isfinite(v)) out.append(QPointF(row.frame, v));
+  }
+  return out;
+}
+
+bool AnglePlot::signUnknown(const AngleRow& row) const {
+  return signed_yaw_ && row.ok() && std::isnan(row.yaw_signed_deg) && std::isfinite(row.yaw_deg);
+}
+
+QList<QPointF> AnglePlot::unsignedYawPoints() const {
+  QList<QPointF> out;
+  for (const AngleRow& row : rows_) {
+    if (signUnknown(row)) out.append(QPointF(row.frame, row.yaw_deg));
   }
   return out;
 }

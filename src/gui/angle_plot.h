@@ -48,6 +48,10 @@ class AnglePlot : public QChartView {
   // The largest change in degrees along one drawn segment of `curve` (a curve crossing ±180° is
   // broken at the edge, so never more than 180).
   double largestStepDeg(PlotCurve curve) const;
+  // (frame, |yaw|) of the marker views whose yaw sign is unknown: drawn apart, at +-|yaw|.
+  QList<QPointF> unsignedYawPoints() const;
+  // The row of `frame` has a yaw but its sign could not be told (a signed-yaw file only).
+  bool signUnknown(const AngleRow& row) const;
   // Runs of consecutive frames a curve is drawn through, as (first, last) frame pairs.
   std::vector<std::pair<int, int>> runs(PlotCurve curve) const;
   // The frame axis' label step: 1, 2, 5, 10, 20, ... so that every label is a whole frame (in
@@ -115,6 +119,7 @@ class AnglePlot : public QChartView {
   PlotLayer* curve_items_[4];
   PlotLayer* lost_bands_;
   PlotLayer* lost_ticks_;
+  PlotLayer* unsigned_yaw_;  // marks of the yaws whose sign is unknown
   QGraphicsLineItem* cursor_;
   QRubberBand* band_ = nullptr;
   QPoint band_origin_;
@@ -123,6 +128,7 @@ class AnglePlot : public QChartView {
   std::vector<AngleRow> rows_;  // ok and lost rows, by frame
   bool file_column_ = false;    // marker views: bend instead of the arm's segments
   bool has_yaw_ = true;
+  bool signed_yaw_ = false;  // the yaw curve is the marker engine's signed yaw
   int last_frame_ = 1;
   double fps_ = 0;
   bool seconds_ = false;

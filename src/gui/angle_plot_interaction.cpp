@@ -65,7 +65,9 @@ QString AnglePlot::readoutAt(int frame) const {
   if (!row->ok()) return text + " · " + tr("lost");
   const char* names[4] = {"upper", "fore", "yaw", "bend"};
   for (int c = 0; c < 4; ++c) {
-    if (curveShown(PlotCurve(c))) {
+    if (c == int(PlotCurve::kYaw) && curveShown(PlotCurve::kYaw) && signUnknown(*row)) {
+      text += " · " + tr("yaw +-%1 (sign unknown)").arg(Deg(row->yaw_deg));
+    } else if (curveShown(PlotCurve(c))) {
       text += QString(" · %1 %2").arg(tr(names[c]), Deg(valueOf(*row, PlotCurve(c))));
     }
   }

@@ -60,8 +60,11 @@ OverlayTexts MakeOverlayTexts(const ArmMeasurement* m, int frame_index, int fram
     return t;
   }
   // The marker engine's yaw has a sign: positive turns the joint's right side to the camera.
-  t.yaw = std::isnan(m->yaw_signed_deg) ? "yaw " + Deg(m->yaw_deg)
-                                        : "yaw " + SignedDeg(m->yaw_signed_deg);
+  // A marker view whose sign could not be told says so instead of showing the yaw as positive.
+  t.yaw = !std::isnan(m->yaw_signed_deg) ? "yaw " + SignedDeg(m->yaw_signed_deg)
+          : IsMarkerView(*m) && m->phase == MeasurementPhase::kOk && std::isfinite(m->yaw_deg)
+              ? "yaw +-" + Deg(m->yaw_deg) + " (sign unknown)"
+              : "yaw " + Deg(m->yaw_deg);
   if (IsMarkerView(*m)) {
     t.orientation = "bend " + Deg(m->bend_deg);  // the 2-DOF joint has no arm segments
   } else {

@@ -115,12 +115,18 @@ bool RobotPlan::MappedPose(int frame, const robot::PlannerOptions& options,
                            robot::JointArray* out) const {
   robot::MappingOptions mapping = options.mapping;
   mapping.kind = robot::DetectSourceKind(angles_);
+  // A row whose yaw sign is unknown shows J1 where the plan holds it: at the last turn known.
+  double held_yaw = 0;
   for (const AngleRow& row : angles_.rows) {
-    if (row.frame != frame) continue;
+    const double turn = row.turn_yaw_deg(angles_.has_signed_yaw_column);
+    if (row.frame != frame) {
+      if (row.ok() && std::isfinite(turn)) held_yaw = turn;
+      continue;
+    }
     if (!row.ok() || (std::isnan(row.upper_deg) && mapping.kind == robot::SourceKind::kArm)) {
       return false;
     }
-    const double yaw = std::isnan(row.turn_yaw_deg()) ? 0.0 : row.turn_yaw_deg();
+    const double yaw = std::isnan(turn) ? held_yaw : turn;
     const double bend = std::isnan(row.bend_deg) ? 0.0 : row.bend_deg;
     const double upper = std::isnan(row.upper_deg) ? -90.0 : row.upper_deg;
     *out = mapping.Map(upper, bend, yaw);

@@ -114,7 +114,7 @@ Status SampleTimes(const AngleFile& angles, const PlannerOptions& options, PlanR
 
 // 1. Unwrap from the first measured posture and flag impossible jumps.
 Status Unwrap(const std::vector<AngleRow>& rows, const std::vector<double>& t, bool marker,
-              const PlannerOptions& options, PlanReport* report, Series* out) {
+              bool signed_column, const PlannerOptions& options, PlanReport* report, Series* out) {
   const int n = static_cast<int>(rows.size());
   std::vector<double>&upper = out->upper, &bend = out->bend, &yaw = out->yaw;
   std::vector<char>&good = out->good, &flagged = out->flagged;
@@ -123,7 +123,7 @@ Status Unwrap(const std::vector<AngleRow>& rows, const std::vector<double>& t, b
   yaw.assign(n, kNaN);
   good.assign(n, 0);
   flagged.assign(n, 0);
-  int prev = -1;
+  int prev = -1, unsigned_rows = 0, first_unsigned = 0;
   double ref_t = 0;
   for (int i = 0; i < n; ++i) {
     const AngleRow& r = rows[i];
@@ -131,7 +131,12 @@ Status Unwrap(const std::vector<AngleRow>& rows, const std::vector<double>& t, b
     double u = marker ? 0.0 : r.upper_deg;
     double b = r.bend_deg;
     if (!std::isfinite(u) || !std::isfinite(b)) continue;
-    const double y = std::isfinite(r.turn_yaw_deg()) ? r.turn_yaw_deg() : kNaN;
+    // A marker row whose yaw sign is unknown holds J1 (never turned by the unsigned yaw).
+    const double y =
+        std::isfinite(r.turn_yaw_deg(signed_column)) ? r.turn_yaw_deg(signed_column) : kNaN;
+    if (signed_column && std::isnan(y) && std::isfinite(r.yaw_deg) && unsigned_rows++ == 0) {
+      first_unsigned = r.frame;
+    }
     if (prev >= 0) {
       u -= 360.0 * std::round((u - upper[prev]) / 360.0);
       b -= 360.0 * std::round((b - bend[prev]) / 360.0);
@@ -160,6 +165,11 @@ Status Unwrap(const std::vector<AngleRow>& rows, const std::vector<double>& t, b
     good[i] = 1;
     prev = i;
     ref_t = t[i];
+  }
+  if (unsigned_rows > 0) {
+    Warn(report, first_unsigned,
+         std::to_string(unsigned_rows) + " row" + (unsigned_rows > 1 ? "s" : "") +
+             " with a yaw whose sign could not be told (yaw_signed_deg nan): J1 held there");
   }
   int first = -1, last = -1;
   for (int i = 0; i < n; ++i) {
@@ -346,7 +356,7 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
   s = SampleTimes(angles, options, &report, &timing);
   if (!s.ok()) return s;
   Series series;
-  s = Unwrap(rows, timing.t, marker, options, &report, &series);
+  s = Unwrap(rows, timing.t, marker, angles.has_signed_yaw_column, options, &report, &series);
   if (!s.ok()) return s;
   s = FillGaps(rows, timing, options, &report, &series);
   if (!s.ok()) return s;

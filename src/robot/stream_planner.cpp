@@ -114,7 +114,9 @@ bool StreamPlanner::Measure(const AngleRow& row, double prev_row_t, double* uppe
   double u = marker ? 0.0 : row.upper_deg;
   double b = row.bend_deg;
   if (!std::isfinite(u) || !std::isfinite(b)) return false;
-  const double y = std::isfinite(row.yaw_deg) ? row.yaw_deg : kNaN;
+  // The marker engine's signed yaw turns J1; nan (the sign could not be told) holds it.
+  const double turn = marker ? row.yaw_signed_deg : row.yaw_deg;
+  const double y = std::isfinite(turn) ? turn : kNaN;
   if (have_prev_) {
     u -= 360.0 * std::round((u - prev_upper_) / 360.0);
     b -= 360.0 * std::round((b - prev_bend_) / 360.0);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "armmimic/core/angle_file.h"
+#include "armmimic/synth/truth_file.h"
 #include "test_util.h"
 
 namespace armmimic {
@@ -90,6 +91,40 @@ TEST(CliMarker, ExitCodes) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--low"), std::string::npos) << r.err;
   EXPECT_EQ(test::RunCli({"-q", "analyze", "--help"}).exit_code, 0);
+}
+
+// The second renderer writes the same folder; its truth names the rig, whose lens analyze is
+// given. Flags only the first renderer knows are usage errors with it.
+TEST(CliMarker, TheRigRendererWritesASceneAnalyzeReads) {
+  test::TempDir dir;
+  const std::string scene = dir.file("rig");
+  test::CliResult r = test::RunCli({"-q", "synth", "marker", scene, "--renderer", "rig", "--set",
+                                    "easy", "--seed", "401", "--views", "3"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  synth::TruthFile truth;
+  ASSERT_TRUE(synth::ReadTruthFile(scene + "/truth.tsv", &truth).ok());
+  EXPECT_EQ(truth.Meta("renderer"), "rig");
+  EXPECT_EQ(truth.Meta("set"), "easy");
+  ASSERT_FALSE(truth.Meta("fov_deg").empty());
+  ASSERT_EQ(truth.rows.size(), 3u);
+  const std::string angles = dir.file("rig.tsv");
+  r = test::RunCli({"-q", "analyze", scene + "/views", "-o", angles, "--engine", "marker",
+                    "--reference", scene + "/reference.png", "--fov", truth.Meta("fov_deg")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  AngleFile f;
+  ASSERT_TRUE(ReadAngleFile(angles, &f).ok());
+  ASSERT_EQ(f.rows.size(), 3u);
+  EXPECT_TRUE(f.has_signed_yaw_column);
+
+  r = test::RunCli({"synth", "marker", dir.file("x"), "--renderer", "rig", "--fov", "50"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--fov does not apply to --renderer rig"), std::string::npos) << r.err;
+  r = test::RunCli({"synth", "marker", dir.file("x"), "--set", "hard"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--set needs --renderer rig"), std::string::npos) << r.err;
+  r = test::RunCli({"synth", "marker", dir.file("x"), "--renderer", "rig", "--set", "odd"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--set"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "angle_plot.h"
 #include "armmimic/core/angle_file.h"
 #include "gui_fixture.h"
+#include "overlay.h"
 #include "result_store.h"
 
 namespace armmimic::test {
@@ -288,6 +289,67 @@ TEST_F(PlotOnScreen, ACurveCrossingTheSeamIsBrokenThereAndReadsItsTrueValue) {
   EXPECT_TRUE(readout.contains(QString("fore 178.2") + QChar(0x00B0)) ||
               readout.contains(QString("fore 178.1") + QChar(0x00B0)))
       << readout.toStdString();
+}
+
+// Marker views (each names its image) with a signed yaw, except view 4 whose sign the engine
+// could not tell: it has a yaw of 12 degrees and no signed yaw.
+gui::ResultStore MarkerRowsWithAnUnknownSign() {
+  gui::ResultStore store;
+  for (int f = 0; f < 10; ++f) {
+    ArmMeasurement m;
+    m.frame = f;
+    m.file = "view_00" + std::to_string(f) + ".png";
+    m.phase = MeasurementPhase::kOk;
+    m.yaw_signed_deg = f == 4 ? kNaN : -30 + 5 * f;
+    m.yaw_deg = f == 4 ? 12 : std::abs(m.yaw_signed_deg);
+    m.bend_deg = 10;
+    store.add(m);
+  }
+  return store;
+}
+
+TEST_F(AnglePlotTest, AYawWhoseSignIsUnknownIsMarkedNotDrawnAsPositive) {
+  AnglePlot plot;
+  plot.setFrameRange(10);
+  plot.resize(800, 400);
+  plot.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&plot));
+  const gui::ResultStore rows = MarkerRowsWithAnUnknownSign();
+  plot.setResults(rows);
+  QTest::qWait(20);
+  // The signed curve leaves a gap at view 4; the view is listed apart with its magnitude.
+  EXPECT_EQ(plot.runs(gui::PlotCurve::kYaw), (std::vector<std::pair<int, int>>{{0, 3}, {5, 9}}));
+  EXPECT_EQ(plot.unsignedYawPoints(), (QList<QPointF>{QPointF(4, 12)}));
+  for (const QPointF& p : plot.yawPoints()) EXPECT_NE(p.x(), 4);
+  const QStringList texts = Texts(plot);
+  EXPECT_TRUE(texts.filter("sign unknown").size() == 1) << texts.join('|').toStdString();
+  // On screen: the yaw's colour at +12 and at -12 degrees over view 4, where no curve runs.
+  auto at = [&](double frame, double deg) {
+    return plot.mapFromScene(plot.chart()->mapToScene(plot.chart()->mapToPosition({frame, deg})));
+  };
+  const QImage shot = plot.grab().toImage();
+  auto purple_near = [&](QPoint p) {
+    for (int dy = -4; dy <= 4; ++dy) {
+      for (int dx = -4; dx <= 4; ++dx) {
+        const QColor c = shot.pixelColor(p.x() + dx, p.y() + dy);
+        if (c.blue() > 150 && c.red() > 100 && c.green() < 130) return true;
+      }
+    }
+    return false;
+  };
+  EXPECT_TRUE(purple_near(at(4, 12)));
+  EXPECT_TRUE(purple_near(at(4, -12)));
+  EXPECT_FALSE(purple_near(at(4, 60)));
+  // Hovering over view 4 says the sign is unknown.
+  QString readout;
+  QObject::connect(&plot, &AnglePlot::hovered, [&](const QString& t) { readout = t; });
+  QTest::mouseMove(plot.viewport(), at(4, 0));
+  ASSERT_TRUE(WaitUntil([&] { return readout.startsWith("frame 4"); }, 2000));
+  EXPECT_TRUE(readout.contains("(sign unknown)")) << readout.toStdString();
+  // So does the image's overlay; a view with a sign shows it.
+  EXPECT_EQ(gui::MakeOverlayTexts(rows.find(4), 4, 10).yaw,
+            QString("yaw +-12.0") + QChar(0x00B0) + " (sign unknown)");
+  EXPECT_EQ(gui::MakeOverlayTexts(rows.find(2), 2, 10).yaw, QString("yaw -20.0") + QChar(0x00B0));
 }
 
 }  // namespace

@@ -108,6 +108,42 @@ TEST(Planner, HoldsYawWhileTheArmIsBentAndMapsMarkerFiles) {
   EXPECT_NEAR(tr.keyframes.back().joint_deg[0], -10, 1e-9);
 }
 
+// A marker row whose yaw sign the engine could not tell (yaw_signed_deg nan, yaw_deg known)
+// never turns J1 by the unsigned yaw: J1 holds where the last signed row left it.
+TEST(Planner, HoldsJ1OnMarkerRowsWhoseYawSignIsUnknown) {
+  AngleFile marker = MakeFile(40, [](int i, double) {
+    Pose p;
+    p.upper = kNaN;
+    p.bend = 10;
+    p.yaw = 5;
+    return p;
+  });
+  marker.has_file_column = true;
+  marker.has_signed_yaw_column = true;
+  for (AngleRow& r : marker.rows) {
+    r.yaw_signed_deg = r.frame < 120 ? -5 : kNaN;  // rows 20.. : size known, sign not
+  }
+  PlannerOptions o = Options();
+  o.cutoff_hz = 0;
+  o.mapping = MappingOptions::Default(DetectSourceKind(marker));
+  Trajectory tr;
+  PlanReport report;
+  ASSERT_TRUE(PlanTrajectory(marker, o, &tr, &report).ok());
+  ASSERT_FALSE(tr.keyframes.empty());
+  for (const Keyframe& kf : tr.keyframes) EXPECT_NEAR(kf.joint_deg[0], -5, 1e-9);
+  bool said = false;
+  for (const auto& w : report.warnings) {
+    said =
+        said || w.text.find("20 rows with a yaw whose sign could not be told") != std::string::npos;
+  }
+  EXPECT_TRUE(said);
+  // Without the signed column the same rows turn J1 by yaw_deg, as for any file.
+  marker.has_signed_yaw_column = false;
+  for (AngleRow& r : marker.rows) r.yaw_signed_deg = kNaN;
+  ASSERT_TRUE(PlanTrajectory(marker, o, &tr, nullptr).ok());
+  EXPECT_NEAR(tr.keyframes.back().joint_deg[0], 5, 1e-9);
+}
+
 // Marker views are still images: no frame rate, every time_s 0. With the default options they
 // are planned unfiltered (the default cutoff cannot be below half of the 1 fps they are spaced
 // at), and an unreadable view holds the last readable pose instead of refusing a "1 s gap".

@@ -163,6 +163,24 @@ TEST(StreamPlanner, TheCausalFilterLagsByItsStatedDelay) {
   EXPECT_NEAR(p.FilterDelayS(), 0.075, 0.001);
 }
 
+// Live marker rows: J1 follows the signed yaw, and a row whose sign the engine could not tell
+// holds J1 instead of turning it by the unsigned yaw_deg.
+TEST(StreamPlanner, AMarkerRowWhoseYawSignIsUnknownHoldsJ1) {
+  PlannerOptions o;
+  o.mapping = MappingOptions::Default(SourceKind::kMarker);
+  StreamPlanner p;
+  ASSERT_TRUE(p.Begin(o, SourceKind::kMarker, kFps).ok());
+  auto row = [](int f) {
+    AngleRow r = test::MakeRow(f, kFps, kNaN, 20, 5, false);
+    r.file = "view.png";
+    r.yaw_signed_deg = f < 30 ? -5 : kNaN;  // then: size known, sign not
+    return r;
+  };
+  const auto cmds = Follow(p, 0, 90, row);
+  ASSERT_FALSE(cmds.empty());
+  for (const StreamCommand& c : cmds) EXPECT_NEAR(c.joint_deg[0], -5, 1e-9) << c.frame;
+}
+
 TEST(StreamPlanner, BeginRefusesACutoffAboveHalfTheFrameRate) {
   PlannerOptions o;
   o.cutoff_hz = 20;

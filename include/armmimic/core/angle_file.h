@@ -35,6 +35,12 @@ struct AngleRow {
   bool ok() const { return status == RowStatus::kOk; }
   // The yaw to turn a robot joint by: the signed one where the row has it, else yaw_deg.
   double turn_yaw_deg() const { return std::isnan(yaw_signed_deg) ? yaw_deg : yaw_signed_deg; }
+  // The same for a row of a file: in a file with the yaw_signed_deg column (`signed_column`) a
+  // nan there means the sign could not be told, and the yaw to turn by is unknown (nan: hold
+  // the joint), never the unsigned yaw_deg.
+  double turn_yaw_deg(bool signed_column) const {
+    return signed_column ? yaw_signed_deg : turn_yaw_deg();
+  }
 };
 
 // Ordered key=value pairs of the "# engine=... source=..." header line.

@@ -119,7 +119,11 @@ bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_rati
   cv::Rect w(blob->box.x - 2, blob->box.y - 2 - grow, blob->box.width + 4,
              blob->box.height + 4 + 2 * grow);
   const cv::Rect image(0, 0, gray.cols, gray.rows);
-  if ((w & image) != w) return false;
+  // A marker near the image's edge keeps the part of its ring the image shows; one that touches
+  // the edge is cut and has no centre to measure.
+  const cv::Rect inner(1, 1, gray.cols - 2, gray.rows - 2);
+  if ((blob->box & inner) != blob->box) return false;
+  w &= image;
   // The blob may be one fragment of its marker (flood fill is relative to the seed): widen the
   // window while its edge still holds marker-dark pixels.
   {
@@ -149,7 +153,7 @@ bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_rati
       if (dark_count({w.x + w.width - 1, w.y, 1, w.height}) >= 2) w.width += 1, grown = true;
       if (dark_count({w.x, w.y, w.width, 1}) >= 2) w.y -= 1, w.height += 1, grown = true;
       if (dark_count({w.x, w.y + w.height - 1, w.width, 1}) >= 2) w.height += 1, grown = true;
-      if ((w & image) != w) return false;
+      w &= image;
       if (!grown) break;
     }
   }
@@ -316,11 +320,10 @@ SurfaceStretch SampleStretch(const cv::Mat& filtered, cv::Point2d a, cv::Point2d
   return out;
 }
 
-bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, const cv::Mat& filtered,
-                           bool thesis_mode, MarkerTriple* out) {
-  if (thesis_mode) return ThreeLargest(blobs, out);
+std::vector<MarkerTriple> RankReferenceTriples(const std::vector<MarkerBlob>& blobs,
+                                               const cv::Mat& filtered, int limit) {
   const int count = std::min<int>(static_cast<int>(blobs.size()), 16);
-  double best = 1e9;
+  std::vector<std::pair<double, MarkerTriple>> ranked;
   for (int i = 0; i < count; ++i) {
     for (int j = 0; j < count; ++j) {
       const MarkerBlob& a = blobs[i];
@@ -341,14 +344,27 @@ bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, const cv::Mat& 
         const SurfaceStretch up = SampleStretch(filtered, mid, c.centre);
         if (pair.uneven > 0.25 || up.uneven > 0.25) continue;
         const double score = off / n + dy / n + 0.5 * size_diff + pair.uneven + up.uneven;
-        if (score < best) {
-          best = score;
-          *out = Ordered(c, a, b);
-        }
+        ranked.emplace_back(score, Ordered(c, a, b));
       }
     }
   }
-  return best < 1e9;
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<MarkerTriple> out;
+  for (const auto& [score, t] : ranked) {
+    if (static_cast<int>(out.size()) >= limit) break;
+    out.push_back(t);
+  }
+  return out;
+}
+
+bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, const cv::Mat& filtered,
+                           bool thesis_mode, MarkerTriple* out) {
+  if (thesis_mode) return ThreeLargest(blobs, out);
+  const std::vector<MarkerTriple> ranked = RankReferenceTriples(blobs, filtered, 1);
+  if (ranked.empty()) return false;
+  *out = ranked[0];
+  return true;
 }
 
 MarkerAngles ComputeThesisAngles(const MarkerTriple& t, const MarkerReference& ref) {

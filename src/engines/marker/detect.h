@@ -43,7 +43,8 @@ std::vector<MarkerBlob> FindMarkerCandidates(const cv::Mat& bgr, const MarkerOpt
 // surface's shading), and every pixel of the window counts by how dark it is between the
 // surround and the marker level. `core_ratio` is marker / surround level learnt from the
 // reference (<= 0: take the darkest median-filtered value in the blob). False when the blob
-// touches the image border or has no contrast (the blob keeps its bounding-box centre).
+// touches the image border (a window the border cuts is kept) or has no contrast (the blob keeps
+// its bounding-box centre).
 // `min_height`: the window spans at least this many rows (the reference marker's height).
 bool RefineMarker(const cv::Mat& gray, const cv::Mat& filtered, double core_ratio, int min_height,
                   MarkerBlob* blob);
@@ -66,6 +67,10 @@ struct MarkerReference {
 // surface (even), not background.
 bool ChooseReferenceTriple(const std::vector<MarkerBlob>& blobs, const cv::Mat& filtered,
                            bool thesis_mode, MarkerTriple* out);
+// The `limit` most symmetric triples, best first (the cylinder model calibrates from the first
+// one it can measure).
+std::vector<MarkerTriple> RankReferenceTriples(const std::vector<MarkerBlob>& blobs,
+                                               const cv::Mat& filtered, int limit);
 // Thesis 4.2.5: the three largest survivors, the top-most as upper.
 bool ThreeLargest(const std::vector<MarkerBlob>& blobs, MarkerTriple* out);
 

@@ -44,15 +44,12 @@ class MarkerEngine : public Engine {
                                std::to_string(context.frame_size.height));
     }
     options_ = requested_;
-    MarkerTriple t;
-    if (!FindReferenceMarkers(ref, &t)) {
-      return Status::Error("analysis.reference",
-                           "cannot find the three markers in the reference (" +
-                               std::to_string(reference_blobs_) +
-                               " dark blobs passed the threshold and the heuristics; expected two "
-                               "side by side and one centred above them)");
-    }
-    if (options_.thesis_mode) {
+    if (!options_.thesis_mode) {
+      const Status st = BeginCylinder(ref);
+      if (!st.ok()) return st;
+    } else {
+      MarkerTriple t;
+      if (!FindReferenceMarkers(ref, &t)) return NoTriple();
       ref_.markers = t;
       ref_.n_px = t.right.centre.x - t.left.centre.x;
       ref_.e_px = 0.5 * ((t.left.centre.y + t.right.centre.y) * 0.5 - t.upper.centre.y);
@@ -60,24 +57,6 @@ class MarkerEngine : public Engine {
         return Status::Error("analysis.reference",
                              "the reference's markers are too close together (N = " +
                                  Fixed(ref_.n_px, 1) + " px, e = " + Fixed(ref_.e_px, 1) + " px)");
-      }
-    } else {
-      // Sub-pixel centroids: once with the darkest level, then with the learnt marker/surround.
-      double ratio = 0;
-      for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
-        if (!RefineMarker(scratch_.gray, scratch_.filtered, 0, 0, b)) {
-          return Status::Error("analysis.reference",
-                               "the reference's markers have too little contrast to measure");
-        }
-        ratio += b->core / b->surround;
-      }
-      for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
-        b->centre = {b->box.x + (b->box.width - 1) / 2.0, b->box.y + (b->box.height - 1) / 2.0};
-        RefineMarker(scratch_.gray, scratch_.filtered, ratio / 3, 0, b);
-      }
-      std::string message;
-      if (!CalibrateMarkerJoint(scratch_.gray, t, options_, &cal_, &message)) {
-        return Status::Error("analysis.reference", "the reference: " + message);
       }
     }
     size_ = ref.size();
@@ -113,8 +92,9 @@ class MarkerEngine : public Engine {
     }
     if (!r.ok) return m;
     m.phase = MeasurementPhase::kOk;
-    m.yaw_signed_deg = DegFromRad(r.yaw);
-    m.yaw_deg = std::abs(m.yaw_signed_deg);
+    m.yaw_deg = std::abs(DegFromRad(r.yaw));
+    // The signed column only where the sign rests on evidence; the row stays ok for yaw_deg.
+    m.yaw_signed_deg = r.sign_known ? DegFromRad(r.yaw) : kNaN;
     m.bend_deg = std::isfinite(r.bend) ? Wrap180(DegFromRad(r.bend)) : kNaN;
     m.shoulder_px = r.pivot_px;  // the pivot, for the overlay
     m.marker_centres = {r.upper_px, r.left_px, r.right_px};
@@ -145,29 +125,95 @@ class MarkerEngine : public Engine {
   }
 
  private:
-  // The reference's three markers (4.2); when [low, high] does not show them (other
-  // illumination), the nearest window of the same width that does.
-  bool FindReferenceMarkers(const cv::Mat& ref, MarkerTriple* t) {
-    std::vector<MarkerBlob> blobs = FindMarkerCandidates(ref, options_, &scratch_);
-    reference_blobs_ = static_cast<int>(blobs.size());
-    if (ChooseReferenceTriple(blobs, scratch_.filtered, options_.thesis_mode, t)) return true;
-    if (!options_.auto_window || options_.thesis_mode) return false;
-    const int width = requested_.high - requested_.low;
-    for (int shift = 5; shift <= 255; shift += 5) {
-      for (int sign : {-1, 1}) {
-        MarkerOptions o = requested_;
-        o.low = requested_.low + sign * shift;
-        o.high = o.low + width;
-        if (o.low < 0 || o.high > 255) continue;
-        blobs = FindMarkerCandidates(ref, o, &scratch_);
-        if (ChooseReferenceTriple(blobs, scratch_.filtered, false, t)) {
+  Status NoTriple() const {
+    return Status::Error("analysis.reference",
+                         "cannot find the three markers in the reference (" +
+                             std::to_string(reference_blobs_) +
+                             " dark blobs passed the threshold and the heuristics; expected two "
+                             "side by side and one centred above them)");
+  }
+
+  // Sub-pixel centroids of the triple (once with the darkest level, then with the learnt
+  // marker/surround) and the cylinder model's calibration from them; false with a message.
+  bool CalibrateFrom(MarkerTriple t, const MarkerOptions& o, std::string* message) {
+    double ratio = 0;
+    for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
+      if (!RefineMarker(scratch_.gray, scratch_.filtered, 0, 0, b)) {
+        *message = "the reference's markers have too little contrast to measure";
+        return false;
+      }
+      ratio += b->core / b->surround;
+    }
+    for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
+      b->centre = {b->box.x + (b->box.width - 1) / 2.0, b->box.y + (b->box.height - 1) / 2.0};
+      RefineMarker(scratch_.gray, scratch_.filtered, ratio / 3, 0, b);
+    }
+    if (!CalibrateMarkerJoint(scratch_.gray, t, o, &cal_, message)) {
+      *message = "the reference: " + *message;
+      return false;
+    }
+    return true;
+  }
+
+  // The cylinder model's reference: the most symmetric triples of dark blobs in turn (a
+  // symmetric triple of wall blobs beside the joint fails the model, the joint's own markers
+  // do not), in the threshold windows and area bounds FindReferenceMarkers tries.
+  Status BeginCylinder(const cv::Mat& ref) {
+    std::string first_error;
+    bool any_triple = false;
+    auto attempt = [&](const MarkerOptions& o) {
+      const std::vector<MarkerBlob> blobs = FindMarkerCandidates(ref, o, &scratch_);
+      for (const MarkerTriple& t : RankReferenceTriples(blobs, scratch_.filtered, 4)) {
+        any_triple = true;
+        std::string message;
+        if (CalibrateFrom(t, o, &message)) return true;
+        if (first_error.empty()) first_error = message;
+      }
+      return false;
+    };
+    reference_blobs_ = static_cast<int>(FindMarkerCandidates(ref, requested_, &scratch_).size());
+    if (attempt(requested_)) return Status::Ok();
+    if (options_.auto_window) {
+      for (const MarkerOptions& o : ReferenceWindows()) {
+        if (attempt(o)) {
           options_ = o;
-          return true;
+          return Status::Ok();
         }
       }
     }
-    FindMarkerCandidates(ref, options_, &scratch_);  // leave the scratch as for the window used
-    return false;
+    if (!any_triple) return NoTriple();
+    return Status::Error("analysis.reference", first_error);
+  }
+
+  // When [low, high] does not show the reference's markers (other illumination), the nearest
+  // windows of the same width; then the same with larger area bounds. The thesis' bounds suit
+  // its markers at its distance; the cylinder model measures any size, so larger markers (or a
+  // nearer camera) are looked for too, the triple's symmetry still deciding which blobs are the
+  // markers.
+  std::vector<MarkerOptions> ReferenceWindows() const {
+    std::vector<MarkerOptions> out;
+    const int width = requested_.high - requested_.low;
+    for (int area_scale : {1, 3, 9}) {
+      for (int shift = 0; shift <= 255; shift += 5) {
+        for (int sign : {-1, 1}) {
+          if (shift == 0 && (sign < 0 || area_scale == 1)) continue;
+          MarkerOptions o = requested_;
+          o.max_area = requested_.max_area * area_scale;
+          o.low = requested_.low + sign * shift;
+          o.high = o.low + width;
+          if (o.low < 0 || o.high > 255) continue;
+          out.push_back(o);
+        }
+      }
+    }
+    return out;
+  }
+
+  // The reference's three markers (4.2) for the thesis path.
+  bool FindReferenceMarkers(const cv::Mat& ref, MarkerTriple* t) {
+    std::vector<MarkerBlob> blobs = FindMarkerCandidates(ref, options_, &scratch_);
+    reference_blobs_ = static_cast<int>(blobs.size());
+    return ChooseReferenceTriple(blobs, scratch_.filtered, options_.thesis_mode, t);
   }
 
   ArmMeasurement& ProcessThesis(const cv::Mat& image, ArmMeasurement& m) {

@@ -117,7 +117,9 @@ bool FitPatch(const CoverageBand& band, const CylinderView& cyl, const LowerCali
   out->coverage_px = total;
   out->centre_px = {cyl.XFromTheta(out->theta), yc};
   out->radius = middle.n > 0 ? std::sqrt(delta2_sum / middle.n) : kNaN;
-  if (calibrating) return !out->cut;
+  // In calibration a cut marker is kept once the markers' angular radius is known (from the
+  // whole one), which its reading rests on.
+  if (calibrating) return !out->cut || cal.delta > 0;
   // A disc of the markers' size, not a shadow or a fleck.
   if (!out->cut && (out->radius < 0.7 * cal.delta || out->radius > 1.35 * cal.delta)) return false;
   // The markers' height is known: a patch elsewhere in the band is something else.

@@ -26,30 +26,45 @@ std::vector<int> RowRange(double from, double to, int rows) {
   return out;
 }
 
-// The silhouette's two steps in `profiles` (each over the same columns, first column x0), about
-// symmetric about `mid` (within 3 pixels) at half-widths [lo, hi]: the pair of columns with the
-// largest summed gradient magnitude (each band sees its own background, so the step's sign may
-// differ).
-bool SymmetricEdges(const std::vector<std::vector<double>>& profiles, int x0, double mid, double lo,
-                    double hi, int* left, int* right) {
-  auto g = [&](int i) {
-    double sum = 0;
-    for (const std::vector<double>& p : profiles) {
-      if (i >= 1 && i + 1 < static_cast<int>(p.size())) sum += std::abs(p[i + 1] - p[i - 1]);
+// The silhouette's two steps in `profiles` (each over the same columns, first column x0) either
+// side of `mid` (the lower markers' midpoint), each at least `lo` and at most `hi` from it (the
+// markers lie on the surface: each edge lies beyond the nearer marker's centre). Going outwards
+// from the markers, each edge is the first step at least a quarter as steep as the steepest on
+// its side: the limb is the first silhouette met, a shadow's or a poster's edge on the wall
+// beyond it may be steeper (each band sees its own background, so a step's sign may differ).
+// The markers' midpoint lies off the axis when the camera sees the joint from aside, so the
+// edges need not be symmetric about it.
+bool SilhouetteEdges(const std::vector<std::vector<double>>& profiles, int x0, double mid,
+                     double lo, double hi, int* left, int* right) {
+  constexpr double kShare = 0.25;
+  const int width = profiles.empty() ? 0 : static_cast<int>(profiles[0].size());
+  std::vector<double> g(width, 0.0);
+  for (int i = 1; i + 1 < width; ++i) {
+    for (const std::vector<double>& p : profiles) g[i] += std::abs(p[i + 1] - p[i - 1]);
+  }
+  int* out[2] = {left, right};
+  for (int side = 0; side < 2; ++side) {
+    const int step = side == 0 ? -1 : 1;
+    const int from = static_cast<int>(side == 0 ? std::floor(mid - lo) : std::ceil(mid + lo));
+    const int to = static_cast<int>(side == 0 ? std::ceil(mid - hi) : std::floor(mid + hi));
+    auto inside = [&](int x) { return x - x0 >= 1 && x - x0 + 1 < width; };
+    double steepest = 0;
+    for (int x = from; step * (to - x) >= 0; x += step) {
+      if (inside(x)) steepest = std::max(steepest, g[x - x0]);
     }
-    return sum;
-  };
-  double best = 0;
-  *left = *right = -1;
-  for (int xl = static_cast<int>(std::ceil(mid - hi)); xl <= mid - lo; ++xl) {
-    const int i = xl - x0;
-    const int j = static_cast<int>(std::lround(2 * mid - xl)) - x0;
-    for (int dj = -3; dj <= 3; ++dj) {  // the markers' midpoint is only near the axis
-      const double s = g(i) + g(j + dj);
-      if (s > best) best = s, *left = i + x0, *right = j + dj + x0;
+    *out[side] = -1;
+    if (steepest == 0) return false;
+    for (int x = from; step * (to - x) >= 0; x += step) {
+      if (inside(x) && g[x - x0] >= kShare * steepest) {
+        // The step's own peak, a column or two further out.
+        int peak = x;
+        while (inside(peak + step) && g[peak + step - x0] > g[peak - x0]) peak += step;
+        *out[side] = peak;
+        break;
+      }
     }
   }
-  return *left >= 0;
+  return *left >= 0 && *right >= 0;
 }
 
 // Measures a band's two edges near `left`, `right` (image columns): the steepest step (tracked in
@@ -171,8 +186,9 @@ bool FirstSilhouette(const cv::Mat& gray, const Layout& g, double upper_y, doubl
   std::vector<std::vector<double>> profiles(2);
   for (int b = 0; b < 2; ++b) ColumnProfile(gray, first[b].rows, g.x0, g.width, &profiles[b]);
   int li = 0, ri = 0;
+  // The lower markers lie on the surface: each edge lies beyond the nearer marker's centre.
   if (first[0].rows.size() + first[1].rows.size() < 4 ||
-      !SymmetricEdges(profiles, g.x0, g.mid, 0.45 * g.n, 1.7 * g.n, &li, &ri)) {
+      !SilhouetteEdges(profiles, g.x0, g.mid, 0.5 * g.n + 1.5, 1.7 * g.n, &li, &ri)) {
     *message = "the joint shows too few rows beside its markers to find its silhouette";
     return false;
   }
@@ -195,14 +211,22 @@ bool FirstSilhouette(const cv::Mat& gray, const Layout& g, double upper_y, doubl
 // them that show only the surface.
 bool ChooseBands(const cv::Mat& gray, const Layout& g, const CylinderView& cyl, double left,
                  double right, LowerCalibration* cal, std::string* message) {
-  const double d = cyl.distance();
-  const double toward = g.off / d * 1.2 + 2, away = g.off / std::max(1.0, d - 1) * 1.2 + 2;
-  const bool below_horizon = g.y_low >= g.cy;
-  cal->band_top = std::max(
-      0, static_cast<int>(std::floor(g.y_low - 0.5 * g.h - (below_horizon ? toward : away))));
-  cal->band_bottom =
-      std::min(gray.rows - 1,
-               static_cast<int>(std::ceil(g.y_low + 0.5 * g.h + (below_horizon ? away : toward))));
+  // A lower marker turned to theta moves along its row's line to the principal row by the ratio
+  // of its depths: each marker's rows, over every turn it can be read at (and a little beyond,
+  // up to 80 degrees), plus its half-height at that depth and a pixel for a camera tilted a
+  // little (its horizon row is not quite the principal row).
+  double top = g.y_low, bottom = g.y_low;
+  for (double x : {g.mid - 0.5 * g.n, g.mid + 0.5 * g.n}) {
+    const double depth0 = cyl.Depth(cyl.ThetaFromX(x));
+    for (double deg = -80; deg <= 80; deg += 2) {
+      const double scale = depth0 / cyl.Depth(RadFromDeg(deg));
+      const double y = g.cy + (g.y_low - g.cy) * scale;
+      top = std::min(top, y - 0.5 * g.h * scale - 1);
+      bottom = std::max(bottom, y + 0.5 * g.h * scale + 1);
+    }
+  }
+  cal->band_top = std::max(0, static_cast<int>(std::floor(top)));
+  cal->band_bottom = std::min(gray.rows - 1, static_cast<int>(std::ceil(bottom)));
   const double pivot_y = g.y_low - g.e_px;
   cal->bands[0].rows = RowRange(pivot_y + 1.15 * cyl.half_width_px(), cal->band_top - 2, gray.rows);
   cal->bands[1].rows = RowsOnTheSurface(
@@ -217,11 +241,17 @@ bool ChooseBands(const cv::Mat& gray, const Layout& g, const CylinderView& cyl, 
 // Marker grey over surface grey at the two markers' centres, then the markers measured with it:
 // their zero-yaw angles, angular radius and height.
 bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, int x0,
-                             const std::vector<double>& surface, LowerCalibration* cal,
-                             LowerScan* scan, std::string* message) {
+                             const std::vector<double>& surface, bool allow_cut,
+                             LowerCalibration* cal, LowerScan* scan, std::string* message) {
   LowerScratch scratch;
   for (int pass = 0; pass < 2; ++pass) {
     MeasureLowerMarkers(gray, *cal, x0, surface, true, scan, &scratch);
+    // A marker the limb cuts is read from its inner end and the disc's half-chord, which needs
+    // the markers' angular radius: the whole one's.
+    if (allow_cut && scan->markers.size() == 1 && !scan->markers[0].cut && cal->delta == 0) {
+      cal->delta = scan->markers[0].radius;
+      MeasureLowerMarkers(gray, *cal, x0, surface, true, scan, &scratch);
+    }
     if (scan->markers.size() != 2) {
       *message = "found " + std::to_string(scan->markers.size()) +
                  " dark patches across the joint at the lower markers' height, expected 2";
@@ -244,12 +274,49 @@ bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, in
   const LowerMarker& r = scan->markers[1];
   cal->theta_left0 = l.theta;
   cal->theta_right0 = r.theta;
-  cal->delta = 0.5 * (l.radius + r.radius);
+  cal->delta = l.cut ? r.radius : r.cut ? l.radius : 0.5 * (l.radius + r.radius);
   const double f = camera.focal_px, cy = camera.principal_px.y;
   const CylinderView& c = scan->cylinder;
   cal->height = 0.5 * ((cy - l.centre_px.y) * c.Depth(l.theta) / f +
                        (cy - r.centre_px.y) * c.Depth(r.theta) / f);
   return true;
+}
+
+// The lower markers are equal discs: measured across the cylinder they have the same angular
+// radius, whatever the camera's tilt (both lie at one height). A silhouette edge placed wrongly
+// stretches the angles on its side, so the weaker edge is moved (within a third of a radius)
+// to where the two radii agree best, when they differ by over 3 % at the steps' edges. Markers
+// the limb cuts give no radius and leave the edges as they are.
+void EqualDiscs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
+                const std::vector<double>& surface, int weak, LowerCalibration* cal,
+                LowerScan* scan) {
+  auto unequal = [](const LowerScan& sc) {
+    const double a = sc.markers[0].radius, b = sc.markers[1].radius;
+    if (sc.markers[0].cut || sc.markers[1].cut || !(a > 0) || !(b > 0)) return kNaN;
+    return std::abs(a - b) / (a + b);
+  };
+  double best = unequal(*scan);
+  if (!(best > 0.03)) return;
+  const double start = weak == 0 ? cal->left_edge_px : cal->right_edge_px;
+  const double reach = 0.35 * 0.5 * (cal->right_edge_px - cal->left_edge_px);
+  const LowerCalibration base = *cal;
+  for (double d = -reach; d <= reach; d += 0.25) {
+    LowerCalibration c = base;
+    (weak == 0 ? c.left_edge_px : c.right_edge_px) = start + d;
+    c.delta = 0;
+    c.marker_ratio = LowerCalibration().marker_ratio;
+    LowerScan sc;
+    sc.left_edge_px = c.left_edge_px;
+    sc.right_edge_px = c.right_edge_px;
+    sc.cylinder = CylinderView(camera, c.left_edge_px, c.right_edge_px);
+    std::string ignored;
+    if (!sc.cylinder.valid() ||
+        !MeasureReferenceMarkers(gray, camera, x0, surface, false, &c, &sc, &ignored)) {
+      continue;
+    }
+    const double q = unequal(sc);
+    if (q < best) best = q, *cal = c, *scan = sc;
+  }
 }
 
 }  // namespace
@@ -309,19 +376,20 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   };
   int weak = steepest(0) < steepest(1) ? 0 : 1;
   if (unsure(1 - weak) && !unsure(weak)) weak = 1 - weak;
+  double symmetric_edge = kNaN;
   if (unsure(weak)) {
     const double known = weak == 0 ? cal->right_edge_px : cal->left_edge_px;
     const double edge = HiddenEdge(camera, known, weak, left_px, right_px, upper_px);
     double& fitted = weak == 0 ? cal->left_edge_px : cal->right_edge_px;
-    // A faint step that both bands place alike is the limb or the shading inside it, never
-    // beyond: the symmetry moves it only outwards (the markers' centroids shift a little under
-    // side light, which would otherwise narrow a plainly seen joint).
-    const bool agree = !(bands[0].strength[weak] != 0 && bands[1].strength[weak] != 0 &&
-                         std::abs(bands[0].edge_px[weak] - bands[1].edge_px[weak]) > 1);
-    const bool outwards = (weak == 0 ? fitted - edge : edge - fitted) > 0;
+    // The markers' symmetry places an edge no step shows. It is only approximate (under side
+    // light, seen from aside or by a tilted camera a marker's centroid is not its centre's
+    // image, and the upper marker lies at another height): a faint step's own edge is tried
+    // after it, and EqualDiscs refines whichever shows both lower markers whole.
     if (!std::isnan(edge)) {
-      if (steepest(weak) == 0 || (std::abs(edge - fitted) > 1 && (outwards || !agree))) {
+      if (steepest(weak) == 0) {
         fitted = edge;
+      } else if (std::abs(edge - fitted) > 1 && steepest(weak) < kPlain) {
+        symmetric_edge = edge;
       }
     } else if (steepest(weak) == 0) {
       *message = "the joint's silhouette does not stand out from the background on one side";
@@ -330,11 +398,31 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   }
   cal->search_px = std::max(3, static_cast<int>(std::lround(0.1 * (right - left))));
   cal->marker_height_px = g.h;
-  *scan = LowerScan();
-  scan->left_edge_px = cal->left_edge_px;
-  scan->right_edge_px = cal->right_edge_px;
-  scan->cylinder = CylinderView(camera, cal->left_edge_px, cal->right_edge_px);
-  return MeasureReferenceMarkers(gray, camera, g.x0, surface, cal, scan, message);
+  // At zero yaw both lower markers show whole, near a limb as they may be: a silhouette that
+  // cuts one is wrong. The faint edge placed by the markers' symmetry is tried first,
+  // then the steps' own; a marker cut by the limb is accepted only when neither shows both whole.
+  const double fitted_edges[2] = {cal->left_edge_px, cal->right_edge_px};
+  std::string first_message;
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    const bool moved = attempt % 2 == 0;
+    if (moved && std::isnan(symmetric_edge)) continue;
+    cal->left_edge_px = fitted_edges[0];
+    cal->right_edge_px = fitted_edges[1];
+    if (moved) (weak == 0 ? cal->left_edge_px : cal->right_edge_px) = symmetric_edge;
+    cal->delta = 0;
+    cal->marker_ratio = LowerCalibration().marker_ratio;
+    *scan = LowerScan();
+    scan->left_edge_px = cal->left_edge_px;
+    scan->right_edge_px = cal->right_edge_px;
+    scan->cylinder = CylinderView(camera, cal->left_edge_px, cal->right_edge_px);
+    if (MeasureReferenceMarkers(gray, camera, g.x0, surface, attempt >= 2, cal, scan, message)) {
+      EqualDiscs(gray, camera, g.x0, surface, weak, cal, scan);
+      return true;
+    }
+    if (first_message.empty()) first_message = *message;
+  }
+  *message = first_message;
+  return false;
 }
 
 }  // namespace armmimic::internal

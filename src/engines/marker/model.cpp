@@ -99,6 +99,7 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
   // plainly. Of two sides left, the one whose upper marker is found plainly (its silhouette as
   // clear as in the reference) wins if the other finds none.
   std::size_t pick = 0;
+  bool side_seen = true;  // the single marker's side rests on the image, not the upper marker
   UpperMeasurement upper = Upper(gray, cyl, cal, options, yaw.hypotheses[0].yaw);
   out.candidates.insert(out.candidates.end(), upper.spots.begin(), upper.spots.end());
   if (yaw.hypotheses.size() == 2) {
@@ -128,22 +129,42 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
       return out;
     }
     if (alive[1]) pick = 1, upper = other;
+    // The other side is ruled out by the lower part itself (its other lower marker would show
+    // and does not), or both sides turn the joint the same
+    // way, or the upper part decides plainly: this side finds the upper marker with the upper
+    // part's silhouette around it, and the other side finds no dark spot at all where it puts
+    // the upper marker, or turns it round the back. Otherwise the sign rests on which of two
+    // dark spots looked more like the marker, which clutter or a dark wall can fake.
+    const YawHypothesis& a = yaw.hypotheses[0];
+    const YawHypothesis& b = yaw.hypotheses[1];
+    const int other_side = 1 - static_cast<int>(pick);
+    const bool upper_decides =
+        telling[pick] && (uppers[other_side]->spots.empty() ||
+                          UpperTurn(cal, yaw.hypotheses[other_side].yaw) > RadFromDeg(kHiddenDeg));
+    side_seen =
+        yaw.hypotheses[other_side].other_missing || (a.yaw > 0) == (b.yaw > 0) || upper_decides;
   }
   const YawHypothesis& h = yaw.hypotheses[pick];
   out.ok = true;
   out.yaw = h.yaw;
+  // Two lower markers measure the signed yaw through zero (near zero its sign is as good as its
+  // value); one marker's sign is only as good as the choice of its side.
+  out.sign_known = side_seen;
   if (h.left) out.left_px = h.left->centre_px;
   if (h.right) out.right_px = h.right->centre_px;
   const std::string markers = h.left && h.right ? "both lower markers"
                               : h.left          ? "the left lower marker"
                                                 : "the right lower marker";
+  const std::string sign = out.sign_known ? ""
+                                          : "; sign unknown: the lower marker could be either, and "
+                                            "the upper one does not tell plainly";
   if (upper.found && !upper.ambiguous) {
     out.bend = upper.bend;
     out.upper_px = upper.centre_px;
     out.note = "yaw from " + markers + " (+-" + FormatNumber(DegFromRad(h.sigma), 2) +
-               " deg); bend from the upper marker";
+               " deg); bend from the upper marker" + sign;
   } else {
-    out.note = "yaw from " + markers + "; no bend: " + upper.note;
+    out.note = "yaw from " + markers + sign + "; no bend: " + upper.note;
   }
   return out;
 }

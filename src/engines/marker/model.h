@@ -29,8 +29,10 @@ bool CalibrateMarkerJoint(const cv::Mat& gray, const MarkerTriple& markers,
 
 struct MarkerViewResult {
   bool ok = false;
-  std::string note;    // why lost, or how the view was read
-  double yaw = 0;      // radians, signed: positive turns the joint's right side to the camera
+  std::string note;  // why lost, or how the view was read
+  double yaw = 0;    // radians, signed: positive turns the joint's right side to the camera
+  // The sign of `yaw` rests on evidence (docs/marker.md, "The sign"); false: only |yaw| is known.
+  bool sign_known = true;
   double bend = kNaN;  // radians, CCW on screen positive; nan when the upper marker is unsure
   cv::Point2d pivot_px{kNaN, kNaN};
   cv::Point2d upper_px{kNaN, kNaN}, left_px{kNaN, kNaN}, right_px{kNaN, kNaN};

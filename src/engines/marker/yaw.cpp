@@ -20,20 +20,49 @@ double Wrap(double a) {
   return a;
 }
 
-// Would the marker at `theta` show in the band, and does it? True when it would show at least
-// a pixel wide and the image has well under half of its dark area there.
-bool MissingWhereItWouldShow(const LowerScan& scan, const LowerCalibration& cal, double theta,
-                             const LowerMarker& seen) {
+// How far a marker's predicted angle may be off (the yaw's own error, the model's on a lens or
+// rig it only approximates): near a limb a marker that far further round may be hidden.
+constexpr double kPredictionMarginDeg = 4;
+
+enum class OtherMarker { kUndecided, kMissing };
+
+// Would the marker at `theta` show in the band even `kPredictionMarginDeg` further round, and
+// does it not? Missing when it would show at least a pixel wide and the image has well under
+// half of its dark area there. The silhouette's edge pixels mix in the background and tell
+// nothing.
+OtherMarker OtherMarkerAt(const LowerScan& scan, const LowerCalibration& cal, double theta,
+                          const LowerMarker& seen) {
   const CylinderView& cyl = scan.cylinder;
-  const double lo = std::max(theta - cal.delta, -cyl.limb());
-  const double hi = std::min(theta + cal.delta, cyl.limb());
-  if (hi <= lo) return false;
-  const double x0 = cyl.XFromTheta(lo), x1 = cyl.XFromTheta(hi);
-  const double width = std::abs(x1 - x0);
-  if (width < 0.4) return false;  // too thin to tell
+  const double round =
+      theta >= 0 ? RadFromDeg(kPredictionMarginDeg) : -RadFromDeg(kPredictionMarginDeg);
+  const double lo = std::max(theta + round - cal.delta, -cyl.limb());
+  const double hi = std::min(theta + round + cal.delta, cyl.limb());
+  if (hi <= lo) return OtherMarker::kUndecided;
+  const double x0 = std::max(cyl.XFromTheta(lo), scan.left_edge_px + 1);
+  const double x1 = std::min(cyl.XFromTheta(hi), scan.right_edge_px - 1);
+  const double width = x1 - x0;
+  if (width < 1) return OtherMarker::kUndecided;  // too thin to tell
   // A disc's mean chord is pi/4 of its diameter; the part past the limb shows its middle rows.
   const double expected = width * 0.75 * cal.marker_height_px;
-  return scan.CoverageBetween(x0 - 1, x1 + 1, &seen) < 0.35 * expected;
+  const double found = scan.CoverageBetween(x0 - 1, x1 + 1, &seen);
+  return found < 0.35 * expected ? OtherMarker::kMissing : OtherMarker::kUndecided;
+}
+
+// One lower marker: it could be the left or the right one, each side giving its own yaw; a side
+// is marked where the image contradicts it (the other marker would show and does not).
+YawSolution OneMarker(const LowerScan& scan, const LowerCalibration& cal, const LowerMarker& seen) {
+  YawSolution out;
+  const double spacing0 = cal.theta_right0 - cal.theta_left0;
+  for (int side = 0; side < 2; ++side) {
+    YawHypothesis h;
+    h.yaw = Wrap(seen.theta - (side == 0 ? cal.theta_left0 : cal.theta_right0));
+    h.sigma = seen.sigma;
+    (side == 0 ? h.left : h.right) = &seen;
+    const double other = side == 0 ? seen.theta + spacing0 : seen.theta - spacing0;
+    h.other_missing = OtherMarkerAt(scan, cal, other, seen) == OtherMarker::kMissing;
+    out.hypotheses.push_back(h);
+  }
+  return out;
 }
 
 }  // namespace
@@ -55,7 +84,6 @@ YawSolution SolveYaw(const LowerScan& scan, const LowerCalibration& cal, double 
                " degrees from the camera";
     return out;
   }
-  const double spacing0 = cal.theta_right0 - cal.theta_left0;
   if (m.size() >= 2) {
     // The pair whose spacing is the reference's: left and right, each giving the yaw.
     double best = 1e9;
@@ -81,34 +109,20 @@ YawSolution SolveYaw(const LowerScan& scan, const LowerCalibration& cal, double 
       out.hypotheses.push_back(h);
       return out;
     }
-    // A marker the limb cuts is read from one end only; when it disagrees, the whole one decides
-    // (the pair's order still tells which one it is).
-    if (h.left->cut != h.right->cut) {
-      const LowerMarker& whole = h.left->cut ? *h.right : *h.left;
-      if (std::abs(scan.cylinder.Facing(whole.theta)) <= max_turn) {
-        YawHypothesis one;
-        one.yaw = Wrap(whole.theta - (h.left->cut ? cal.theta_right0 : cal.theta_left0));
-        one.sigma = whole.sigma;
-        (h.left->cut ? one.right : one.left) = &whole;
-        out.hypotheses.push_back(one);
-        return out;
-      }
+    // A marker the limb cuts is read from one end only; when it disagrees, the whole one is read
+    // alone: the other patch may not be a marker at all (shading at the limb), so the pair's
+    // order does not tell which one the whole one is.
+    const LowerMarker* whole = h.left->cut == h.right->cut ? nullptr
+                               : h.left->cut               ? h.right
+                                                           : h.left;
+    if (!whole || std::abs(scan.cylinder.Facing(whole->theta)) > max_turn) {
+      out.note = "the two lower markers disagree by " + FormatNumber(DegFromRad(best), 1) +
+                 " degrees of yaw";
+      return out;
     }
-    out.note = "the two lower markers disagree by " + FormatNumber(DegFromRad(best), 1) +
-               " degrees of yaw";
-    return out;
+    return OneMarker(scan, cal, *whole);
   }
-  const LowerMarker& seen = m[0];
-  for (int side = 0; side < 2; ++side) {
-    YawHypothesis h;
-    h.yaw = Wrap(seen.theta - (side == 0 ? cal.theta_left0 : cal.theta_right0));
-    h.sigma = seen.sigma;
-    (side == 0 ? h.left : h.right) = &seen;
-    const double other = side == 0 ? seen.theta + spacing0 : seen.theta - spacing0;
-    h.other_missing = MissingWhereItWouldShow(scan, cal, other, seen);
-    out.hypotheses.push_back(h);
-  }
-  return out;
+  return OneMarker(scan, cal, m[0]);
 }
 
 }  // namespace armmimic::internal

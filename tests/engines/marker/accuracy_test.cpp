@@ -23,6 +23,7 @@ struct Tally {
   int unreadable_ok = 0;  // must stay 0
   int wrong = 0;          // ok views with yaw or bend off by more than 15 degrees
   int bends = 0;
+  int unsigned_rows = 0;  // ok views whose yaw sign the engine could not tell
   double yaw_sum = 0, bend_sum = 0, yaw_max = 0;
   std::string log;  // the views behind the maxima and every unreadable view read
   double yaw_mae() const { return ok ? yaw_sum / ok : kNaN; }
@@ -68,7 +69,12 @@ void RunScene(const synth::MarkerSceneOptions& scene_options, int poses, double 
     ++tally->views;
     if (!ok) continue;
     ++tally->ok;
-    const double yaw_err = std::abs(AngleDiff(m.yaw_signed_deg, pose.yaw_deg));
+    // A sign the engine could not tell is nan: such a view is scored by its size alone, and
+    // counted.
+    const bool unsigned_yaw = std::isnan(m.yaw_signed_deg);
+    tally->unsigned_rows += unsigned_yaw;
+    const double yaw_err = unsigned_yaw ? std::abs(m.yaw_deg - std::abs(pose.yaw_deg))
+                                        : std::abs(AngleDiff(m.yaw_signed_deg, pose.yaw_deg));
     tally->yaw_sum += yaw_err;
     if (yaw_err > tally->yaw_max) tally->log += "yaw max " + std::to_string(yaw_err) + ": " + what;
     tally->yaw_max = std::max(tally->yaw_max, yaw_err);
