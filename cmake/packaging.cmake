@@ -1,6 +1,7 @@
 # Installing and packaging: the two programs, a desktop entry and icon for the application menu,
 # and man pages made from the programs' own --help with help2man. `cpack -G DEB` in the build
-# folder then makes armmimic_<version>_<arch>.deb (README: Installing).
+# folder then makes armmimic_<version>_<arch>.deb (README: Installing); scripts/package.sh makes
+# it and armmimic-models_<version>_all.deb, the pose models.
 include(GNUInstallDirs)
 
 install(FILES ${PROJECT_SOURCE_DIR}/packaging/armmimic.desktop
@@ -72,4 +73,6 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 if(ARMMIMIC_BUILD_GUI)
   set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins")
 endif()
+# The pose models, packed by scripts/package.sh from the pinned files (scripts/models.sh).
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "armmimic-models")
 include(CPack)

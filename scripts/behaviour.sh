@@ -46,6 +46,8 @@ run() {
   [[ -d "$s/m1" ]] || "$cli" -q synth marker "$s/m1" --seed 3
   local have_model=0
   [[ -f .cache/armmimic/movenet-lightning.bin ]] && have_model=1
+  # Named for both programs: a copied one (the baseline) does not look in the source tree.
+  if ((have_model)); then export ARMMIMIC_MODEL_DIR="$PWD/.cache/armmimic"; fi
   local a
   for a in a7 a8 r1 r2; do
     local d="$s/$a" bg=(--background-frames 45 --start 45 --arm-length "$s/$a/armlength.png")

@@ -6,8 +6,9 @@
 #   --with-extras  the sanitizer, fuzzing and screenshot tools too, and the lint tools
 #   --with-lint    clang-format and clang-tidy (scripts/lint.sh)
 #   --with-model   an optional extra beyond Debian packages: fetch the pose engine's model (MoveNet Lightning, from the npm package
-#                  @vladmandic/human 3.3.6), check its SHA-256 and put it in .cache/armmimic
-#                  (or $ARMMIMIC_MODEL_DIR), where armmimic finds it without flags
+#                  @vladmandic/human 3.3.6; scripts/models.sh lists the files), check its SHA-256
+#                  and put it in .cache/armmimic (or $ARMMIMIC_MODEL_DIR), where armmimic finds it
+#                  without flags (scripts/package.sh packs it into armmimic-models)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -28,49 +29,69 @@ for arg in "$@"; do
   esac
 done
 
-# The pinned model: the package tarball and the two model files inside it.
-MODEL_PACKAGE="@vladmandic/human@3.3.6"
-MODEL_TARBALL_SHA256=425e9c51dbbca0c8934362b170cb0d54c2529c11c654b3c03092b16e9d6ad3f7
-MODEL_JSON_SHA256=df8cbde44d00f533ccc4916a7c6ebc17316532fb3fadad114ec667fef22872e9
-MODEL_BIN_SHA256=bf97bc10d9c8a11200b0190ed64ce039b6252f1aff7cb552aca99b3d191c2f34
+# The pinned models and their packages (scripts/models.sh).
+# shellcheck source=scripts/models.sh
+source scripts/models.sh
 
+# Fetches every npm package in MODEL_SOURCES that a file of DIR is missing from (or differs from),
+# checks the tarball's and each file's SHA-256 and keeps only the model files and the licence.
 fetch_model() {
   local dir="${ARMMIMIC_MODEL_DIR:-$PWD/.cache/armmimic}"
-  if [[ -f "$dir/movenet-lightning.json" && -f "$dir/movenet-lightning.bin" ]] &&
-     echo "$MODEL_JSON_SHA256  $dir/movenet-lightning.json" | sha256sum -c --status &&
-     echo "$MODEL_BIN_SHA256  $dir/movenet-lightning.bin" | sha256sum -c --status; then
-    return 0
-  fi
+  [[ -z "$(model_files_problems "$dir")" ]] && return 0
   if ! command -v npm >/dev/null; then
     echo "armmimic: installing npm (to fetch the pose model)" >&2
     install_packages npm
   fi
   MODEL_TMP=$(mktemp -d)
   trap 'rm -rf "$MODEL_TMP"' EXIT
-  local tmp="$MODEL_TMP"
-  echo "armmimic: fetching the pose model ($MODEL_PACKAGE) into $dir" >&2
-  (cd "$tmp" && npm pack --silent "$MODEL_PACKAGE" >/dev/null)
-  local tarball
-  tarball=$(ls "$tmp"/*.tgz)
-  echo "$MODEL_TARBALL_SHA256  $tarball" | sha256sum -c --status || {
-    echo "armmimic: $tarball does not have the pinned SHA-256 $MODEL_TARBALL_SHA256" >&2
-    exit 1
-  }
-  tar -xzf "$tarball" -C "$tmp" package/models/movenet-lightning.json \
-    package/models/movenet-lightning.bin package/LICENSE
-  echo "$MODEL_JSON_SHA256  $tmp/package/models/movenet-lightning.json" | sha256sum -c --status &&
-    echo "$MODEL_BIN_SHA256  $tmp/package/models/movenet-lightning.bin" | sha256sum -c --status || {
-    echo "armmimic: the model files in $tarball do not have their pinned SHA-256" >&2
-    exit 1
-  }
-  mkdir -p "$dir"
-  cp "$tmp/package/models/movenet-lightning.json" "$tmp/package/models/movenet-lightning.bin" "$dir/"
-  cp "$tmp/package/LICENSE" "$dir/LICENSE-vladmandic-human"
-  cat > "$dir/README" <<'TXT'
-MoveNet SinglePose Lightning v4 (Google, weights under the Apache License 2.0), in TensorFlow.js
-graph-model format as shipped by the npm package @vladmandic/human 3.3.6 (MIT licence, in
-LICENSE-vladmandic-human). Fetched and checked by armmimic's scripts/deps.sh --with-model.
-TXT
+  local line source tarball_sha tmp tarball file from sha i names shas have
+  for line in "${MODEL_SOURCES[@]}"; do
+    IFS='|' read -r source tarball_sha _ <<<"$line"
+    names=()
+    shas=()
+    for from in "${MODEL_FILES[@]}"; do
+      IFS='|' read -r file from sha _ <<<"$from"
+      [[ "$from" == "$source" ]] || continue
+      names+=("$file")
+      shas+=("$sha")
+    done
+    have=1
+    for i in "${!names[@]}"; do
+      echo "${shas[i]}  $dir/${names[i]}" | sha256sum -c --status 2>/dev/null || have=0
+    done
+    [[ -f "$dir/$(model_licence_name "$source")" ]] || have=0
+    ((have)) && continue
+    tmp="$MODEL_TMP/$(model_licence_name "$source")"
+    mkdir -p "$tmp"
+    echo "armmimic: fetching the pose model ($source) into $dir" >&2
+    (cd "$tmp" && npm pack --silent "$source" >/dev/null)
+    tarball=$(ls "$tmp"/*.tgz)
+    echo "$tarball_sha  $tarball" | sha256sum -c --status || {
+      echo "armmimic: $tarball does not have the pinned SHA-256 $tarball_sha" >&2
+      exit 1
+    }
+    tar -xzf "$tarball" -C "$tmp" package/LICENSE "${names[@]/#/package/models/}"
+    for i in "${!names[@]}"; do
+      echo "${shas[i]}  $tmp/package/models/${names[i]}" | sha256sum -c --status || {
+        echo "armmimic: models/${names[i]} in $tarball does not have its pinned SHA-256 ${shas[i]}" >&2
+        exit 1
+      }
+    done
+    mkdir -p "$dir"
+    for file in "${names[@]}"; do cp "$tmp/package/models/$file" "$dir/"; done
+    cp "$tmp/package/LICENSE" "$dir/$(model_licence_name "$source")"
+  done
+  {
+    echo "The pose models armmimic runs, fetched and checked by armmimic's"
+    echo "scripts/deps.sh --with-model (scripts/models.sh lists them):"
+    local licence holder what
+    for line in "${MODEL_FILES[@]}"; do
+      IFS='|' read -r file source sha licence holder what <<<"$line"
+      echo "  $file: $what"
+      echo "    $licence, $holder; from the npm package $source (its own licence:"
+      echo "    $(model_licence_name "$source")); SHA-256 $sha"
+    done
+  } >"$dir/README"
 }
 
 # armmimic-cli: compiler, CMake, Qt Core + SerialPort (moc from qt6-base-dev-tools), OpenCV, Eigen.

@@ -35,8 +35,9 @@ TEST_F(CliPose, AMissingModelExitsOneNamingTheFileAndHowToGetIt) {
                     "pose", "--model", none, "-q"});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err, "armmimic-cli analyze: --model: " + none +
-                       "/movenet-lightning.json not found; fetch the pose model as docs/pose.md "
-                       "describes (scripts/deps.sh), or name the folder holding it\n");
+                       "/movenet-lightning.json not found; install the package armmimic-models, "
+                       "or fetch the model with scripts/deps.sh --with-model in armmimic's "
+                       "source tree, or name the folder holding it\n");
   EXPECT_FALSE(std::ifstream(dir_->file("m.tsv")).good());  // nothing written
 }
 

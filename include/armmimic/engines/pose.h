@@ -55,10 +55,23 @@ struct PoseCrop {
 inline constexpr const char* kPoseModelJson = "movenet-lightning.json";
 inline constexpr const char* kPoseModelWeights = "movenet-lightning.bin";
 
-// Where the model is looked for, in order: `flag_dir` (--model DIR) when given,
-// $ARMMIMIC_MODEL_DIR, the source tree's .cache/armmimic (where scripts/deps.sh --with-model
-// puts it), $XDG_CACHE_HOME/armmimic, ~/.cache/armmimic. The first folder holding the JSON file
-// wins; with none, the list of folders tried (for the error message).
+// The package that installs the model, and where: <prefix>/share/armmimic/models beside the
+// programs' <prefix>/bin, /usr/share/armmimic/models for the Debian package armmimic-models.
+inline constexpr const char* kPoseModelPackage = "armmimic-models";
+inline constexpr const char* kPoseModelInstallSubdir = "share/armmimic/models";
+inline constexpr const char* kPackagedPoseModelDir = "/usr/share/armmimic/models";
+
+// Where the model is looked for, in order: `flag_dir` (--model DIR) when given, and then only
+// there; otherwise $ARMMIMIC_MODEL_DIR, the source tree's .cache/armmimic (where
+// scripts/deps.sh --with-model puts it; only for a program run from the build folder),
+// $XDG_CACHE_HOME/armmimic, ~/.cache/armmimic, the installed folder beside the running program
+// (InstalledPoseModelDir) and /usr/share/armmimic/models. Each folder once.
+std::vector<std::string> PoseModelSearchPath(const std::string& flag_dir);
+// <prefix>/share/armmimic/models for the running program <prefix>/bin/NAME, its symbolic links
+// resolved, so a relocated install finds its own models ("" if the program's file is unknown).
+std::string InstalledPoseModelDir();
+// The first folder of PoseModelSearchPath holding the JSON file; with none, "" and the folders
+// tried (for the error message).
 std::string FindPoseModelDir(const std::string& flag_dir, std::vector<std::string>* tried);
 
 class PoseNetwork {

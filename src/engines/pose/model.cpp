@@ -2,7 +2,6 @@
 // built for cv::dnn, cut at its four heads; the decoder's shipped constants are read from the
 // same weights.
 #include <sys/stat.h>
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 
@@ -14,10 +13,6 @@
 #include "pose/decode.h"
 #include "pose/graph.h"
 #include "pose/net.h"
-
-#ifndef ARMMIMIC_REPO_CACHE_DIR
-#define ARMMIMIC_REPO_CACHE_DIR ""
-#endif
 
 namespace armmimic {
 namespace {
@@ -33,9 +28,12 @@ constexpr PinnedFile kPinned[] = {
     {kPoseModelWeights, 4650216,
      "bf97bc10d9c8a11200b0190ed64ce039b6252f1aff7cb552aca99b3d191c2f34"},
 };
-constexpr const char* kFetchAdvice =
-    "fetch the pose model as docs/pose.md describes (scripts/deps.sh), or name the folder "
-    "holding it";
+// Which package, or which command of a source tree, provides the model (docs/pose.md).
+std::string FetchAdvice() {
+  return std::string("install the package ") + kPoseModelPackage +
+         ", or fetch the model with scripts/deps.sh --with-model in armmimic's source tree, or "
+         "name the folder holding it";
+}
 
 constexpr const char* kInputNode = "input";
 // The heads: the last node of each of these name scopes.
@@ -55,7 +53,7 @@ long long FileSize(const std::string& path) {
 Status CheckPinned(const std::string& dir) {
   for (const PinnedFile& f : kPinned) {
     const std::string path = dir + "/" + f.name;
-    if (!FileExists(path)) return Status::Error(path + " not found; " + kFetchAdvice);
+    if (!FileExists(path)) return Status::Error(path + " not found; " + FetchAdvice());
   }
   for (const PinnedFile& f : kPinned) {
     const std::string path = dir + "/" + f.name;
@@ -63,14 +61,14 @@ Status CheckPinned(const std::string& dir) {
     if (size != f.bytes) {
       return Status::Error(path + " is " + (size < f.bytes ? "truncated" : "not the pinned file") +
                            " (" + std::to_string(size) + " bytes, the pinned model has " +
-                           std::to_string(f.bytes) + "); " + kFetchAdvice);
+                           std::to_string(f.bytes) + "); " + FetchAdvice());
     }
     std::string hex;
     Status st = Sha256File(path, &hex);
     if (!st) return st;
     if (hex != f.sha256) {
       return Status::Error(path + " does not match the pinned model (SHA-256 " + hex +
-                           ", expected " + f.sha256 + "); " + kFetchAdvice);
+                           ", expected " + f.sha256 + "); " + FetchAdvice());
     }
   }
   return Status::Ok();
@@ -145,46 +143,23 @@ PoseNetwork::PoseNetwork(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 PoseNetwork::~PoseNetwork() = default;
 const std::string& PoseNetwork::dir() const { return impl_->dir; }
 
-std::string FindPoseModelDir(const std::string& flag_dir, std::vector<std::string>* tried) {
-  std::vector<std::string> dirs;
-  if (!flag_dir.empty()) {
-    dirs.push_back(flag_dir);
-  } else {
-    if (const char* env = std::getenv("ARMMIMIC_MODEL_DIR"); env && *env) dirs.push_back(env);
-    if (*ARMMIMIC_REPO_CACHE_DIR) dirs.push_back(ARMMIMIC_REPO_CACHE_DIR);
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) {
-      dirs.push_back(std::string(xdg) + "/armmimic");
-    }
-    if (const char* home = std::getenv("HOME"); home && *home) {
-      dirs.push_back(std::string(home) + "/.cache/armmimic");
-    }
-  }
-  for (const std::string& d : dirs) {
-    if (FileExists(d + "/" + kPoseModelJson)) return d;
-  }
-  if (tried) *tried = dirs;
-  return std::string();
-}
-
 std::unique_ptr<PoseNetwork> PoseNetwork::Load(const std::string& flag_dir, Status* status) {
   std::vector<std::string> tried;
   const std::string dir = FindPoseModelDir(flag_dir, &tried);
   if (dir.empty()) {
     if (!flag_dir.empty()) {
       *status = Status::Error("analysis.model",
-                              flag_dir + "/" + kPoseModelJson + " not found; " + kFetchAdvice);
+                              flag_dir + "/" + kPoseModelJson + " not found; " + FetchAdvice());
     } else {
       std::string list;
       for (const std::string& d : tried) list += (list.empty() ? "" : ", ") + d;
       *status =
           Status::Error("analysis.model", std::string("the pose model (") + kPoseModelJson +
-
-                                              ") is in none of " + list + "; " + kFetchAdvice);
+                                              ") is in none of " + list + "; " + FetchAdvice());
     }
     return nullptr;
   }
   *status = CheckPinned(dir).WithKey("analysis.model");
-
   if (!*status) return nullptr;
   auto net = LoadUnchecked(dir + "/" + kPoseModelJson, status);
   if (net) net->impl_->dir = dir;
