@@ -28,7 +28,8 @@ std::string Num(double v, int decimals) { return FormatNumber(v, decimals); }
 int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   robot::PlannerOptions o;
   std::vector<std::string> input;
-  std::string output, source_kind = "auto";
+  std::string output;
+  robot::MappingOptions source;    // --source: only its kind and follow_file_kind
   robot::SendSettings send;        // --profile
   robot::ControllerProfile given;  // --mode, --program-name (over the profile's)
   PlannerFlags flags(&o, false);
@@ -55,8 +56,7 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   p.Positionals(&input, "ANGLES.tsv", 1, 1);
   p.String("-o,--output", &output, "PROGRAM.val", "the VAL program to write (required)");
   flags.RegisterMapping(p, [&] {
-    p.String("--source", &source_kind, "auto|arm|marker",
-             "which engine the angles come from (default auto: from the file)");
+    AddRowFlag(p, robot::SourceOptionFields()[0], &source, WithMetavar("auto|arm|marker"));
   });
   flags.RegisterFilter(p, [&] { AddRowFlag(p, planner_row("gap"), &o); });
   flags.RegisterLimits(p);
@@ -85,9 +85,6 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   }
   InterruptGuard guard;
   if (auto code = flags.ParseTexts(p)) return *code;
-  if (source_kind != "auto" && source_kind != "arm" && source_kind != "marker") {
-    return p.UsageError("--source: '" + source_kind + "' is not auto, arm or marker");
-  }
   robot::ControllerProfile profile;
   if (!send.profile_path.empty()) {
     const Status s = robot::ReadProfile(send.profile_path, &profile);
@@ -110,10 +107,8 @@ int RunPlan(const std::vector<std::string>& args, const GlobalOptions& global) {
   }
   if (auto code = CheckCompleteInput("plan", input[0], angles, strict)) return *code;
   const robot::SourceKind kind =
-      source_kind == "auto"
-          ? robot::DetectSourceKind(angles)
-          : (source_kind == "marker" ? robot::SourceKind::kMarker : robot::SourceKind::kArm);
-  if (auto code = flags.Finish(p, kind, source_kind == "auto")) return *code;
+      source.follow_file_kind ? robot::DetectSourceKind(angles) : source.kind;
+  if (auto code = flags.Finish(p, kind, source.follow_file_kind)) return *code;
 
   robot::Trajectory trajectory;
   robot::PlanReport report;

@@ -235,6 +235,33 @@ const std::vector<OptionField<LiveStreamOptions>>& LiveStreamOptionFields() {
   return fields;
 }
 
+const std::vector<OptionField<MappingOptions>>& SourceOptionFields() {
+  static const std::vector<OptionField<M>> fields = {
+      Text<M>(
+          "kind", "auto",
+          [](const M& o) {
+            return o.follow_file_kind ? "auto" : std::string(SourceKindName(o.kind));
+          },
+          [](const std::string& text, M* o) {
+            if (text == "auto") {
+              o->follow_file_kind = true;
+              return std::string();
+            }
+            if (text != SourceKindName(SourceKind::kArm) &&
+                text != SourceKindName(SourceKind::kMarker)) {
+              return "'" + text + "' is not auto, arm or marker";
+            }
+            o->kind =
+                text == SourceKindName(SourceKind::kArm) ? SourceKind::kArm : SourceKind::kMarker;
+            o->follow_file_kind = false;
+            return std::string();
+          },
+          "Angles from", "which engine the angles come from: auto (from the file), arm or marker")
+          .Flag("--source"),
+  };
+  return fields;
+}
+
 const std::vector<OptionField<ControllerProfile>>& ProfileOptionFields() {
   static const std::vector<OptionField<CP>> fields = {
       Enum<CP>("mode", &CP::mode, SendMode::kStream, {"stream", "program"}, "Send mode",

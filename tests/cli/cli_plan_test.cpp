@@ -117,6 +117,39 @@ TEST(CliPlan, MarkerFilesMapBendToJ2AndProgramModeUploads) {
   EXPECT_EQ(lines.back(), "EXECUTE ARM2");
 }
 
+// --source marker plans a file whose header does not say its engine with the marker mapping
+// (J2 = -bend - 90), where auto would take it for an arm file.
+TEST(CliPlan, SourceChoosesTheMappingOfAFileThatDoesNotSayItsEngine) {
+  test::TempDir dir;
+  AngleFileWriter w;
+  ASSERT_TRUE(w.Open(dir.file("j.tsv"), {{"fps", "10"}}, false).ok());
+  for (int i = 0; i < 5; ++i) {
+    AngleRow r;
+    r.frame = i;
+    r.time_s = i / 10.0;
+    r.status = RowStatus::kOk;
+    r.yaw_deg = 10;
+    r.bend_deg = 0;
+    r.upper_deg = -90;
+    r.fore_deg = -90;
+    ASSERT_TRUE(w.Write(r).ok());
+  }
+  ASSERT_TRUE(w.Commit().ok());
+  auto r = test::RunCli(
+      {"plan", dir.file("j.tsv"), "-o", dir.file("m.val"), "--cutoff", "0", "--source", "marker"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("marker"), std::string::npos) << r.out;
+  auto lines = SentLines(test::ReadFile(dir.file("m.val")));
+  ASSERT_GE(lines.size(), 2u);
+  EXPECT_NE(lines[1].find("#PPOINT(10.00,-90.00,0.00"), std::string::npos) << lines[1];
+  r = test::RunCli({"plan", dir.file("j.tsv"), "-o", dir.file("a.val"), "--cutoff", "0"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("arm"), std::string::npos) << r.out;
+  lines = SentLines(test::ReadFile(dir.file("a.val")));
+  ASSERT_GE(lines.size(), 2u);
+  EXPECT_NE(lines[1].find("#PPOINT(10.00,0.00,0.00"), std::string::npos) << lines[1];
+}
+
 TEST(CliPlan, RefusalsListTheFramesAndLeaveNoFile) {
   test::TempDir dir;
   WriteRecording(dir.file("a.tsv"));
@@ -150,6 +183,9 @@ TEST(CliPlan, UsageAndFileErrorsNameTheFlagOrFile) {
       {{"plan", in, "-o", out, "--map-j2", "2,0"}, 2, "--map-j2"},
       {{"plan", in, "-o", out, "--cutoff", "20"}, 2, "--cutoff"},
       {{"plan", in, "-o", out, "--program-name", "A B"}, 2, "--program-name"},
+      {{"plan", in, "-o", out, "--source", "hand"},
+       2,
+       "--source: 'hand' is not auto, arm or marker"},
       {{"plan", dir.file("missing.tsv"), "-o", out}, 1, "missing.tsv"},
       {{"plan", in, "-o", dir.file("no/such/dir/p.val")}, 1, "p.val"},
   };

@@ -205,6 +205,9 @@ const std::map<std::string, Absent>& AbsentRows() {
       {"live.stale_after_s",
        {"", "the Mimic panel holds the robot after the default time without a measured frame",
         "mimic's journal and latency log record what was sent and when, not the hold rule"}},
+      {"source.kind",
+       {"", "the panel plans the angles shown, whose kind it reads from their file (auto)",
+        "the program's header names the angle file and its engine, from which the kind follows"}},
       {"profile.mode", {"", "the panel sends in the mode of the controller profile it shows", ""}},
       {"profile.program_name",
        {"", "the panel names the program as the controller profile it shows does", ""}},
@@ -358,6 +361,7 @@ TEST_F(OptionTablesTest, RobotTablesAgreeWithTheCliTheRobotPanelAndTheProgramHea
   CheckRobotTable(robot::SendOptionFields(), "send", {"send"}, &w);
   CheckRobotTable(robot::LiveStreamOptionFields(), "live", {"mimic"}, &w);
   CheckRobotTable(robot::ProfileOptionFields(), "profile", {"plan"}, &w);
+  CheckRobotTable(robot::SourceOptionFields(), "source", {"plan"}, &w);
   // The profile file plan and mimic read too.
   for (const char* command : {"plan", "mimic"}) {
     const auto& profile = *FindOptionField(robot::SendOptionFields(), "profile_path");

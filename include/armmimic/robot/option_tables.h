@@ -28,6 +28,9 @@ const std::vector<OptionField<JointLimits>>& LimitsOptionFields();
 const std::vector<OptionField<LinkSettings>>& LinkOptionFields();
 const std::vector<OptionField<SendSettings>>& SendOptionFields();
 const std::vector<OptionField<LiveStreamOptions>>& LiveStreamOptionFields();
+// Which engine a plan's angles come from (`source.kind`: auto, arm or marker), kept apart from
+// the mapping's table because only `plan` chooses it: mimic knows its own engine.
+const std::vector<OptionField<MappingOptions>>& SourceOptionFields();
 // Only the profile's settings a shell sets besides the profile file (the mode and the program
 // name); the file's other keys are the profile's own format (docs/profiles/default.profile).
 const std::vector<OptionField<ControllerProfile>>& ProfileOptionFields();
