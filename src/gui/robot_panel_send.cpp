@@ -1,6 +1,8 @@
 // The robot panel's send: the program the plan gives, the journal's choices (fresh, resume,
 // start over), the confirmation, and the hand-over to RobotLink. Every decision the CLI's `send`
 // makes is robot::SendSession's; this file only asks the operator and shows the answers.
+// Length: RobotPanel::startSend is the one path from the send button to RobotLink, asking each
+// question of SendSession in the order the CLI's send asks it.
 #include <sstream>
 
 #include <QFile>

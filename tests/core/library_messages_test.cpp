@@ -67,10 +67,19 @@ std::vector<Literal> StringLiterals(const std::string& src) {
   return out;
 }
 
+// A flag of the source tree's own scripts ("scripts/deps.sh --with-model") belongs to that
+// script's command line, not to a shell's, so a message may name it in full.
+bool IsScriptFlag(const std::string& text, std::size_t at) {
+  const std::size_t script = text.rfind("scripts/", at);
+  if (script == std::string::npos) return false;
+  const std::size_t sh = text.find(".sh ", script);
+  return sh != std::string::npos && sh + 4 == at;
+}
+
 bool NamesAFlag(const std::string& text) {
   for (std::size_t k = 0; k + 2 < text.size(); ++k) {
     if (text[k] == '-' && text[k + 1] == '-' &&
-        std::isalpha(static_cast<unsigned char>(text[k + 2]))) {
+        std::isalpha(static_cast<unsigned char>(text[k + 2])) && !IsScriptFlag(text, k)) {
       return true;
     }
   }
@@ -93,6 +102,8 @@ TEST(LibraryMessagesTest, TheScannerFindsLiteralsAndSkipsComments) {
   EXPECT_EQ(flagged[0], "4:--threshold");
   EXPECT_EQ(flagged[1], "5:raw --raw");
   EXPECT_FALSE(NamesAFlag("a -- b"));
+  EXPECT_FALSE(NamesAFlag("fetch it with scripts/deps.sh --with-model"));
+  EXPECT_TRUE(NamesAFlag("scripts/deps.sh fetches it; then give --model DIR"));
   EXPECT_FALSE(NamesAFlag("x--"));
 }
 

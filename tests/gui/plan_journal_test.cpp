@@ -2,6 +2,8 @@
 // video) and keeps the journal beside it, so a new window, as after a restart, finds the
 // interrupted send when it opens the session or the plan, and Resume… says what is left. Esc
 // aborts a send right after its confirmation, without a click on the window first.
+// Length: the journal test walks one story (send, abort, new window, reopen, resume summary)
+// whose steps depend on each other.
 #include <QApplication>
 #include <QDoubleSpinBox>
 #include <QFile>

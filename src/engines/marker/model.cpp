@@ -1,5 +1,7 @@
 // The marker joint's cylinder model (docs/marker.md): calibration from the reference, and one
 // view: silhouette and lower markers -> signed yaw; upper marker -> bend.
+// Length: MeasureMarkerView is one view's chain (scan, lower markers, the side of a single
+// marker, upper marker), whose steps share the scan and the candidate yaws.
 #include "marker/model.h"
 
 #include <cmath>
