@@ -27,6 +27,21 @@ synth::MarkerSceneOptions Scene(const char* lighting, int clutter) {
   return o;
 }
 
+// The timed loop: one view after another, round the set; counts the ok views.
+void RunViews(benchmark::State& state, Engine& engine, const std::vector<Frame>& frames) {
+  std::size_t i = 0;
+  int ok = 0;
+  for (auto _ : state) {
+    const ArmMeasurement m = engine.Process(frames[i++ % frames.size()]);
+    ok += m.phase == MeasurementPhase::kOk;
+    benchmark::DoNotOptimize(m.yaw_deg);
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["images_per_s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["ok_share"] = static_cast<double>(ok) / std::max<int64_t>(1, state.iterations());
+}
+
 void MarkerProcess(benchmark::State& state, const char* lighting, int clutter, bool thesis) {
   const synth::MarkerSceneOptions o = Scene(lighting, clutter);
   const synth::MarkerSceneRenderer scene(o);
@@ -45,17 +60,7 @@ void MarkerProcess(benchmark::State& state, const char* lighting, int clutter, b
     state.SkipWithError("the reference has no markers");
     return;
   }
-  std::size_t i = 0;
-  int ok = 0;
-  for (auto _ : state) {
-    const ArmMeasurement m = engine->Process(frames[i++ % frames.size()]);
-    ok += m.phase == MeasurementPhase::kOk;
-    benchmark::DoNotOptimize(m.yaw_deg);
-  }
-  state.SetItemsProcessed(state.iterations());
-  state.counters["images_per_s"] =
-      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
-  state.counters["ok_share"] = static_cast<double>(ok) / std::max<int64_t>(1, state.iterations());
+  RunViews(state, *engine, frames);
 }
 
 // Views of the rig renderer (`synth marker --renderer rig`), told the rig's lens.
@@ -80,17 +85,7 @@ void MarkerProcessRig(benchmark::State& state, const char* set, uint64_t seed) {
     state.SkipWithError("the rig's reference does not calibrate");
     return;
   }
-  std::size_t i = 0;
-  int ok = 0;
-  for (auto _ : state) {
-    const ArmMeasurement m = engine->Process(frames[i++ % frames.size()]);
-    ok += m.phase == MeasurementPhase::kOk;
-    benchmark::DoNotOptimize(m.yaw_deg);
-  }
-  state.SetItemsProcessed(state.iterations());
-  state.counters["images_per_s"] =
-      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
-  state.counters["ok_share"] = static_cast<double>(ok) / std::max<int64_t>(1, state.iterations());
+  RunViews(state, *engine, frames);
 }
 
 // Decoding the same views from PNG, as `analyze` reads a folder of images.

@@ -8,38 +8,17 @@
 
 #include "armmimic/core/angles.h"
 #include "capsule_model.h"
+#include "random_scene_model.h"
 
 namespace armmimic::synth::capsule {
 
-cv::Vec3f HsvColour(double hue, double sat, double val) {
-  const double h = std::fmod(std::fmod(hue, 360.0) + 360.0, 360.0) / 60.0;
-  const double c = val * sat, x = c * (1 - std::abs(std::fmod(h, 2.0) - 1)), m = val - c;
-  double r = 0, g = 0, b = 0;
-  switch (static_cast<int>(h)) {
-    case 0:
-      r = c, g = x;
-      break;
-    case 1:
-      r = x, g = c;
-      break;
-    case 2:
-      g = c, b = x;
-      break;
-    case 3:
-      g = x, b = c;
-      break;
-    case 4:
-      r = x, b = c;
-      break;
-    default:
-      r = c, b = x;
-      break;
-  }
-  return {static_cast<float>((b + m) * 255), static_cast<float>((g + m) * 255),
-          static_cast<float>((r + m) * 255)};
-}
+// The colour arithmetic is the painted generators' (random_scene::Hsv): a conversion, not a
+// part of either scene's structure.
+cv::Vec3f HsvColour(double hue, double sat, double val) { return random_scene::Hsv(hue, sat, val); }
 
-double ColourDistance(const cv::Vec3f& a, const cv::Vec3f& b) { return cv::norm(a - b); }
+double ColourDistance(const cv::Vec3f& a, const cv::Vec3f& b) {
+  return random_scene::ColourDistance(a, b);
+}
 
 namespace {
 
