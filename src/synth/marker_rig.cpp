@@ -268,14 +268,9 @@ Status WriteMarkerRigScene(const MarkerRigOptions& options, const std::string& o
                            const std::atomic<bool>* cancel) {
   const Status st = options.Check();
   if (!st) return st;
-  std::error_code ec;
   const std::filesystem::path root(outdir);
-  std::filesystem::create_directories(root / "views", ec);
-  if (ec) return Status::Error(outdir + ": cannot create the folder: " + ec.message());
-  std::filesystem::remove(root / "truth.tsv", ec);
-  if (ec) return Status::Error(outdir + "/truth.tsv: cannot replace: " + ec.message());
   const MarkerRigRenderer scene(options);
-  Status ws = WriteImageAtomically((root / "reference.png").string(), scene.Reference());
+  Status ws = BeginMarkerSceneFolder(outdir, scene.Reference());
   if (!ws) return ws;
   TruthFile truth;
   truth.meta = {{"scene", "marker"},

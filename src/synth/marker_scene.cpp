@@ -327,21 +327,24 @@ cv::Mat MarkerSceneRenderer::Reference(MarkerTruth* truth) const {
   return image;
 }
 
+Status BeginMarkerSceneFolder(const std::string& outdir, const cv::Mat& reference) {
+  std::error_code ec;
+  const std::filesystem::path root(outdir);
+  std::filesystem::create_directories(root / "views", ec);
+  if (ec) return Status::Error(outdir + ": cannot create the folder: " + ec.message());
+  std::filesystem::remove(root / "truth.tsv", ec);
+  if (ec) return Status::Error(outdir + "/truth.tsv: cannot replace: " + ec.message());
+  return WriteImageAtomically((root / "reference.png").string(), reference);
+}
+
 Status WriteMarkerScene(const MarkerSceneOptions& options, const std::string& outdir,
                         const std::function<void(int, int)>& progress,
                         const std::atomic<bool>* cancel) {
   const Status st = options.Check();
   if (!st) return st;
-  std::error_code ec;
   const std::filesystem::path root(outdir);
-  std::filesystem::create_directories(root / "views", ec);
-  if (ec) return Status::Error(outdir + ": cannot create the folder: " + ec.message());
-  // An old truth.tsv would describe views this run replaces: without one the folder says that
-  // it is not a whole scene until the new one is written, last.
-  std::filesystem::remove(root / "truth.tsv", ec);
-  if (ec) return Status::Error(outdir + "/truth.tsv: cannot replace: " + ec.message());
   const MarkerSceneRenderer scene(options);
-  Status ws = WriteImageAtomically((root / "reference.png").string(), scene.Reference());
+  Status ws = BeginMarkerSceneFolder(outdir, scene.Reference());
   if (!ws) return ws;
   TruthFile truth;
   const MarkerJointModel& model = scene.model();

@@ -120,6 +120,11 @@ class MarkerSceneRenderer {
   std::unique_ptr<Impl> impl_;
 };
 
+// The start of a marker scene folder, for either renderer: OUTDIR/views exists, an old truth.tsv
+// is gone (it would describe views this run replaces, so until the new one is written, last,
+// the folder says it is not a whole scene) and OUTDIR/reference.png is `reference`.
+Status BeginMarkerSceneFolder(const std::string& outdir, const cv::Mat& reference);
+
 // Writes reference.png, views/view_NNN.png and truth.tsv (with a `file` column) into `outdir`
 // (created if missing). Every file appears complete or not at all. An earlier truth.tsv is
 // removed first and the new one written last, so a folder with a truth.tsv is a whole scene.
