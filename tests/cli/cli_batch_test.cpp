@@ -113,6 +113,22 @@ TEST(CliParamsFrom, BadRecordsAreNamed) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("x.tsv")));
 }
 
+// A list saved with CR alone as its line end (old Mac editors) names one video per line.
+TEST(CliBatch, AListWithCrAloneAsItsLineEndNamesOneVideoPerLine) {
+  test::TempDir dir;
+  test::WriteFile(dir.file("a.avi"), "not a video");
+  test::WriteFile(dir.file("b.avi"), "not a video either");
+  test::WriteFile(dir.file("list.txt"),
+                  dir.file("a.avi") + "\r# a comment\r" + dir.file("b.avi") + "\r");
+  std::vector<std::string> args = {"analyze", "--list", dir.file("list.txt"), "--output-dir",
+                                   dir.file("out")};
+  for (const std::string& f : BgsubFlags()) args.push_back(f);
+  const test::CliResult r = test::RunCli(args);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_TRUE(Contains(r.err, "[1/2] " + dir.file("a.avi") + ":")) << r.err;
+  EXPECT_TRUE(Contains(r.err, "[2/2] " + dir.file("b.avi") + ":")) << r.err;
+}
+
 TEST(CliBatch, OneFilePerVideoASummaryAndAFailureStopsNothing) {
   test::TempDir dir;
   const std::string video = Scene() + "/scene.avi";
