@@ -156,6 +156,7 @@ void LiveStream::TrySend(double now_s, bool from_ack) {
 void LiveStream::OnSent(const LinkLine& line) {
   const double now = clock_ ? clock_() : line.time_s;
   const int frame = written_[static_cast<std::size_t>(line.index)].first;
+  if (IsMotionLine(line.text)) planner_.Written(now);
   if (frame >= 0) latency_.Written(line.line_no, frame, now);
   if (!journal_.is_open()) return;
   const Status s = journal_.Sent(line.line_no, now, frame, line.text);

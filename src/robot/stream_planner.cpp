@@ -227,6 +227,10 @@ bool StreamPlanner::Next(double now_s, StreamCommand* out) const {
   return true;
 }
 
+void StreamPlanner::Written(double time_s) {
+  if (has_sent_ && std::isfinite(time_s)) last_sent_s_ = std::max(last_sent_s_, time_s);
+}
+
 void StreamPlanner::Sent(const StreamCommand& command) {
   last_sent_ = command.joint_deg;
   last_sent_s_ = command.time_s;

@@ -134,6 +134,32 @@ TEST(StreamPlanner, StepsNeverExceedTheSpeedLimitAndTheGateAgrees) {
   EXPECT_GT(p.stats().rate_limited, 0);
 }
 
+// A command that reached the port later than it was planned for (a loaded machine): the next
+// step is limited from the write, so two writes are never closer than their step allows.
+TEST(StreamPlanner, TheNextStepIsLimitedFromTheLastWriteNotItsPlan) {
+  PlannerOptions o;
+  o.max_jump_deg_s = 5000;
+  o.cutoff_hz = 0;
+  StreamPlanner p = Begin(o);
+  p.Push(Row(0, -90, 0), 0);
+  StreamCommand c;
+  ASSERT_TRUE(p.Next(0, &c));
+  p.Sent(c);
+  p.Written(0.1);  // planned at 0, written 0.1 s later
+  for (int f = 1; f <= 10; ++f) p.Push(Row(f, 0, 0), f / kFps);  // the arm swings up to level
+  const double now = 0.35;
+  ASSERT_TRUE(p.Next(now, &c));
+  const double step = std::abs(c.joint_deg[1] - 0.0);
+  EXPECT_GT(step, 0);
+  EXPECT_LE(step, o.limits.max_speed_deg_s[1] * (now - 0.1) + 0.01);
+  EXPECT_LT(step, o.limits.max_speed_deg_s[1] * now - 1);  // what the plan's time would allow
+  p.Written(std::nan(""));  // a write time that cannot be read changes nothing
+  p.Written(-1);            // nor an earlier one
+  StreamCommand again;
+  ASSERT_TRUE(p.Next(now, &again));
+  EXPECT_EQ(again.joint_deg, c.joint_deg);
+}
+
 TEST(StreamPlanner, TheDeadbandAndMinIntervalThinTheCommands) {
   StreamPlanner p = Begin();
   // 1 degree a frame for 3 s: 30 deg/s, under every speed limit.

@@ -78,6 +78,10 @@ class StreamPlanner {
   bool Next(double now_s, StreamCommand* out) const;
   // The command went out (Next's output).
   void Sent(const StreamCommand& command);
+  // The last command reached the port at `time_s` (on the clock of `now_s`), which under load can
+  // be later than it was planned for: the next step is limited from then, so the step between
+  // two writes never exceeds the speed limit over the time between the writes themselves.
+  void Written(double time_s);
 
   HoldReason holding(double now_s) const;
   // The filtered, limited target of the newest measured frame (valid once one was measured).
