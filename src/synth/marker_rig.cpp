@@ -6,13 +6,12 @@
 
 #include <array>
 #include <cmath>
-#include <filesystem>
 #include <stdexcept>
+#include <utility>
 
 #include <opencv2/imgproc.hpp>
 
 #include "armmimic/core/angles.h"
-#include "armmimic/core/image_io.h"
 #include "marker_rig_trace.h"
 
 namespace armmimic::synth {
@@ -268,10 +267,7 @@ Status WriteMarkerRigScene(const MarkerRigOptions& options, const std::string& o
                            const std::atomic<bool>* cancel) {
   const Status st = options.Check();
   if (!st) return st;
-  const std::filesystem::path root(outdir);
   const MarkerRigRenderer scene(options);
-  Status ws = BeginMarkerSceneFolder(outdir, scene.Reference());
-  if (!ws) return ws;
   TruthFile truth;
   truth.meta = {{"scene", "marker"},
                 {"renderer", "rig"},
@@ -282,20 +278,10 @@ Status WriteMarkerRigScene(const MarkerRigOptions& options, const std::string& o
   for (const auto& kv : scene.rig().Describe()) truth.meta.push_back(kv);
   truth.meta.emplace_back("reference", "reference.png");
   truth.meta.emplace_back("views", "views");
-  truth.extra_columns.assign(std::begin(kMarkerTruthExtra), std::end(kMarkerTruthExtra));
-  for (int i = 0; i < options.views; ++i) {
-    if (cancel && cancel->load()) {
-      return Status::Error(outdir + ": cancelled after " + std::to_string(i) +
-                           " views; no truth.tsv written");
-    }
-    MarkerTruth t;
-    const cv::Mat image = scene.Render(i, &t);
-    ws = WriteImageAtomically((root / "views" / t.file).string(), image);
-    if (!ws) return ws;
-    truth.rows.push_back(t.ToRow());
-    if (progress) progress(i + 1, options.views);
-  }
-  return WriteTruthFile((root / "truth.tsv").string(), truth);
+  return WriteMarkerSceneFolder(
+      outdir, scene.Reference(), options.views,
+      [&scene](int i, MarkerTruth* t) { return scene.Render(i, t); }, std::move(truth), progress,
+      cancel);
 }
 
 }  // namespace armmimic::synth

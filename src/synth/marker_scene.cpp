@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
+#include <utility>
 
 #include <opencv2/imgproc.hpp>
 
@@ -327,14 +328,32 @@ cv::Mat MarkerSceneRenderer::Reference(MarkerTruth* truth) const {
   return image;
 }
 
-Status BeginMarkerSceneFolder(const std::string& outdir, const cv::Mat& reference) {
+Status WriteMarkerSceneFolder(const std::string& outdir, const cv::Mat& reference, int views,
+                              const std::function<cv::Mat(int, MarkerTruth*)>& render,
+                              TruthFile truth, const std::function<void(int, int)>& progress,
+                              const std::atomic<bool>* cancel) {
   std::error_code ec;
   const std::filesystem::path root(outdir);
   std::filesystem::create_directories(root / "views", ec);
   if (ec) return Status::Error(outdir + ": cannot create the folder: " + ec.message());
   std::filesystem::remove(root / "truth.tsv", ec);
   if (ec) return Status::Error(outdir + "/truth.tsv: cannot replace: " + ec.message());
-  return WriteImageAtomically((root / "reference.png").string(), reference);
+  Status ws = WriteImageAtomically((root / "reference.png").string(), reference);
+  if (!ws) return ws;
+  truth.extra_columns.assign(std::begin(kMarkerTruthExtra), std::end(kMarkerTruthExtra));
+  for (int i = 0; i < views; ++i) {
+    if (cancel && cancel->load()) {
+      return Status::Error(outdir + ": cancelled after " + std::to_string(i) +
+                           " views; no truth.tsv written");
+    }
+    MarkerTruth t;
+    const cv::Mat image = render(i, &t);
+    ws = WriteImageAtomically((root / "views" / t.file).string(), image);
+    if (!ws) return ws;
+    truth.rows.push_back(t.ToRow());
+    if (progress) progress(i + 1, views);
+  }
+  return WriteTruthFile((root / "truth.tsv").string(), truth);
 }
 
 Status WriteMarkerScene(const MarkerSceneOptions& options, const std::string& outdir,
@@ -342,10 +361,7 @@ Status WriteMarkerScene(const MarkerSceneOptions& options, const std::string& ou
                         const std::atomic<bool>* cancel) {
   const Status st = options.Check();
   if (!st) return st;
-  const std::filesystem::path root(outdir);
   const MarkerSceneRenderer scene(options);
-  Status ws = BeginMarkerSceneFolder(outdir, scene.Reference());
-  if (!ws) return ws;
   TruthFile truth;
   const MarkerJointModel& model = scene.model();
   truth.meta = {{"scene", "marker"},
@@ -364,20 +380,10 @@ Status WriteMarkerScene(const MarkerSceneOptions& options, const std::string& ou
                 {"pivot_distance_px", FormatNumber(model.pivot_distance_px, 3)},
                 {"reference", "reference.png"},
                 {"views", "views"}};
-  truth.extra_columns.assign(std::begin(kMarkerTruthExtra), std::end(kMarkerTruthExtra));
-  for (int i = 0; i < options.views; ++i) {
-    if (cancel && cancel->load()) {
-      return Status::Error(outdir + ": cancelled after " + std::to_string(i) +
-                           " views; no truth.tsv written");
-    }
-    MarkerTruth t;
-    const cv::Mat image = scene.Render(i, &t);
-    ws = WriteImageAtomically((root / "views" / t.file).string(), image);
-    if (!ws) return ws;
-    truth.rows.push_back(t.ToRow());
-    if (progress) progress(i + 1, options.views);
-  }
-  return WriteTruthFile((root / "truth.tsv").string(), truth);
+  return WriteMarkerSceneFolder(
+      outdir, scene.Reference(), options.views,
+      [&scene](int i, MarkerTruth* t) { return scene.Render(i, t); }, std::move(truth), progress,
+      cancel);
 }
 
 }  // namespace armmimic::synth

@@ -120,10 +120,15 @@ class MarkerSceneRenderer {
   std::unique_ptr<Impl> impl_;
 };
 
-// The start of a marker scene folder, for either renderer: OUTDIR/views exists, an old truth.tsv
-// is gone (it would describe views this run replaces, so until the new one is written, last,
-// the folder says it is not a whole scene) and OUTDIR/reference.png is `reference`.
-Status BeginMarkerSceneFolder(const std::string& outdir, const cv::Mat& reference);
+// A marker scene folder, for either renderer: OUTDIR/reference.png is `reference`,
+// OUTDIR/views/ holds the `views` images `render` draws (each names its file in its truth), and
+// OUTDIR/truth.tsv, written last, holds `truth`'s meta and one row a view. An old truth.tsv is
+// removed first: it would describe views this run replaces, so until the new one is written the
+// folder says it is not a whole scene. Cancelled: no truth.tsv.
+Status WriteMarkerSceneFolder(const std::string& outdir, const cv::Mat& reference, int views,
+                              const std::function<cv::Mat(int, MarkerTruth*)>& render,
+                              TruthFile truth, const std::function<void(int, int)>& progress,
+                              const std::atomic<bool>* cancel);
 
 // Writes reference.png, views/view_NNN.png and truth.tsv (with a `file` column) into `outdir`
 // (created if missing). Every file appears complete or not at all. An earlier truth.tsv is
