@@ -18,15 +18,6 @@ bool Contains(const std::string& text, const std::string& part) {
 
 const std::string& Scene() { return test::SmallScene(9, 30); }
 
-std::string Rows(const std::string& path) {
-  std::istringstream in(test::ReadFile(path));
-  std::string rows;
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line[0] != '#') rows += line + "\n";
-  }
-  return rows;
-}
-
 std::vector<std::string> BgsubFlags() { return test::SmallSceneBgsubFlags(Scene()); }
 
 TEST(CliParamsFrom, RepeatsTheRunRowForRowAndFlagsOverrideIt) {
@@ -53,15 +44,15 @@ TEST(CliParamsFrom, RepeatsTheRunRowForRowAndFlagsOverrideIt) {
   r = test::RunCli(
       {"-q", "analyze", video, "--params-from", dir.file("old.tsv"), "-o", dir.file("new.tsv")});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  ASSERT_FALSE(Rows(dir.file("old.tsv")).empty());
-  EXPECT_EQ(Rows(dir.file("new.tsv")), Rows(dir.file("old.tsv")));
+  ASSERT_FALSE(test::DataRows(dir.file("old.tsv")).empty());
+  EXPECT_EQ(test::DataRows(dir.file("new.tsv")), test::DataRows(dir.file("old.tsv")));
   EXPECT_EQ(test::ReadFile(dir.file("new.tsv")), test::ReadFile(dir.file("old.tsv")));
 
   // The defaults give other rows, so the replay did carry the settings.
   std::vector<std::string> plain = {"-q", "analyze", video, "-o", dir.file("plain.tsv")};
   for (const std::string& f : BgsubFlags()) plain.push_back(f);
   ASSERT_EQ(test::RunCli(plain).exit_code, 0);
-  EXPECT_NE(Rows(dir.file("plain.tsv")), Rows(dir.file("old.tsv")));
+  EXPECT_NE(test::DataRows(dir.file("plain.tsv")), test::DataRows(dir.file("old.tsv")));
 
   // A flag given as well wins; the other recorded settings stay.
   r = test::RunCli({"-q", "analyze", video, "--params-from", dir.file("old.tsv"), "-o",
@@ -155,7 +146,7 @@ TEST(CliBatch, OneFilePerVideoASummaryAndAFailureStopsNothing) {
   for (const std::string& f : BgsubFlags()) single.push_back(f);
   ASSERT_EQ(test::RunCli(single).exit_code, 0);
   EXPECT_EQ(test::ReadFile(dir.file("out/scene.tsv")), test::ReadFile(dir.file("single.tsv")));
-  EXPECT_EQ(Rows(dir.file("out/walk.tsv")), Rows(dir.file("single.tsv")));
+  EXPECT_EQ(test::DataRows(dir.file("out/walk.tsv")), test::DataRows(dir.file("single.tsv")));
   EXPECT_FALSE(std::filesystem::exists(dir.file("out/broken.tsv")));
 
   std::istringstream summary(test::ReadFile(dir.file("out/summary.tsv")));
@@ -211,7 +202,8 @@ TEST(CliBatch, TheSummaryEscapesNamesAndListsNoFileForAFailedVideo) {
     EXPECT_EQ(f[7], "ok") << lines[i + 1];
     const std::string stem = names[i].substr(0, names[i].size() - 4);
     EXPECT_EQ(UnescapeTsvField(f[1]), dir.file("out/" + stem + ".tsv"));
-    EXPECT_EQ(Rows(UnescapeTsvField(f[1])), Rows(dir.file("out/my take \xC3\xBC.tsv")));
+    EXPECT_EQ(test::DataRows(UnescapeTsvField(f[1])),
+              test::DataRows(dir.file("out/my take \xC3\xBC.tsv")));
   }
   EXPECT_EQ(SplitTabs(lines[1])[0], dir.file("my take \xC3\xBC.avi"))
       << "spaces and UTF-8 as they are";

@@ -22,15 +22,6 @@ bool Contains(const std::string& text, const std::string& part) {
 
 const std::string& Scene() { return test::SmallScene(9, 30); }
 
-std::string Rows(const std::string& path) {
-  std::istringstream in(test::ReadFile(path));
-  std::string rows;
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line[0] != '#') rows += line + "\n";
-  }
-  return rows;
-}
-
 // Runs armmimic-cli with `folder` as its working folder (the child inherits it).
 test::CliResult RunCliIn(const std::string& folder, const std::vector<std::string>& args) {
   const fs::path before = fs::current_path();
@@ -65,7 +56,7 @@ class CliParamsFromFolders : public ::testing::Test {
                       "--background", "background.png", "--arm-length", "armlength.png", "--start",
                       "10", "--standstill-frames", "10", "--threshold", "40"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    ASSERT_FALSE(Rows(x_ + "/out.tsv").empty());
+    ASSERT_FALSE(test::DataRows(x_ + "/out.tsv").empty());
   }
   test::TempDir dir_;
   std::string x_ = dir_.file("x");
@@ -91,7 +82,7 @@ TEST_F(CliParamsFromFolders, RepeatsFromAnotherFolderWithIdenticalRows) {
       elsewhere_,
       {"-q", "analyze", x_ + "/scene.avi", "--params-from", x_ + "/out.tsv", "-o", "again.tsv"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(Rows(elsewhere_ + "/again.tsv"), Rows(x_ + "/out.tsv"));
+  EXPECT_EQ(test::DataRows(elsewhere_ + "/again.tsv"), test::DataRows(x_ + "/out.tsv"));
   // Run again in the first folder, the header is the first run's, word for word.
   const test::CliResult same =
       RunCliIn(x_, {"-q", "analyze", "scene.avi", "--params-from", "out.tsv", "-o", "same.tsv"});
@@ -105,7 +96,7 @@ TEST_F(CliParamsFromFolders, AMovedFolderIsSearchedBesideTheOldFile) {
   test::CliResult r = RunCliIn(elsewhere_, {"-q", "analyze", moved + "/scene.avi", "--params-from",
                                             moved + "/out.tsv", "-o", "again.tsv"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(Rows(elsewhere_ + "/again.tsv"), Rows(moved + "/out.tsv"));
+  EXPECT_EQ(test::DataRows(elsewhere_ + "/again.tsv"), test::DataRows(moved + "/out.tsv"));
 
   // Found nowhere: the message names the old file, the recorded key and every path tried, and
   // no flag the user never typed.
@@ -129,7 +120,7 @@ TEST_F(CliParamsFromFolders, AMovedFolderIsSearchedBesideTheOldFile) {
   r = RunCliIn(elsewhere_, {"-q", "analyze", moved + "/scene.avi", "--params-from",
                             moved + "/out.tsv", "-o", "given.tsv", "--arm-length", "arm.png"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(Rows(elsewhere_ + "/given.tsv"), Rows(moved + "/out.tsv"));
+  EXPECT_EQ(test::DataRows(elsewhere_ + "/given.tsv"), test::DataRows(moved + "/out.tsv"));
 }
 
 TEST_F(CliParamsFromFolders, CrOnlyAndCrlfLineEndsRepeatTheRun) {
@@ -142,7 +133,7 @@ TEST_F(CliParamsFromFolders, CrOnlyAndCrlfLineEndsRepeatTheRun) {
         test::RunCli({"-q", "analyze", x_ + "/scene.avi", "--params-from",
                       dir_.file("converted.tsv"), "-o", dir_.file("again.tsv")});
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_EQ(Rows(dir_.file("again.tsv")), Rows(x_ + "/out.tsv"));
+    EXPECT_EQ(test::DataRows(dir_.file("again.tsv")), test::DataRows(x_ + "/out.tsv"));
   }
 }
 
@@ -154,7 +145,7 @@ TEST_F(CliParamsFromFolders, AnIncompleteRunRepeatsAsWell) {
   const test::CliResult r = test::RunCli({"-q", "analyze", x_ + "/scene.avi", "--params-from",
                                           dir_.file("cut.tsv"), "-o", dir_.file("again.tsv")});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(Rows(dir_.file("again.tsv")), Rows(x_ + "/out.tsv"));
+  EXPECT_EQ(test::DataRows(dir_.file("again.tsv")), test::DataRows(x_ + "/out.tsv"));
 }
 
 TEST_F(CliParamsFromFolders, DuplicateAndUnknownKeysAreRefusedNamingTheLine) {

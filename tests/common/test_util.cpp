@@ -298,6 +298,15 @@ std::string ReadFile(const std::string& path) {
   return ss.str();
 }
 
+std::string DataRows(const std::string& path) {
+  std::istringstream in(ReadFile(path));
+  std::string rows;
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line[0] != '#') rows += line + "\n";
+  }
+  return rows;
+}
+
 void WriteFile(const std::string& path, const std::string& bytes) {
   std::ofstream out(path, std::ios::binary);
   out << bytes;

@@ -118,6 +118,9 @@ class CommaDecimalLocale {
 };
 
 std::string ReadFile(const std::string& path);
+// The lines of an angle file (or any text file) that are not '#' comments, each ending in "\n":
+// its rows, to compare two runs whose headers may differ.
+std::string DataRows(const std::string& path);
 void WriteFile(const std::string& path, const std::string& bytes);
 std::string SourcePath(const std::string& relative);  // path inside the source tree
 
