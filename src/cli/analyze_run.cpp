@@ -211,21 +211,7 @@ Status ReadVideoList(const std::string& path, std::vector<std::string>* videos) 
   std::string line;
   int line_no = 0;
   videos->clear();
-  // A line ends at LF, CRLF or a CR alone (as old Mac editors end lines).
-  const auto next_line = [&in](std::string* out) {
-    out->clear();
-    int c = in.get();
-    if (c == EOF) return false;
-    for (; c != EOF && c != '\n'; c = in.get()) {
-      if (c == '\r') {
-        if (in.peek() == '\n') in.get();
-        break;
-      }
-      *out += static_cast<char>(c);
-    }
-    return true;
-  };
-  while (next_line(&line)) {
+  while (ReadTextLine(in, &line)) {  // LF, CRLF or a CR alone
     if (++line_no == 1) StripUtf8Bom(&line);
     const std::string entry = Trim(line);
     if (entry.empty() || entry[0] == '#') continue;

@@ -99,24 +99,9 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
   bool seen_meta = false;
   std::size_t signed_yaw_index = 0;
   while (true) {
-    line.clear();
-    // Bounded getline: never holds more than kMaxAngleLineLength + 1 characters of one line.
-    bool got_any = false;
+    // Bounded: never holds more than kMaxAngleLineLength + 1 characters of one line.
     bool too_long = false;
-    for (int c = in.get(); c != EOF; c = in.get()) {
-      got_any = true;
-      if (c == '\n') break;
-      if (c == '\r') {  // CRLF, or a CR alone as old Mac editors end lines
-        if (in.peek() == '\n') in.get();
-        break;
-      }
-      if (line.size() > kMaxAngleLineLength) {
-        too_long = true;
-        continue;
-      }
-      line += static_cast<char>(c);
-    }
-    if (!got_any) break;
+    if (!ReadTextLine(in, &line, kMaxAngleLineLength, &too_long)) break;
     ++line_no;
     if (too_long || line.size() > kMaxAngleLineLength) {
       return err(line_no,

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <istream>
 #include <limits>
 #include <system_error>
 
@@ -184,5 +185,24 @@ std::string UnescapeTsvField(const std::string& field) {
 }
 
 std::string ErrnoText(int err) { return std::generic_category().message(err); }
+
+bool ReadTextLine(std::istream& in, std::string* line, std::size_t max_length, bool* too_long) {
+  line->clear();
+  bool got_any = false;
+  for (int c = in.get(); c != std::char_traits<char>::eof(); c = in.get()) {
+    got_any = true;
+    if (c == '\n') break;
+    if (c == '\r') {
+      if (in.peek() == '\n') in.get();
+      break;
+    }
+    if (line->size() > max_length) {
+      if (too_long) *too_long = true;
+      continue;
+    }
+    *line += static_cast<char>(c);
+  }
+  return got_any;
+}
 
 }  // namespace armmimic

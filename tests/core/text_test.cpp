@@ -2,6 +2,8 @@
 // summary's fields.
 #include "armmimic/core/text.h"
 
+#include <sstream>
+
 #include <gtest/gtest.h>
 
 namespace armmimic {
@@ -30,6 +32,22 @@ TEST(TsvField, EscapesOnlyWhatWouldBreakALineOrAField) {
   }
   // A backslash before anything else is left as it is.
   EXPECT_EQ(UnescapeTsvField("a\\qb\\"), "a\\qb\\");
+}
+
+TEST(ReadTextLine, EndsALineAtLfCrlfOrACrAloneAndBoundsItsLength) {
+  std::istringstream in("a\nbb\r\ncc\rd\r\n0123456789\nlast");
+  std::string line;
+  std::vector<std::string> lines;
+  while (ReadTextLine(in, &line)) lines.push_back(line);
+  EXPECT_EQ(lines, (std::vector<std::string>{"a", "bb", "cc", "d", "0123456789", "last"}));
+  std::istringstream bounded("0123456789\nok\n");
+  bool too_long = false;
+  ASSERT_TRUE(ReadTextLine(bounded, &line, 4, &too_long));
+  EXPECT_TRUE(too_long);
+  EXPECT_EQ(line, "01234");  // the first max_length + 1 characters; the rest read past
+  ASSERT_TRUE(ReadTextLine(bounded, &line, 4, &too_long));
+  EXPECT_EQ(line, "ok");
+  EXPECT_FALSE(ReadTextLine(bounded, &line));
 }
 
 }  // namespace

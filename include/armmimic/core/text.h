@@ -3,7 +3,9 @@
 // and the percent-encoding of meta values.
 #pragma once
 
+#include <cstddef>
 #include <initializer_list>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,12 @@ bool ParseFiniteDouble(const std::string& text, double* out);
 // Removes a UTF-8 byte order mark (EF BB BF) at the start of `line`, as a spreadsheet or an
 // editor on Windows writes one at the start of a file. Every reader calls it on its first line.
 void StripUtf8Bom(std::string* line);
+// Reads one line of `in` into `*line`. A line ends at LF, CRLF or a CR alone (as old Mac editors
+// end lines); the end is not kept. false when the input has no more characters. A line longer
+// than `max_length` keeps only its first max_length + 1 characters, the rest is read past, and
+// `*too_long` is set (it is never cleared).
+bool ReadTextLine(std::istream& in, std::string* line, std::size_t max_length = std::string::npos,
+                  bool* too_long = nullptr);
 
 // Removes spaces, tabs and CRs at both ends.
 std::string Trim(const std::string& text);
