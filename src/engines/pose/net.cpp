@@ -7,6 +7,8 @@
 #include <map>
 #include <set>
 
+#include "pose/depthwise_layer.h"
+
 namespace armmimic::internal {
 namespace {
 
@@ -160,6 +162,13 @@ class Builder {
       if (!st) return st;
       p.blobs.push_back(cv::Mat(1, cout, CV_32F, const_cast<float*>(bias->values.data())).clone());
     }
+    if (depthwise && m == 1 && p.get<int>("stride_h") == 1 && p.get<int>("stride_w") == 1 &&
+        p.get<int>("dilation_h") == 1 && p.get<int>("dilation_w") == 1) {
+      // One kernel per channel, stride 1: armmimic's own layer, the activation in its pass.
+      p.set("activation", activation);
+      refs_[n.name] = {AddLayer(n.name, kDepthwiseLayerType, p, {*x}), 0, cout};
+      return Status::Ok();
+    }
     const std::string conv_name = activation.empty() ? n.name : n.name + "/conv";
     Ref out{AddLayer(conv_name, "Convolution", p, {*x}), 0, cout};
     if (!activation.empty()) out = AddActivation(n.name, activation, out);
@@ -269,6 +278,7 @@ class Builder {
 Status BuildTfjsNet(const TfjsGraph& graph, const std::string& input_node,
                     const std::vector<std::string>& output_nodes, cv::dnn::Net* net) {
   *net = cv::dnn::Net();
+  RegisterDepthwiseLayer();
   try {
     return Builder(graph, net).Build(input_node, output_nodes);
   } catch (const cv::Exception& e) {
