@@ -22,6 +22,15 @@ double TorsoPx(const PoseKeypoints& k, double min_score) {
                   (k.px[kLeftHip] + k.px[kRightHip]) * 0.5);
 }
 
+// A person facing the camera, as the operator does, has their left shoulder on the image's right.
+// Both shoulders seen the other way round say that the network's left and right are not the
+// person's: they face away, or (on figures the network reads badly) it put the named arm's
+// joints on the other arm. Either way the row would name the wrong arm.
+bool Mirrored(const PoseKeypoints& k, double min_score) {
+  return k.score[kLeftShoulder] >= min_score && k.score[kRightShoulder] >= min_score &&
+         k.px[kLeftShoulder].x <= k.px[kRightShoulder].x;
+}
+
 }  // namespace
 
 double PoseLengthGate::P90(std::vector<double> v) {
@@ -61,6 +70,10 @@ void PoseArmGate::Decide(const PoseLooks& looks, PoseSide side, ArmMeasurement* 
   m->phase = MeasurementPhase::kLost;
   if (arm.score < o_.min_score) {
     m->note = "arm not seen (score " + FormatNumber(arm.score, 2) + ")";
+    return;
+  }
+  if (Mirrored(k, o_.min_score)) {
+    m->note = "the shoulders are mirrored: the person faces away, or the network swapped the arms";
     return;
   }
   const double torso = TorsoPx(k, o_.crop_score);

@@ -4,8 +4,9 @@
 //    (shoulders' centre to hips' centre) when the torso is seen, so walking towards or away from
 //    the camera changes nothing; in pixels otherwise. The usual length is the 90th percentile of
 //    the lengths seen so far (the last kWindow frames), never less than an anthropometric floor.
-//  - PoseArmGate: one arm's row from a frame's looks: lost when a joint is not seen, a segment
-//    points at the camera, or the looks disagree on a segment's direction.
+//  - PoseArmGate: one arm's row from a frame's looks: lost when a joint is not seen, the
+//    shoulders are mirrored (the network's left is not the person's), a segment points at the
+//    camera, or the looks disagree on a segment's direction.
 #pragma once
 
 #include <vector>

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "armmimic/core/angles.h"
 
 namespace armmimic::internal {
@@ -55,6 +57,29 @@ TEST(PoseGateTest, AgreeingLooksGiveTheArmsDirections) {
   EXPECT_NEAR(m.bend_deg, 45, 1e-6);
   EXPECT_DOUBLE_EQ(m.confidence, 0.9);
   ASSERT_EQ(m.pose_keypoints.size(), static_cast<std::size_t>(kPoseKeypointCount));
+}
+
+TEST(PoseGateTest, MirroredShouldersMakeTheRowLostUnlessOneIsUnseen) {
+  // The named arm's joints put on the other side of the body: its shoulder on the image's left
+  // of the other shoulder, as for a person facing away.
+  PoseKeypoints k = Person();
+  std::swap(k.px[kLeftShoulder], k.px[kRightShoulder]);
+  std::swap(k.px[kLeftElbow], k.px[kRightElbow]);
+  std::swap(k.px[kLeftWrist], k.px[kRightWrist]);
+  PoseArmGate gate{PoseOptions()};
+  PoseLooks looks;
+  looks.body = k;
+  ArmMeasurement m = Decide(&gate, looks);
+  EXPECT_EQ(m.phase, MeasurementPhase::kLost);
+  EXPECT_EQ(m.note,
+            "the shoulders are mirrored: the person faces away, or the network swapped the arms");
+  // With the other shoulder unseen there is nothing to compare: the row is decided as before.
+  looks.body.score[kRightShoulder] = 0.1;
+  m = Decide(&gate, looks);
+  EXPECT_EQ(m.phase, MeasurementPhase::kOk) << m.note;
+  // Shoulders the right way round (the facing person) stay ok.
+  looks.body = Person();
+  EXPECT_EQ(Decide(&gate, looks).phase, MeasurementPhase::kOk);
 }
 
 TEST(PoseGateTest, AMirroredLookThatDisagreesMakesTheRowLost) {
