@@ -16,7 +16,7 @@ const std::map<std::string, std::set<EngineKind>>& AnalysisFlags::EngineFlags() 
   static const std::map<std::string, std::set<EngineKind>> flags = {
       {"--background", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--background-frames", {EngineKind::kBgsub, EngineKind::kLk}},
-      {"--arm-length", {EngineKind::kBgsub}},
+      {"--arm-length", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--start", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kPose}},
       {"--standstill-frames", {EngineKind::kBgsub, EngineKind::kLk}},
       {"--threshold", {EngineKind::kBgsub}},
@@ -78,7 +78,8 @@ void AnalysisFlags::Register(ArgParser& p) {
   p.Int("--background-frames", &f.background_frames, "K",
         "bgsub/lk: estimate the background from frames [0, K) of the video", 1, 1000000);
   p.String("--arm-length", &f.arm_length_path, "ARM.png",
-           "bgsub: straight horizontal arm at zero yaw (gives b)");
+           "bgsub: straight horizontal arm at zero yaw (gives b); lk: with the standstill, "
+           "gives the joints");
   p.Int("--start", &f.start, "F",
         "bgsub/lk: first standstill frame; pose: first frame (default 0; a camera or stream "
         "drops F frames)",

@@ -231,7 +231,7 @@ void EngineSettingsPanel::updateEnabled() {
   bg_mode_->setEnabled(background);
   background_row_->setEnabled(background && bg_mode_->currentIndex() == kBgImage);
   bg_frames_->setEnabled(background && bg_mode_->currentIndex() == kBgFrames);
-  arm_length_row_->setEnabled(kind == EngineKind::kBgsub);
+  arm_length_row_->setEnabled(kind == EngineKind::kBgsub || kind == EngineKind::kLk);
   reference_row_->setEnabled(marker);
   start_->setEnabled(!marker);
   shoulder_box_->setEnabled(!marker && kind != EngineKind::kPose);
@@ -261,7 +261,9 @@ AnalysisOptions EngineSettingsPanel::options() const {
   if (bg_mode_->currentIndex() == kBgFrames) {
     o.background_frames = bg_frames_->value();
   }
-  if (o.engine.kind == EngineKind::kBgsub) o.arm_length_path = arm_length_->text().toStdString();
+  if (o.engine.kind == EngineKind::kBgsub || o.engine.kind == EngineKind::kLk) {
+    o.arm_length_path = arm_length_->text().toStdString();
+  }
   o.start = start_->value();
   if (o.engine.kind == EngineKind::kPose) {
     o.background_path.clear();

@@ -14,6 +14,7 @@
 #include "armmimic/core/angle_file.h"
 #include "common/arm_gate.h"
 #include "common/engine_internal.h"
+#include "common/standstill_calibration.h"
 #include "lk/body_box.h"
 #include "lk/tracker.h"
 
@@ -60,6 +61,16 @@ class LkEngine : public Engine {
                              " but the video is " + SizeText(frame_size_));
       }
       background_ = context.background(roi_).clone();
+    }
+    arm_length_.release();
+    calibrated_ = false;
+    if (!context.arm_length.empty()) {
+      if (context.arm_length.size() != frame_size_ || context.arm_length.type() != CV_8UC3) {
+        return Status::Error("analysis.arm_length",
+                             "lk: the arm-length image is " + SizeText(context.arm_length.size()) +
+                                 " but the video is " + SizeText(frame_size_));
+      }
+      arm_length_ = context.arm_length(roi_).clone();
     }
     shoulder_given_.reset();
     if (context.shoulder_px) {
@@ -154,9 +165,10 @@ class LkEngine : public Engine {
             {"standstill_frames", std::to_string(o_.standstill_frames)},
             {"initial_upper", FormatNumber(o_.initial_upper_deg, 2)},
             {"initial_fore", FormatNumber(o_.initial_fore_deg, 2)},
-            {"calibration", upper_length_px_ > 0 ? "joints"
-                            : shoulder_given_    ? "shoulder"
-                                                 : "standstill"},
+            {"calibration", !arm_length_.empty() && !shoulder_given_ ? "standstill+arm_length"
+                            : upper_length_px_ > 0                   ? "joints"
+                            : shoulder_given_                        ? "shoulder"
+                                                                     : "standstill"},
             {"side", LkArmSideName(o_.side)},
             {"quality", FormatNumber(o_.quality_level, 4)},
             {"min_distance", FormatNumber(o_.min_distance_px, 2)},
@@ -178,6 +190,7 @@ class LkEngine : public Engine {
     cv::Mat mean;
     sum_.convertTo(mean, CV_8UC3, 1.0 / standstill_count_);
     sum_.release();
+    if (!arm_length_.empty()) return Calibrated(mean, view, gray, m);
     const lk::BodyBox body = lk::FindBodyBox(background_, mean, o_);
     if (!body.found) {
       state_ = State::kFailed;
@@ -213,6 +226,43 @@ class LkEngine : public Engine {
 
     start.head_limit_y = body.left_shoulder.y - 0.05 * body.box.height;
     tracker_->Start(start);
+    state_ = State::kTracking;
+    return m;
+  }
+
+  // With the arm-length image: the joints from the standstill (common/standstill_calibration.h),
+  // then the model tracker as with clicked joints, started on this last standstill frame.
+  ArmMeasurement Calibrated(const cv::Mat& mean, const cv::Mat& view, const cv::Mat& gray,
+                            ArmMeasurement& m) {
+    const int side = o_.side == LkArmSide::kLeft ? -1 : o_.side == LkArmSide::kRight ? 1 : 0;
+    const StandstillCalibration cal = CalibrateFromStandstill(
+        background_, mean, arm_length_, o_.body_threshold, side, o_.upper_fraction);
+    if (!cal.ok) {
+      state_ = State::kFailed;
+      failure_ = "lk: cannot calibrate from the standstill: " + cal.note;
+      m.note = failure_;
+      m.estimate = failure_;
+      return m;
+    }
+    o_.initial_upper_deg = DirectionDeg(cal.shoulder, cal.elbow);
+    o_.initial_fore_deg = DirectionDeg(cal.elbow, cal.wrist);
+    o_.side = cal.side > 0 ? LkArmSide::kRight : LkArmSide::kLeft;
+    upper_length_px_ = cv::norm(cal.elbow - cal.shoulder);
+    fore_length_px_ = cv::norm(cal.wrist - cal.elbow);
+    calibrated_ = true;
+    tracker_ = lk::CreateModelTracker(o_);
+    tracker_->SetTime(m.time_s);
+    lk::TrackerStart start;
+    start.gray = gray;
+    start.bgr = view;
+    start.shoulders = {cal.shoulder};
+    start.shoulder_fixed = true;
+    start.arm_length_px = upper_length_px_ + fore_length_px_;
+    tracker_->Start(start);
+    m.estimate = "lk: " + cal.Describe(cv::Point2d(roi_.tl()));
+    m.shoulder_px = cal.shoulder + cv::Point2d(roi_.tl());
+    m.elbow_px = cal.elbow + cv::Point2d(roi_.tl());
+    m.wrist_px = cal.wrist + cv::Point2d(roi_.tl());
     state_ = State::kTracking;
     return m;
   }
@@ -260,6 +310,8 @@ class LkEngine : public Engine {
   cv::Size frame_size_;
   cv::Rect roi_;
   cv::Mat background_;
+  cv::Mat arm_length_;       // the arm-length image's region; empty when not given
+  bool calibrated_ = false;  // the joints came from the standstill and the arm-length image
   std::optional<cv::Point2d> shoulder_given_;
   double upper_length_px_ = 0, fore_length_px_ = 0;  // clicked; 0 when not given
   State state_ = State::kStandstill;

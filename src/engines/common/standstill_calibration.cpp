@@ -1,0 +1,319 @@
+// The arm's joints from the standstill and the arm-length image (common/standstill_calibration.h).
+// Length: CalibrateFromStandstill is the calibration's steps in order (body, straight arm, side,
+// width, shoulder, hanging direction, joints), each a few lines over the same masks.
+#include "common/standstill_calibration.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <opencv2/imgproc.hpp>
+
+#include "armmimic/core/angle_file.h"
+
+namespace armmimic {
+namespace {
+
+// Anthropometric segment lengths as shares of body height: upper arm, forearm, hand. Only their
+// ratio is used: shoulder to wrist over shoulder to fingertip.
+constexpr double kUpperShare = 0.186, kForeShare = 0.146, kHandShare = 0.108;
+constexpr double kWristOfReach =
+    (kUpperShare + kForeShare) / (kUpperShare + kForeShare + kHandShare);
+// The straight arm's thickness: this quantile of its columns' heights (a part hidden in front of
+// something of its own colour shows thinner, never thicker); columns at least kFullShare of it
+// give the axis row; its band holds the rows at least kBandShare as full as the fullest.
+constexpr double kThickQuantile = 0.8, kFullShare = 0.75, kBandShare = 0.3;
+// A region of the standstill's difference this many times smaller than the torso is a speck.
+constexpr int kBodyPartShare = 25;
+// A hanging arm fitted further than this from straight down is not believed (the protocol asks
+// for the arm to hang); the search for its edge leans out as far.
+constexpr double kMaxHangFromDownDeg = 35;
+constexpr int kMinHangingRows = 5;
+
+cv::Mat Differs(const cv::Mat& a, const cv::Mat& b, int threshold) {
+  cv::Mat diff;
+  cv::absdiff(a, b, diff);
+  std::vector<cv::Mat> channels;
+  cv::split(diff, channels);
+  cv::Mat largest = channels[0];
+  for (std::size_t c = 1; c < channels.size(); ++c) cv::max(largest, channels[c], largest);
+  return largest > threshold;
+}
+
+struct Part {
+  int label = 0, area = 0;
+  cv::Rect box;
+};
+
+std::vector<Part> Parts(const cv::Mat& mask, cv::Mat* labels) {
+  cv::Mat stats, centroids;
+  const int n = cv::connectedComponentsWithStats(mask, *labels, stats, centroids, 8, CV_32S);
+  std::vector<Part> parts;
+  for (int i = 1; i < n; ++i) {
+    parts.push_back(
+        {i, stats.at<int>(i, cv::CC_STAT_AREA),
+         cv::Rect(stats.at<int>(i, cv::CC_STAT_LEFT), stats.at<int>(i, cv::CC_STAT_TOP),
+                  stats.at<int>(i, cv::CC_STAT_WIDTH), stats.at<int>(i, cv::CC_STAT_HEIGHT))});
+  }
+  return parts;
+}
+
+const Part* Largest(const std::vector<Part>& parts) {
+  const Part* best = nullptr;
+  for (const Part& p : parts) {
+    if (!best || p.area > best->area) best = &p;
+  }
+  return best;
+}
+
+double Quantile(std::vector<double> v, double q) {
+  if (v.empty()) return kNaN;
+  auto at = v.begin() + static_cast<std::ptrdiff_t>(std::lround(q * (v.size() - 1)));
+  std::nth_element(v.begin(), at, v.end());
+  return *at;
+}
+
+void Open3(cv::Mat* mask) {
+  cv::morphologyEx(*mask, *mask, cv::MORPH_OPEN, cv::Mat::ones(3, 3, CV_8UC1));
+}
+
+// The standing body: the largest region of the standstill's difference from the empty room, with
+// every sizeable region beside it (the head, a hanging arm a gap of wall away).
+bool FindBody(const cv::Mat& background, const cv::Mat& standstill, int threshold, cv::Mat* body,
+              cv::Rect* box) {
+  cv::Mat person = Differs(standstill, background, threshold), labels;
+  Open3(&person);
+  const std::vector<Part> parts = Parts(person, &labels);
+  const Part* main = Largest(parts);
+  if (!main || main->area < 0.005 * static_cast<double>(person.total())) return false;
+  *body = cv::Mat::zeros(person.size(), CV_8UC1);
+  for (const Part& p : parts) {
+    if (p.label == main->label || p.area >= std::max(16, main->area / kBodyPartShare)) {
+      body->setTo(255, labels == p.label);
+    }
+  }
+  cv::morphologyEx(*body, *body, cv::MORPH_CLOSE, cv::Mat::ones(5, 5, CV_8UC1));
+  *box = main->box;
+  return true;
+}
+
+// The straight arm of the arm-length image: the largest region outside the standing body that
+// differs from both the empty room and the standstill, with the pieces in line with it (an arm
+// broken where it crosses something of its own colour). `band`: its rows, around the fullest.
+bool FindStraightArm(const cv::Mat& background, const cv::Mat& standstill,
+                     const cv::Mat& arm_length, int threshold, const cv::Mat& body, cv::Mat* arm,
+                     cv::Rect* band) {
+  cv::Mat both = Differs(arm_length, background, threshold) &
+                 Differs(arm_length, standstill, threshold),
+          labels;
+  both.setTo(0, body);
+  Open3(&both);
+  const std::vector<Part> parts = Parts(both, &labels);
+  const Part* main = Largest(parts);
+  if (!main) return false;
+  *arm = labels == main->label;
+  std::vector<int> counts(static_cast<std::size_t>(main->box.height));
+  for (int y = 0; y < main->box.height; ++y) {
+    counts[static_cast<std::size_t>(y)] =
+        cv::countNonZero((*arm)(cv::Rect(main->box.x, main->box.y + y, main->box.width, 1)));
+  }
+  const auto full = std::max_element(counts.begin(), counts.end());
+  const int floor = static_cast<int>(std::ceil(kBandShare * *full));
+  int top = static_cast<int>(full - counts.begin()), bottom = top;
+  while (top > 0 && counts[static_cast<std::size_t>(top - 1)] >= floor) --top;
+  while (bottom + 1 < main->box.height && counts[static_cast<std::size_t>(bottom + 1)] >= floor) {
+    ++bottom;
+  }
+  const cv::Rect rows(main->box.x, main->box.y + top, main->box.width, bottom - top + 1);
+  *band = rows;
+  for (const Part& p : parts) {
+    const double cy = p.box.y + 0.5 * p.box.height;
+    const int gap = std::max(p.box.x - (band->x + band->width), band->x - (p.box.x + p.box.width));
+    if (p.label == main->label || p.area < std::max(8, main->area / 20) || cy < rows.y ||
+        cy > rows.y + rows.height || p.box.height > 1.5 * rows.height + 2 ||
+        gap > band->width / 2) {
+      continue;
+    }
+    arm->setTo(255, labels == p.label);
+    *band |= cv::Rect(p.box.x, rows.y, p.box.width, rows.height);
+  }
+  return true;
+}
+
+// The standing body's outer edge in row y on the arm's side: the first body pixel met going from
+// `outer` towards the body's centre column; nan when the row has none.
+double OuterEdge(const cv::Mat& body, int y, int outer, int centre, int side) {
+  if (y < 0 || y >= body.rows) return kNaN;
+  const uchar* row = body.ptr<uchar>(y);
+  for (int x = outer; x != centre; x -= side) {
+    if (x >= 0 && x < body.cols && row[x]) return x;
+  }
+  return kNaN;
+}
+
+// x = a + b (y - y0) through `points`: b the median of the pairwise slopes, a the median
+// intercept (Theil-Sen: a row that meets something else moves neither).
+void FitAxis(const std::vector<cv::Point2d>& points, double y0, double* a, double* b) {
+  std::vector<double> slopes, intercepts;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (std::size_t j = i + 1; j < points.size(); ++j) {
+      if (points[j].y != points[i].y) {
+        slopes.push_back((points[j].x - points[i].x) / (points[j].y - points[i].y));
+      }
+    }
+  }
+  *b = Quantile(slopes, 0.5);
+  for (const cv::Point2d& p : points) intercepts.push_back(p.x - *b * (p.y - y0));
+  *a = Quantile(intercepts, 0.5);
+}
+
+}  // namespace
+
+std::string StandstillCalibration::Describe(const cv::Point2d& offset) const {
+  auto xy = [&offset](const cv::Point2d& p) {
+    return FormatNumber(p.x + offset.x, 0) + "," + FormatNumber(p.y + offset.y, 0);
+  };
+  return std::string(
+             "calibrated from the standstill and the arm-length image: the arm on the "
+             "image's ") +
+         (side > 0 ? "right" : "left") + ", shoulder " + xy(shoulder) + ", elbow " + xy(elbow) +
+         ", wrist " + xy(wrist) + "; hanging at " + FormatNumber(hanging_deg, 0) + " deg (" +
+         (hanging_rows > 0 ? "fitted on " + std::to_string(hanging_rows) + " rows"
+                           : std::string("straight down assumed")) +
+         "), reach " + FormatNumber(reach_px, 0) + " px, width " +
+         FormatNumber(2 * half_width_px, 0) + " px";
+}
+
+StandstillCalibration CalibrateFromStandstill(const cv::Mat& background, const cv::Mat& standstill,
+                                              const cv::Mat& arm_length, int threshold, int side,
+                                              double upper_fraction) {
+  StandstillCalibration cal;
+  if (background.empty() || standstill.empty() || arm_length.empty() ||
+      background.size() != standstill.size() || arm_length.size() != standstill.size()) {
+    cal.note = "needs the background, the standstill and the arm-length image, of one size";
+    return cal;
+  }
+  cv::Mat body, arm;
+  cv::Rect body_box, band;
+  if (!FindBody(background, standstill, threshold, &body, &body_box)) {
+    cal.note = "no person in the standstill: it does not differ from the background";
+    return cal;
+  }
+  if (!FindStraightArm(background, standstill, arm_length, threshold, body, &arm, &band)) {
+    cal.note = "the arm-length image: no arm differs from the standstill";
+    return cal;
+  }
+  const cv::Moments mo = cv::moments(arm(band), true);
+  const double arm_cx = band.x + (mo.m00 > 0 ? mo.m10 / mo.m00 : 0.5 * band.width);
+  const int centre = body_box.x + body_box.width / 2;
+  cal.side = arm_cx >= centre ? 1 : -1;
+  if (side != 0 && side != cal.side) {
+    cal.note = std::string("the arm-length image's straight arm is on the image's ") +
+               (cal.side > 0 ? "right" : "left") + ", not on the side named";
+    return cal;
+  }
+  // The straight arm's columns, inner end (towards the body) first.
+  struct Column {
+    int x, count, top, bottom;
+  };
+  std::vector<Column> cols;
+  for (int x = band.x; x < band.x + band.width; ++x) {
+    Column c{x, 0, band.y + band.height, band.y - 1};
+    for (int y = band.y; y < band.y + band.height; ++y) {
+      if (!arm.at<uchar>(y, x)) continue;
+      ++c.count;
+      c.top = std::min(c.top, y);
+      c.bottom = std::max(c.bottom, y);
+    }
+    if (c.count > 0) cols.push_back(c);
+  }
+  if (cols.size() < 4) {
+    cal.note = "the arm-length image: the straight arm is too small";
+    return cal;
+  }
+  if (cal.side < 0) std::reverse(cols.begin(), cols.end());
+  std::vector<double> heights, mids;
+  for (const Column& c : cols) heights.push_back(c.count);
+  const double thick = Quantile(heights, kThickQuantile);
+  for (const Column& c : cols) {
+    if (c.count >= kFullShare * thick) mids.push_back(0.5 * (c.top + c.bottom));
+  }
+  const double r = std::max(1.0, 0.5 * thick);
+  cal.half_width_px = r;
+  const double shoulder_y = Quantile(mids, 0.5);
+  const int inner = cols.front().x;
+  const double first_reach = cal.side * (cols.back().x - inner) + 1;
+  // The hanging upper arm: where the standstill shows the person but the arm-length image shows
+  // the empty room again (the arm has left), from two radii below the shoulder down to the
+  // elbow's expected height. Its axis in each row is the middle of that region near the straight
+  // arm's inner end (the search leans out as far as an arm may hang); a row where less than an
+  // arm radius of it shows (the arm in front of something of its own colour) gives none.
+  const cv::Mat left_empty = Differs(standstill, background, threshold) &
+                             Differs(standstill, arm_length, threshold) &
+                             ~Differs(arm_length, background, threshold);
+  const double lean = std::tan(kMaxHangFromDownDeg * M_PI / 180);
+  const int y0 = static_cast<int>(std::lround(shoulder_y + 2 * r));
+  const int y1 = static_cast<int>(
+      std::lround(shoulder_y + upper_fraction * kWristOfReach * (first_reach + r)));
+  std::vector<cv::Point2d> axis;
+  for (int y = std::max(0, y0); y <= std::min(left_empty.rows - 1, y1); ++y) {
+    const double reach_out = lean * (y - shoulder_y);
+    const int from = static_cast<int>(std::lround(inner - cal.side * (4 * r + reach_out)));
+    const int to = static_cast<int>(std::lround(inner + cal.side * (2 * r + reach_out)));
+    int lo = left_empty.cols, hi = -1, count = 0;
+    for (int x = std::max(0, std::min(from, to));
+         x <= std::min(left_empty.cols - 1, std::max(from, to)); ++x) {
+      if (!left_empty.at<uchar>(y, x)) continue;
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+      ++count;
+    }
+    if (count >= r) axis.emplace_back(0.5 * (lo + hi), y);
+  }
+  // Without enough of that (the arm in front of something of its own colour in the empty room,
+  // or of the torso), the standing body's outer edge one radius in, down to the wrist's
+  // expected height.
+  if (static_cast<int>(axis.size()) < kMinHangingRows) {
+    axis.clear();
+    const int last = static_cast<int>(std::lround(shoulder_y + kWristOfReach * (first_reach + r)));
+    for (int y = std::max(0, y0); y <= std::min(body.rows - 1, last); ++y) {
+      const int outer =
+          inner + cal.side * static_cast<int>(std::lround(3 * r + 2 + lean * (y - shoulder_y)));
+      const double edge = OuterEdge(body, y, outer, centre, cal.side);
+      if (std::isfinite(edge)) axis.emplace_back(edge - cal.side * r, y);
+    }
+  }
+  // Where the straight arm leaves the hanging one: one arm radius inside its inner end.
+  double shoulder_x = inner - cal.side * r;
+  cal.hanging_deg = -90;
+  if (static_cast<int>(axis.size()) >= kMinHangingRows) {
+    double a = 0, b = 0;
+    FitAxis(axis, shoulder_y, &a, &b);
+    const double deg = DirectionDeg(cv::Point2d(0, 0), cv::Point2d(b, 1));
+    if (std::abs(deg + 90) <= kMaxHangFromDownDeg) {
+      cal.hanging_deg = deg;
+      cal.hanging_rows = static_cast<int>(axis.size());
+      shoulder_x = a;
+    }
+  }
+  cal.shoulder = cv::Point2d(shoulder_x, shoulder_y);
+  cal.reach_px = cal.side * (cols.back().x - shoulder_x) + 0.5;
+  if (!(cal.reach_px > 4 * r)) {
+    cal.note = "the arm-length image: the straight arm is shorter than it is thick";
+    return cal;
+  }
+  const double a = cal.hanging_deg * M_PI / 180;
+  const cv::Point2d dir(std::cos(a), -std::sin(a));
+  const double to_wrist = kWristOfReach * cal.reach_px;
+  cal.elbow = cal.shoulder + upper_fraction * to_wrist * dir;
+  cal.wrist = cal.shoulder + to_wrist * dir;
+  const cv::Rect2d image(0, 0, standstill.cols, standstill.rows);
+  if (!image.contains(cal.shoulder) || !image.contains(cal.elbow) || !image.contains(cal.wrist)) {
+    cal.note = "the estimated hanging arm leaves the image";
+    return cal;
+  }
+  cal.ok = true;
+  return cal;
+}
+
+}  // namespace armmimic
