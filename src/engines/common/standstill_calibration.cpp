@@ -29,6 +29,7 @@ constexpr int kBodyPartShare = 25;
 // for the arm to hang); the search for its edge leans out as far.
 constexpr double kMaxHangFromDownDeg = 35;
 constexpr int kMinHangingRows = 5;
+constexpr double kHangingShare = 0.5;
 
 cv::Mat Differs(const cv::Mat& a, const cv::Mat& b, int threshold) {
   cv::Mat diff;
@@ -138,17 +139,6 @@ bool FindStraightArm(const cv::Mat& background, const cv::Mat& standstill,
     *band |= cv::Rect(p.box.x, rows.y, p.box.width, rows.height);
   }
   return true;
-}
-
-// The standing body's outer edge in row y on the arm's side: the first body pixel met going from
-// `outer` towards the body's centre column; nan when the row has none.
-double OuterEdge(const cv::Mat& body, int y, int outer, int centre, int side) {
-  if (y < 0 || y >= body.rows) return kNaN;
-  const uchar* row = body.ptr<uchar>(y);
-  for (int x = outer; x != centre; x -= side) {
-    if (x >= 0 && x < body.cols && row[x]) return x;
-  }
-  return kNaN;
 }
 
 // x = a + b (y - y0) through `points`: b the median of the pairwise slopes, a the median
@@ -270,18 +260,16 @@ StandstillCalibration CalibrateFromStandstill(const cv::Mat& background, const c
     }
     if (count >= r) axis.emplace_back(0.5 * (lo + hi), y);
   }
-  // Without enough of that (the arm in front of something of its own colour in the empty room,
-  // or of the torso), the standing body's outer edge one radius in, down to the wrist's
-  // expected height.
-  if (static_cast<int>(axis.size()) < kMinHangingRows) {
-    axis.clear();
-    const int last = static_cast<int>(std::lround(shoulder_y + kWristOfReach * (first_reach + r)));
-    for (int y = std::max(0, y0); y <= std::min(body.rows - 1, last); ++y) {
-      const int outer =
-          inner + cal.side * static_cast<int>(std::lround(3 * r + 2 + lean * (y - shoulder_y)));
-      const double edge = OuterEdge(body, y, outer, centre, cal.side);
-      if (std::isfinite(edge)) axis.emplace_back(edge - cal.side * r, y);
-    }
+  // Without it in at least kHangingShare of those rows (the arm in front of something of its own
+  // colour, a sleeve in the room's), where the arm hangs is not shown: no calibration rather than
+  // a guessed start, which the tracker would follow confidently.
+  const int searched = std::min(left_empty.rows - 1, y1) - std::max(0, y0) + 1;
+  if (static_cast<int>(axis.size()) <
+      std::max(kMinHangingRows, static_cast<int>(std::ceil(kHangingShare * searched)))) {
+    cal.note = "the hanging arm does not show against the empty room (" +
+               std::to_string(axis.size()) + " of " + std::to_string(std::max(searched, 0)) +
+               " rows of the upper arm)";
+    return cal;
   }
   // Where the straight arm leaves the hanging one: one arm radius inside its inner end.
   double shoulder_x = inner - cal.side * r;
@@ -294,6 +282,15 @@ StandstillCalibration CalibrateFromStandstill(const cv::Mat& background, const c
       cal.hanging_deg = deg;
       cal.hanging_rows = static_cast<int>(axis.size());
       shoulder_x = a;
+    }
+    // The two images must agree on the shoulder: the hanging arm's axis meets the shoulder's row
+    // where the straight arm leaves the body. When they do not, one of them saw only part of the
+    // arm (a sleeve in the room's colour ends the straight arm early), and neither is believed.
+    const double straight_x = inner - cal.side * r;
+    if (std::abs(a - straight_x) > 2 * r + 2) {
+      cal.note = "the hanging arm and the straight arm disagree on the shoulder (" +
+                 FormatNumber(std::abs(a - straight_x), 0) + " px apart)";
+      return cal;
     }
   }
   cal.shoulder = cv::Point2d(shoulder_x, shoulder_y);
