@@ -13,6 +13,7 @@
 #include "bgsub/pixels.h"
 #include "bgsub/scene.h"
 #include "common/arm_gate.h"
+#include "common/arm_support.h"
 #include "common/engine_internal.h"
 
 namespace armmimic {
@@ -163,6 +164,33 @@ class BgsubEngine final : public Engine {
     evidence_.Begin(cal_, region_.size(), options_.rest_deg);
     fitter_.Begin(static_cast<int>(evidence_.weights().step1()), upper, cal_.reach_px - upper,
                   cal_.half_width_px);
+    CalibrateSupport(upper);
+  }
+
+  // The support rule's reference (common/arm_support.h): the standstill's own arm, hanging along
+  // the rest direction, on the standstill's person (the pixels that differ from the empty room).
+  void CalibrateSupport(double upper) {
+    shape_ = arm::ArmShape();
+    shape_.upper_px = upper;
+    shape_.fore_px = cal_.reach_px - upper;
+    shape_.upper_hw = shape_.fore_hw = cal_.half_width_px;
+    const cv::Rect rect = evidence_.rect();
+    rest_mask_ = cv::Mat::zeros(rect.size(), CV_8UC1);
+    const arm::ArmJoints rest = Joints(options_.rest_deg, options_.rest_deg);
+    const cv::Point2d o(rect.tl());
+    arm::DrawArm(rest_mask_, {rest.shoulder - o, rest.elbow - o, rest.wrist - o}, shape_, 0);
+    cv::Mat person;
+    pixels_.StandstillPerson(&person);
+    support_.Calibrate(arm::MeasureSupport(person, person, cv::Point(), rest, shape_));
+  }
+
+  // The pose with these directions from the calibrated shoulder (region coordinates).
+  arm::ArmJoints Joints(double upper_deg, double fore_deg) const {
+    arm::ArmJoints j;
+    j.shoulder = cal_.shoulder_px;
+    j.elbow = j.shoulder + DirectionVector(upper_deg) * shape_.upper_px;
+    j.wrist = j.elbow + DirectionVector(fore_deg) * shape_.fore_px;
+    return j;
   }
 
   void FillSceneOverlay(ArmMeasurement* m) const {
@@ -210,6 +238,25 @@ class BgsubEngine final : public Engine {
                                                   : "the forearm fits weakly";
     }
     if (fit.against > 0.25) note += ", with moving pixels against it";
+    // The support rule: the pose lies on pixels that show an arm now (the person where the
+    // standstill was not, or the standstill's own arm still in place), and not in a region wider
+    // than the arm (its flanks are judged on the new evidence only).
+    cv::bitwise_and(person_, moved_, new_arm_);
+    cv::bitwise_and(person_, rest_mask_, shows_arm_);
+    shows_arm_ |= new_arm_;
+    const arm::PoseSupport support = arm::MeasureSupport(
+        shows_arm_, new_arm_, evidence_.rect().tl(), Joints(fit.upper_deg, fit.fore_deg), shape_);
+    if (const std::string why = support_.Verdict(support, true); !why.empty()) {
+      m->note = why;
+      return;
+    }
+    // Another pose, more than the error an `ok` frame may have away, fits as well within the
+    // noise of the weights: the pixels do not decide between them. Three standard errors, as the
+    // other pose is the best of many (a gap of two is common among so many by chance).
+    if (fit.margin < kMarginErrors * fit.margin_error) {
+      m->note = "ambiguous: another pose fits almost as well (margin " + Num(fit.margin) + ")";
+      return;
+    }
     const cv::Point2d o = cv::Point2d(region_.tl()) + cv::Point2d(evidence_.window_tl());
     m->phase = MeasurementPhase::kOk;
     m->note = note;
@@ -284,6 +331,7 @@ class BgsubEngine final : public Engine {
   // The moved mask's opening, and the largest share of the arm's flanks that may look like arm.
   inline static const cv::Mat kSpeckKernel = cv::Mat::ones(3, 3, CV_8UC1);
   static constexpr double kMaxClutter = 0.5;
+  static constexpr double kMarginErrors = 3;
   // A bend under this many degrees is a straight arm (yaw is measured, not nan).
   static constexpr double kStraightDeg = 10;
 
@@ -306,7 +354,12 @@ class BgsubEngine final : public Engine {
   bgsub::ArmEvidence evidence_;
   bgsub::ArmFitter fitter_;
   cv::Mat person_, moved_;
-  ArmGate gate_;  // honest status: weak evidence or an impossible jump is `lost`
+  arm::ArmShape shape_;          // the calibrated arm, for the support rule
+  arm::SupportRule support_;     // an `ok` pose lies on pixels that show an arm now
+  cv::Mat rest_mask_;            // the standstill's arm, CV_8U of evidence_.rect()
+  cv::Mat new_arm_, shows_arm_;  // per frame: the person where the standstill was not; and
+                                 // those or the standstill's arm in place
+  ArmGate gate_;                 // honest status: weak evidence or an impossible jump is `lost`
 };
 
 }  // namespace

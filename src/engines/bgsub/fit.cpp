@@ -61,6 +61,14 @@ constexpr double kFlankGap = 0.5, kFlankFrom = 0.25, kFlankTo = 0.8;
 
 int Wrap360(int deg) { return ((deg % 360) + 360) % 360; }
 
+// The standard error of a mean difference of two poses' weights over `n` samples, from one pose's
+// sum and sum of squares (a difference of two samples spreads sqrt(2) times one sample's).
+double DifferenceError(double sum, double sum_sq, int n) {
+  if (n < 2) return 0;
+  const double mean = sum / n, var = std::max(0.0, sum_sq / n - mean * mean);
+  return std::sqrt(2 * var / n);
+}
+
 }  // namespace
 
 void ArmEvidence::Begin(const ArmCalibration& cal, const cv::Size& region, double rest_deg) {
@@ -171,11 +179,13 @@ int ArmFitter::Score(const cv::Mat& weights, int from, int deg,
 }
 
 void ArmFitter::Count(const cv::Mat& weights, int from, int deg, const std::vector<Ray>& rays,
-                      int* pos, int* neg, int* n) const {
+                      int* pos, int* neg, int* n, double* sum, double* sum_sq) const {
   const schar* w = weights.ptr<schar>() + from;
   for (int off : rays[static_cast<std::size_t>(Wrap360(deg))].offsets) {
     *pos += w[off] > 0;
     *neg += w[off] < 0;
+    *sum += w[off];
+    *sum_sq += w[off] * w[off];
     ++*n;
   }
 }
@@ -246,8 +256,9 @@ ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
     second = std::max(second, up[static_cast<std::size_t>(best.up)] + Score(rest, e, f, fore_));
   }
   int upos = 0, uneg = 0, un = 0, fpos = 0, fneg = 0, fn = 0;
-  Count(weights, from, best.up, upper_, &upos, &uneg, &un);
-  Count(weights, e, best.fore, fore_, &fpos, &fneg, &fn);
+  double sum = 0, sum_sq = 0;
+  Count(weights, from, best.up, upper_, &upos, &uneg, &un, &sum, &sum_sq);
+  Count(weights, e, best.fore, fore_, &fpos, &fneg, &fn, &sum, &sum_sq);
   fit.clutter = std::max(Clutter(weights, from, best.up, upper_flank_),
                          Clutter(weights, e, best.fore, fore_flank_));
   fit.found = true;
@@ -261,6 +272,7 @@ ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
   fit.margin = second > (std::numeric_limits<int>::min() / 4)
                    ? static_cast<double>(best.score - second) / (un + fn)
                    : 2.0;
+  fit.margin_error = DifferenceError(sum, sum_sq, un + fn);
   return fit;
 }
 

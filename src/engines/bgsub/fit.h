@@ -48,6 +48,9 @@ struct ArmFit {
   // a mask flooded by light or texture covers both.
   double clutter = 0;
   double margin = 0;  // mean weight per sample over the best distinct other pose
+  // The standard error of that mean difference, from the spread of the pose's own weights (a
+  // difference of two samples spreads sqrt(2) times one sample's).
+  double margin_error = 0;
 };
 
 class ArmFitter {
@@ -67,8 +70,10 @@ class ArmFitter {
   double Clutter(const cv::Mat& weights, int from, int deg,
                  const std::vector<Ray> (&flanks)[2]) const;
   int Score(const cv::Mat& weights, int from, int deg, const std::vector<Ray>& rays) const;
+  // Counts the samples for (pos) and against (neg) the arm, all of them (n), and the sums of
+  // their weights and squared weights.
   void Count(const cv::Mat& weights, int from, int deg, const std::vector<Ray>& rays, int* pos,
-             int* neg, int* n) const;
+             int* neg, int* n, double* sum, double* sum_sq) const;
 
   // `weights` with the upper arm at `deg` cleared: the forearm is scored on what the upper arm
   // does not already explain (a forearm folded back over it would count its pixels twice).

@@ -1,0 +1,173 @@
+#include "common/arm_support.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include <opencv2/imgproc.hpp>
+
+#include "armmimic/core/angle_file.h"
+
+namespace armmimic::arm {
+namespace {
+
+// The share a segment needs, of the standstill arm's share on the same cue.
+constexpr double kShareOfRest = 0.5;
+// A standstill arm its cue saw on fewer of its samples than this is taken as seen on this many
+// (the rule then asks for a quarter of a segment: the cue still separates arm from room).
+constexpr double kLowestRestShare = 0.5;
+// Pixel difference: sigmas of the noise, plus the compression's rounding, never less than the
+// floor (grey levels).
+constexpr double kNoiseSigmas = 4.0;
+constexpr double kQuantisation = 4.0;
+constexpr double kMinThreshold = 8.0;
+constexpr int kGainStep = 4;
+constexpr int kGainMinLevel = 24, kGainMaxLevel = 250;
+// The flanks: from this share of the half-width (at least kFlankMinGapPx) outside the segment,
+// along its middle part (the ends touch the body at the shoulder and the other segment at the
+// elbow).
+constexpr double kFlankGap = 0.5, kFlankMinGapPx = 2, kFlankFrom = 0.25, kFlankTo = 0.8;
+
+float Median(std::vector<float>* v) {
+  if (v->empty()) return 1.0f;
+  auto mid = v->begin() + static_cast<std::ptrdiff_t>(v->size() / 2);
+  std::nth_element(v->begin(), mid, v->end());
+  return *mid;
+}
+
+cv::Scalar Gain(const cv::Mat& bgr, const cv::Mat& reference) {
+  std::array<std::vector<float>, 3> ratios;
+  for (int y = kGainStep / 2; y < bgr.rows; y += kGainStep) {
+    const cv::Vec3b* f = bgr.ptr<cv::Vec3b>(y);
+    const cv::Vec3b* b = reference.ptr<cv::Vec3b>(y);
+    for (int x = kGainStep / 2; x < bgr.cols; x += kGainStep) {
+      for (std::size_t c = 0; c < 3; ++c) {
+        const int ci = static_cast<int>(c);
+        if (b[x][ci] < kGainMinLevel || b[x][ci] > kGainMaxLevel || f[x][ci] > kGainMaxLevel) {
+          continue;
+        }
+        ratios[c].push_back(static_cast<float>(f[x][ci]) / b[x][ci]);
+      }
+    }
+  }
+  cv::Scalar g(1, 1, 1);
+  for (std::size_t c = 0; c < 3; ++c) {
+    if (ratios[c].size() >= 16) g[static_cast<int>(c)] = Median(&ratios[c]);
+  }
+  return g;
+}
+
+// The per-pixel largest channel difference of `bgr` from `reference` in its light (CV_8U).
+void MaxChannelDifference(const cv::Mat& bgr, const cv::Mat& reference, cv::Mat* out) {
+  cv::Mat scaled, diff;
+  cv::multiply(reference, Gain(bgr, reference), scaled);
+  cv::absdiff(bgr, scaled, diff);
+  std::vector<cv::Mat> ch;
+  cv::split(diff, ch);
+  cv::max(ch[0], ch[1], *out);
+  cv::max(*out, ch[2], *out);
+}
+
+struct Counter {
+  const cv::Mat& mask;
+  cv::Point origin;
+  int set = 0, n = 0;
+  void At(const cv::Point2d& p) {
+    ++n;
+    const int x = cvRound(p.x) - origin.x, y = cvRound(p.y) - origin.y;
+    if (x >= 0 && y >= 0 && x < mask.cols && y < mask.rows && mask.at<uchar>(y, x)) ++set;
+  }
+};
+
+// Samples from `a` + t0 to `b` along the axis and half a half-width either side of it.
+void SampleSegment(const cv::Point2d& a, const cv::Point2d& b, double t0, double half_width,
+                   Counter* c) {
+  const double len = cv::norm(b - a);
+  if (!(len > 0)) return;
+  const cv::Point2d d = (b - a) / len, n(-d.y, d.x);
+  const double off = 0.5 * half_width;
+  for (double t = std::min(t0, 0.5 * len); t <= len; t += 1.0) {
+    const cv::Point2d p = a + d * t;
+    c->At(p);
+    if (off >= 1) {
+      c->At(p + n * off);
+      c->At(p - n * off);
+    }
+  }
+}
+
+// The clearer flank's share of a segment from `a` to `b` (0 when it has no samples).
+double FlankShare(const cv::Mat& mask, const cv::Point& origin, const cv::Point2d& a,
+                  const cv::Point2d& b, double half_width) {
+  const double len = cv::norm(b - a);
+  if (!(len > 0)) return 0;
+  const cv::Point2d d = (b - a) / len, n(-d.y, d.x);
+  const double gap = std::max(kFlankMinGapPx, kFlankGap * half_width);
+  double clearer = 1;
+  for (int side : {-1, 1}) {
+    Counter c{mask, origin};
+    for (double t = kFlankFrom * len; t <= kFlankTo * len; t += 1.0) {
+      c.At(a + d * t + n * (side * (half_width + gap)));
+      c.At(a + d * t + n * (side * (2 * half_width + gap)));
+    }
+    clearer = std::min(clearer, c.n > 0 ? static_cast<double>(c.set) / c.n : 0.0);
+  }
+  return clearer;
+}
+
+}  // namespace
+
+PoseSupport MeasureSupport(const cv::Mat& shows_arm, const cv::Mat& flank_mask,
+                           const cv::Point& origin, const ArmJoints& pose, const ArmShape& shape) {
+  PoseSupport s;
+  Counter upper{shows_arm, origin}, fore{shows_arm, origin};
+  SampleSegment(pose.shoulder, pose.elbow, shape.upper_hw, shape.upper_hw, &upper);
+  SampleSegment(pose.elbow, pose.wrist, 0, shape.fore_hw, &fore);
+  s.flank = std::max(FlankShare(flank_mask, origin, pose.shoulder, pose.elbow, shape.upper_hw),
+                     FlankShare(flank_mask, origin, pose.elbow, pose.wrist, shape.fore_hw));
+  s.upper_samples = upper.n;
+  s.fore_samples = fore.n;
+  s.upper = upper.n > 0 ? static_cast<double>(upper.set) / upper.n : 0;
+  s.fore = fore.n > 0 ? static_cast<double>(fore.set) / fore.n : 0;
+  return s;
+}
+
+void SupportRule::Calibrate(const PoseSupport& rest) {
+  required_ = kShareOfRest * std::max(rest.weaker(), kLowestRestShare);
+}
+
+std::string SupportRule::Verdict(const PoseSupport& now, bool fresh) const {
+  if (!fresh) return "the pose is held from an earlier frame, not measured in this one";
+  if (!calibrated()) return "no support reference (the standstill's arm was not measured)";
+  if (now.weaker() < required_) {
+    return std::string(now.upper < now.fore ? "the upper arm" : "the forearm") +
+           " lies on pixels that show no arm now (support " + FormatNumber(now.weaker(), 2) +
+           ", needs " + FormatNumber(required_, 2) + ")";
+  }
+  if (now.flank > flank_limit()) {
+    return "a segment lies in a region wider than the arm (arm pixels on both flanks: " +
+           FormatNumber(now.flank, 2) + ", at most " + FormatNumber(flank_limit(), 2) + ")";
+  }
+  return {};
+}
+
+void DiffersFrom(const cv::Mat& bgr, const cv::Mat& reference, double threshold, cv::Mat* mask) {
+  cv::Mat diff;
+  MaxChannelDifference(bgr, reference, &diff);
+  cv::threshold(diff, *mask, threshold, 255, cv::THRESH_BINARY);
+}
+
+double NoiseThreshold(const cv::Mat& a, const cv::Mat& b) {
+  cv::Mat diff;
+  MaxChannelDifference(a, b, &diff);
+  std::vector<float> samples;
+  for (int y = 1; y < diff.rows; y += 2) {
+    const uchar* d = diff.ptr<uchar>(y);
+    for (int x = 1; x < diff.cols; x += 2) samples.push_back(d[x]);
+  }
+  const double sigma = 1.4826 * Median(&samples);
+  return std::max(kMinThreshold, kNoiseSigmas * sigma + kQuantisation);
+}
+
+}  // namespace armmimic::arm
