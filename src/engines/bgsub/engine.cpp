@@ -184,6 +184,22 @@ class BgsubEngine final : public Engine {
     support_.Calibrate(arm::MeasureSupport(person, person, cv::Point(), rest, shape_));
   }
 
+  // Whether `pose` stands on the standstill's own arm, unchanged (shows_arm_ holds the person
+  // under the rest arm), while moving pixels of an arm's size lie beside it: the standstill's
+  // pose repeated, not measured (the arm left, and what it uncovered looks like it: a sleeve in
+  // the shirt's colour).
+  bool RepeatsStandstill(const arm::ArmJoints& pose) {
+    cv::bitwise_not(moved_, unchanged_);
+    unchanged_ &= shows_arm_;
+    const cv::Point tl = evidence_.rect().tl();
+    if (arm::MeasureSupport(unchanged_, unchanged_, tl, pose, shape_).weaker() <
+        support_.required()) {
+      return false;
+    }
+    return arm::PixelsBeside(new_arm_, tl, pose, shape_, cal_.half_width_px) >
+           kSecondArmShare * arm::ArmAreaPx(shape_);
+  }
+
   // The pose with these directions from the calibrated shoulder (region coordinates).
   arm::ArmJoints Joints(double upper_deg, double fore_deg) const {
     arm::ArmJoints j;
@@ -241,12 +257,14 @@ class BgsubEngine final : public Engine {
     // The support rule: the pose lies on pixels that show an arm now (the person where the
     // standstill was not, or the standstill's own arm still in place), and not in a region wider
     // than the arm (its flanks are judged on the new evidence only).
+    const arm::ArmJoints pose = Joints(fit.upper_deg, fit.fore_deg);
     cv::bitwise_and(person_, moved_, new_arm_);
     cv::bitwise_and(person_, rest_mask_, shows_arm_);
+    const bool fresh = !RepeatsStandstill(pose);
     shows_arm_ |= new_arm_;
-    const arm::PoseSupport support = arm::MeasureSupport(
-        shows_arm_, new_arm_, evidence_.rect().tl(), Joints(fit.upper_deg, fit.fore_deg), shape_);
-    if (const std::string why = support_.Verdict(support, true); !why.empty()) {
+    const arm::PoseSupport support =
+        arm::MeasureSupport(shows_arm_, new_arm_, evidence_.rect().tl(), pose, shape_);
+    if (const std::string why = support_.Verdict(support, fresh); !why.empty()) {
       m->note = why;
       return;
     }
@@ -332,6 +350,10 @@ class BgsubEngine final : public Engine {
   inline static const cv::Mat kSpeckKernel = cv::Mat::ones(3, 3, CV_8UC1);
   static constexpr double kMaxClutter = 0.5;
   static constexpr double kMarginErrors = 3;
+  // Moving pixels beside the pose of at least this share of the arm's area: an arm elsewhere (a
+  // quarter: a raised arm half hidden by a wall of its colour still counts; at rest, with the
+  // body swaying, the tuning scenes show a few dozen pixels).
+  static constexpr double kSecondArmShare = 0.25;
   // A bend under this many degrees is a straight arm (yaw is measured, not nan).
   static constexpr double kStraightDeg = 10;
 
@@ -357,6 +379,7 @@ class BgsubEngine final : public Engine {
   arm::ArmShape shape_;          // the calibrated arm, for the support rule
   arm::SupportRule support_;     // an `ok` pose lies on pixels that show an arm now
   cv::Mat rest_mask_;            // the standstill's arm, CV_8U of evidence_.rect()
+  cv::Mat unchanged_;            // per frame: RepeatsStandstill's work
   cv::Mat new_arm_, shows_arm_;  // per frame: the person where the standstill was not; and
                                  // those or the standstill's arm in place
   ArmGate gate_;                 // honest status: weak evidence or an impossible jump is `lost`

@@ -133,6 +133,20 @@ PoseSupport MeasureSupport(const cv::Mat& shows_arm, const cv::Mat& flank_mask,
   return s;
 }
 
+int PixelsBeside(const cv::Mat& mask, const cv::Point& origin, const ArmJoints& pose,
+                 const ArmShape& shape, double grow_px) {
+  cv::Mat covered = cv::Mat::zeros(mask.size(), CV_8UC1);
+  const cv::Point2d o(origin);
+  DrawArm(covered, {pose.shoulder - o, pose.elbow - o, pose.wrist - o}, shape, grow_px);
+  cv::bitwise_not(covered, covered);
+  cv::bitwise_and(mask, covered, covered);
+  return cv::countNonZero(covered);
+}
+
+double ArmAreaPx(const ArmShape& shape) {
+  return 2 * shape.upper_hw * shape.upper_px + 2 * shape.fore_hw * (shape.fore_px + shape.hand_px);
+}
+
 void SupportRule::Calibrate(const PoseSupport& rest) {
   required_ = kShareOfRest * std::max(rest.weaker(), kLowestRestShare);
 }

@@ -36,6 +36,14 @@ struct PoseSupport {
 PoseSupport MeasureSupport(const cv::Mat& shows_arm, const cv::Mat& flank_mask,
                            const cv::Point& origin, const ArmJoints& pose, const ArmShape& shape);
 
+// The pixels of `mask` (CV_8U; top-left pixel at `origin` in the pose's coordinates) set beyond
+// `pose`'s capsules grown by `grow_px`: evidence of an arm that the pose leaves out.
+int PixelsBeside(const cv::Mat& mask, const cv::Point& origin, const ArmJoints& pose,
+                 const ArmShape& shape, double grow_px);
+
+// The area of an arm of `shape` (its capsules), in pixels.
+double ArmAreaPx(const ArmShape& shape);
+
 class SupportRule {
  public:
   // The standstill's own arm: its support on the engine's cue. Without a calibration the rule
