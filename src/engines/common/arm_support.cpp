@@ -148,12 +148,21 @@ double ArmAreaPx(const ArmShape& shape) {
 }
 
 void SupportRule::Calibrate(const PoseSupport& rest) {
-  required_ = kShareOfRest * std::max(rest.weaker(), kLowestRestShare);
+  rest_share_ = rest.weaker();
+  // A standstill arm that would fail the rule by half (a segment of it off the person): the
+  // calibration does not match the standstill, and no pose can be checked against it.
+  const double lowest = kShareOfRest * kLowestRestShare;
+  required_ = rest_share_ < kShareOfRest * lowest
+                  ? 0
+                  : kShareOfRest * std::max(rest_share_, kLowestRestShare);
 }
 
 std::string SupportRule::Verdict(const PoseSupport& now, bool fresh) const {
   if (!fresh) return "the pose is held from an earlier frame, not measured in this one";
-  if (!calibrated()) return "no support reference (the standstill's arm was not measured)";
+  if (!calibrated()) {
+    return "the calibrated arm, hanging, does not lie on the standstill's person (support " +
+           FormatNumber(rest_share_, 2) + "): the calibration is not checked";
+  }
   if (now.weaker() < required_) {
     return std::string(now.upper < now.fore ? "the upper arm" : "the forearm") +
            " lies on pixels that show no arm now (support " + FormatNumber(now.weaker(), 2) +

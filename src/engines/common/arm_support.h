@@ -46,8 +46,9 @@ double ArmAreaPx(const ArmShape& shape);
 
 class SupportRule {
  public:
-  // The standstill's own arm: its support on the engine's cue. Without a calibration the rule
-  // keeps nothing `ok`.
+  // The standstill's own arm: its support on the engine's cue. Without a calibration, or when a
+  // segment of the standstill's arm would fail the rule by half (the calibration does not match
+  // the standstill), the rule keeps nothing `ok`.
   void Calibrate(const PoseSupport& rest);
   bool calibrated() const { return required_ > 0; }
   // The share each segment needs: half the standstill arm's weaker share.
@@ -61,6 +62,7 @@ class SupportRule {
 
  private:
   double required_ = 0;
+  double rest_share_ = 0;
 };
 
 // 255 where `bgr` differs from `reference` (both CV_8UC3, same size) by more than `threshold`
