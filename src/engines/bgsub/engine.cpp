@@ -12,8 +12,8 @@
 #include "bgsub/masks.h"
 #include "bgsub/pixels.h"
 #include "bgsub/scene.h"
+#include "bgsub/support.h"
 #include "common/arm_gate.h"
-#include "common/arm_support.h"
 #include "common/engine_internal.h"
 
 namespace armmimic {
@@ -164,49 +164,10 @@ class BgsubEngine final : public Engine {
     evidence_.Begin(cal_, region_.size(), options_.rest_deg);
     fitter_.Begin(static_cast<int>(evidence_.weights().step1()), upper, cal_.reach_px - upper,
                   cal_.half_width_px);
-    CalibrateSupport(upper);
-  }
-
-  // The support rule's reference (common/arm_support.h): the standstill's own arm, hanging along
-  // the rest direction, on the standstill's person (the pixels that differ from the empty room).
-  void CalibrateSupport(double upper) {
-    shape_ = arm::ArmShape();
-    shape_.upper_px = upper;
-    shape_.fore_px = cal_.reach_px - upper;
-    shape_.upper_hw = shape_.fore_hw = cal_.half_width_px;
-    const cv::Rect rect = evidence_.rect();
-    rest_mask_ = cv::Mat::zeros(rect.size(), CV_8UC1);
-    const arm::ArmJoints rest = Joints(options_.rest_deg, options_.rest_deg);
-    const cv::Point2d o(rect.tl());
-    arm::DrawArm(rest_mask_, {rest.shoulder - o, rest.elbow - o, rest.wrist - o}, shape_, 0);
-    cv::Mat person;
+    cv::Mat person, uncovered;
     pixels_.StandstillPerson(&person);
-    support_.Calibrate(arm::MeasureSupport(person, person, cv::Point(), rest, shape_));
-  }
-
-  // Whether `pose` stands on the standstill's own arm, unchanged (shows_arm_ holds the person
-  // under the rest arm), while moving pixels of an arm's size lie beside it: the standstill's
-  // pose repeated, not measured (the arm left, and what it uncovered looks like it: a sleeve in
-  // the shirt's colour).
-  bool RepeatsStandstill(const arm::ArmJoints& pose) {
-    cv::bitwise_not(moved_, unchanged_);
-    unchanged_ &= shows_arm_;
-    const cv::Point tl = evidence_.rect().tl();
-    if (arm::MeasureSupport(unchanged_, unchanged_, tl, pose, shape_).weaker() <
-        support_.required()) {
-      return false;
-    }
-    return arm::PixelsBeside(new_arm_, tl, pose, shape_, cal_.half_width_px) >
-           kSecondArmShare * arm::ArmAreaPx(shape_);
-  }
-
-  // The pose with these directions from the calibrated shoulder (region coordinates).
-  arm::ArmJoints Joints(double upper_deg, double fore_deg) const {
-    arm::ArmJoints j;
-    j.shoulder = cal_.shoulder_px;
-    j.elbow = j.shoulder + DirectionVector(upper_deg) * shape_.upper_px;
-    j.wrist = j.elbow + DirectionVector(fore_deg) * shape_.fore_px;
-    return j;
+    pixels_.Differ(arm_length_bgr_, pixels_.standstill(), &uncovered);
+    support_.Begin(cal_, upper, options_.rest_deg, evidence_.rect(), person, uncovered);
   }
 
   void FillSceneOverlay(ArmMeasurement* m) const {
@@ -254,25 +215,11 @@ class BgsubEngine final : public Engine {
                                                   : "the forearm fits weakly";
     }
     if (fit.against > 0.25) note += ", with moving pixels against it";
-    // The support rule: the pose lies on pixels that show an arm now (the person where the
-    // standstill was not, or the standstill's own arm still in place), and not in a region wider
-    // than the arm (its flanks are judged on the new evidence only).
-    const arm::ArmJoints pose = Joints(fit.upper_deg, fit.fore_deg);
-    cv::bitwise_and(person_, moved_, new_arm_);
-    cv::bitwise_and(person_, rest_mask_, shows_arm_);
-    const bool fresh = !RepeatsStandstill(pose);
-    shows_arm_ |= new_arm_;
-    const arm::PoseSupport support =
-        arm::MeasureSupport(shows_arm_, new_arm_, evidence_.rect().tl(), pose, shape_);
-    if (const std::string why = support_.Verdict(support, fresh); !why.empty()) {
+    // The support rule (bgsub/support.h).
+    const std::string why =
+        support_.Check(support_.Joints(fit.upper_deg, fit.fore_deg, fit.scale), person_, moved_);
+    if (!why.empty()) {
       m->note = why;
-      return;
-    }
-    // Another pose, more than the error an `ok` frame may have away, fits as well within the
-    // noise of the weights: the pixels do not decide between them. Three standard errors, as the
-    // other pose is the best of many (a gap of two is common among so many by chance).
-    if (fit.margin < kMarginErrors * fit.margin_error) {
-      m->note = "ambiguous: another pose fits almost as well (margin " + Num(fit.margin) + ")";
       return;
     }
     const cv::Point2d o = cv::Point2d(region_.tl()) + cv::Point2d(evidence_.window_tl());
@@ -283,7 +230,7 @@ class BgsubEngine final : public Engine {
     m->fore_deg = fit.fore_deg;
     m->bend_deg = AngleDiff(fit.fore_deg, fit.upper_deg);
     m->bent = std::fabs(m->bend_deg) > kStraightDeg;
-    m->yaw_deg = m->bent ? kNaN : 0.0;
+    m->yaw_deg = m->bent ? kNaN : StraightYaw(fit.scale);
     m->elbow_px = fit.elbow_px + o;
     m->wrist_px = fit.wrist_px + o;
     m->upper_com_px = (*m->shoulder_px + *m->elbow_px) * 0.5;
@@ -339,6 +286,14 @@ class BgsubEngine final : public Engine {
     m->arm_hull = Offset(g.hull, o);
   }
 
+  // A straight arm's yaw from how much both segments are foreshortened against the arm-length
+  // image's straight arm: acos of the shared length scale. A shortening under one pixel of the
+  // reach is within what the fit can measure: no yaw.
+  double StraightYaw(double scale) const {
+    if (scale * cal_.reach_px > cal_.reach_px - 1) return 0;
+    return DegFromRad(std::acos(std::clamp(scale, 0.0, 1.0)));
+  }
+
   // yaw = acos(a/b) (5.2.6): a from this frame, b from the arm-length image.
   double Yaw(const bgsub::ArmGeometry& g) const {
     const double a = g.axes.major, b = scene_.ref_major_px;
@@ -349,11 +304,6 @@ class BgsubEngine final : public Engine {
   // The moved mask's opening, and the largest share of the arm's flanks that may look like arm.
   inline static const cv::Mat kSpeckKernel = cv::Mat::ones(3, 3, CV_8UC1);
   static constexpr double kMaxClutter = 0.5;
-  static constexpr double kMarginErrors = 3;
-  // Moving pixels beside the pose of at least this share of the arm's area: an arm elsewhere (a
-  // quarter: a raised arm half hidden by a wall of its colour still counts; at rest, with the
-  // body swaying, the tuning scenes show a few dozen pixels).
-  static constexpr double kSecondArmShare = 0.25;
   // A bend under this many degrees is a straight arm (yaw is measured, not nan).
   static constexpr double kStraightDeg = 10;
 
@@ -376,13 +326,8 @@ class BgsubEngine final : public Engine {
   bgsub::ArmEvidence evidence_;
   bgsub::ArmFitter fitter_;
   cv::Mat person_, moved_;
-  arm::ArmShape shape_;          // the calibrated arm, for the support rule
-  arm::SupportRule support_;     // an `ok` pose lies on pixels that show an arm now
-  cv::Mat rest_mask_;            // the standstill's arm, CV_8U of evidence_.rect()
-  cv::Mat unchanged_;            // per frame: RepeatsStandstill's work
-  cv::Mat new_arm_, shows_arm_;  // per frame: the person where the standstill was not; and
-                                 // those or the standstill's arm in place
-  ArmGate gate_;                 // honest status: weak evidence or an impossible jump is `lost`
+  bgsub::FitSupport support_;  // an `ok` pose lies on pixels that show an arm now
+  ArmGate gate_;               // honest status: weak evidence or an impossible jump is `lost`
 };
 
 }  // namespace

@@ -97,21 +97,34 @@ void SampleSegment(const cv::Point2d& a, const cv::Point2d& b, double t0, double
   }
 }
 
-// The clearer flank's share of a segment from `a` to `b` (0 when it has no samples).
+double DistanceToSegment(const cv::Point2d& p, const cv::Point2d& a, const cv::Point2d& b) {
+  const cv::Point2d ab = b - a;
+  const double len2 = ab.dot(ab);
+  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return cv::norm(p - (a + ab * t));
+}
+
+// The clearer flank's share of a segment from `a` to `b` (0 when it has no samples). Flank
+// samples on the pose's other segment (from `c` to `d`, of half-width `other_hw`) are the pose's
+// own arm, not a wider region: they are left out.
 double FlankShare(const cv::Mat& mask, const cv::Point& origin, const cv::Point2d& a,
-                  const cv::Point2d& b, double half_width) {
+                  const cv::Point2d& b, double half_width, const cv::Point2d& c,
+                  const cv::Point2d& d, double other_hw) {
   const double len = cv::norm(b - a);
   if (!(len > 0)) return 0;
-  const cv::Point2d d = (b - a) / len, n(-d.y, d.x);
+  const cv::Point2d dir = (b - a) / len, n(-dir.y, dir.x);
   const double gap = std::max(kFlankMinGapPx, kFlankGap * half_width);
+  const double own = other_hw + std::max(kFlankMinGapPx, kFlankGap * other_hw);
   double clearer = 1;
   for (int side : {-1, 1}) {
-    Counter c{mask, origin};
+    Counter count{mask, origin};
     for (double t = kFlankFrom * len; t <= kFlankTo * len; t += 1.0) {
-      c.At(a + d * t + n * (side * (half_width + gap)));
-      c.At(a + d * t + n * (side * (2 * half_width + gap)));
+      for (double across : {half_width + gap, 2 * half_width + gap}) {
+        const cv::Point2d p = a + dir * t + n * (side * across);
+        if (DistanceToSegment(p, c, d) > own) count.At(p);
+      }
     }
-    clearer = std::min(clearer, c.n > 0 ? static_cast<double>(c.set) / c.n : 0.0);
+    clearer = std::min(clearer, count.n > 0 ? static_cast<double>(count.set) / count.n : 0.0);
   }
   return clearer;
 }
@@ -124,27 +137,15 @@ PoseSupport MeasureSupport(const cv::Mat& shows_arm, const cv::Mat& flank_mask,
   Counter upper{shows_arm, origin}, fore{shows_arm, origin};
   SampleSegment(pose.shoulder, pose.elbow, shape.upper_hw, shape.upper_hw, &upper);
   SampleSegment(pose.elbow, pose.wrist, 0, shape.fore_hw, &fore);
-  s.flank = std::max(FlankShare(flank_mask, origin, pose.shoulder, pose.elbow, shape.upper_hw),
-                     FlankShare(flank_mask, origin, pose.elbow, pose.wrist, shape.fore_hw));
+  s.flank = std::max(FlankShare(flank_mask, origin, pose.shoulder, pose.elbow, shape.upper_hw,
+                                pose.elbow, pose.wrist, shape.fore_hw),
+                     FlankShare(flank_mask, origin, pose.elbow, pose.wrist, shape.fore_hw,
+                                pose.shoulder, pose.elbow, shape.upper_hw));
   s.upper_samples = upper.n;
   s.fore_samples = fore.n;
   s.upper = upper.n > 0 ? static_cast<double>(upper.set) / upper.n : 0;
   s.fore = fore.n > 0 ? static_cast<double>(fore.set) / fore.n : 0;
   return s;
-}
-
-int PixelsBeside(const cv::Mat& mask, const cv::Point& origin, const ArmJoints& pose,
-                 const ArmShape& shape, double grow_px) {
-  cv::Mat covered = cv::Mat::zeros(mask.size(), CV_8UC1);
-  const cv::Point2d o(origin);
-  DrawArm(covered, {pose.shoulder - o, pose.elbow - o, pose.wrist - o}, shape, grow_px);
-  cv::bitwise_not(covered, covered);
-  cv::bitwise_and(mask, covered, covered);
-  return cv::countNonZero(covered);
-}
-
-double ArmAreaPx(const ArmShape& shape) {
-  return 2 * shape.upper_hw * shape.upper_px + 2 * shape.fore_hw * (shape.fore_px + shape.hand_px);
 }
 
 void SupportRule::Calibrate(const PoseSupport& rest) {

@@ -18,8 +18,9 @@
 namespace armmimic::arm {
 
 // The shares of a pose's samples on pixels that show an arm, per segment (0..1), and of its
-// flanks: two lines each side beside the segment, outside its width, over its middle part. A
-// segment's flank share is that of its clearer side; `flank` is the worse segment's.
+// flanks: two lines each side beside the segment, outside its width, over its middle part (less
+// what lies on the pose's other segment: a folded arm). A segment's flank share is that of its
+// clearer side; `flank` is the worse segment's.
 struct PoseSupport {
   double upper = 0, fore = 0;
   int upper_samples = 0, fore_samples = 0;
@@ -35,14 +36,6 @@ struct PoseSupport {
 // coordinates; samples outside the mask count as not set.
 PoseSupport MeasureSupport(const cv::Mat& shows_arm, const cv::Mat& flank_mask,
                            const cv::Point& origin, const ArmJoints& pose, const ArmShape& shape);
-
-// The pixels of `mask` (CV_8U; top-left pixel at `origin` in the pose's coordinates) set beyond
-// `pose`'s capsules grown by `grow_px`: evidence of an arm that the pose leaves out.
-int PixelsBeside(const cv::Mat& mask, const cv::Point& origin, const ArmJoints& pose,
-                 const ArmShape& shape, double grow_px);
-
-// The area of an arm of `shape` (its capsules), in pixels.
-double ArmAreaPx(const ArmShape& shape);
 
 class SupportRule {
  public:
