@@ -1,9 +1,7 @@
 #include "common/arm_support.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <vector>
 
 #include <opencv2/imgproc.hpp>
 
@@ -17,57 +15,10 @@ constexpr double kShareOfRest = 0.5;
 // A standstill arm its cue saw on fewer of its samples than this is taken as seen on this many
 // (the rule then asks for a quarter of a segment: the cue still separates arm from room).
 constexpr double kLowestRestShare = 0.5;
-// Pixel difference: sigmas of the noise, plus the compression's rounding, never less than the
-// floor (grey levels).
-constexpr double kNoiseSigmas = 4.0;
-constexpr double kQuantisation = 4.0;
-constexpr double kMinThreshold = 8.0;
-constexpr int kGainStep = 4;
-constexpr int kGainMinLevel = 24, kGainMaxLevel = 250;
 // The flanks: from this share of the half-width (at least kFlankMinGapPx) outside the segment,
 // along its middle part (the ends touch the body at the shoulder and the other segment at the
 // elbow).
 constexpr double kFlankGap = 0.5, kFlankMinGapPx = 2, kFlankFrom = 0.25, kFlankTo = 0.8;
-
-float Median(std::vector<float>* v) {
-  if (v->empty()) return 1.0f;
-  auto mid = v->begin() + static_cast<std::ptrdiff_t>(v->size() / 2);
-  std::nth_element(v->begin(), mid, v->end());
-  return *mid;
-}
-
-cv::Scalar Gain(const cv::Mat& bgr, const cv::Mat& reference) {
-  std::array<std::vector<float>, 3> ratios;
-  for (int y = kGainStep / 2; y < bgr.rows; y += kGainStep) {
-    const cv::Vec3b* f = bgr.ptr<cv::Vec3b>(y);
-    const cv::Vec3b* b = reference.ptr<cv::Vec3b>(y);
-    for (int x = kGainStep / 2; x < bgr.cols; x += kGainStep) {
-      for (std::size_t c = 0; c < 3; ++c) {
-        const int ci = static_cast<int>(c);
-        if (b[x][ci] < kGainMinLevel || b[x][ci] > kGainMaxLevel || f[x][ci] > kGainMaxLevel) {
-          continue;
-        }
-        ratios[c].push_back(static_cast<float>(f[x][ci]) / b[x][ci]);
-      }
-    }
-  }
-  cv::Scalar g(1, 1, 1);
-  for (std::size_t c = 0; c < 3; ++c) {
-    if (ratios[c].size() >= 16) g[static_cast<int>(c)] = Median(&ratios[c]);
-  }
-  return g;
-}
-
-// The per-pixel largest channel difference of `bgr` from `reference` in its light (CV_8U).
-void MaxChannelDifference(const cv::Mat& bgr, const cv::Mat& reference, cv::Mat* out) {
-  cv::Mat scaled, diff;
-  cv::multiply(reference, Gain(bgr, reference), scaled);
-  cv::absdiff(bgr, scaled, diff);
-  std::vector<cv::Mat> ch;
-  cv::split(diff, ch);
-  cv::max(ch[0], ch[1], *out);
-  cv::max(*out, ch[2], *out);
-}
 
 struct Counter {
   const cv::Mat& mask;
@@ -137,10 +88,12 @@ PoseSupport MeasureSupport(const cv::Mat& shows_arm, const cv::Mat& flank_mask,
   Counter upper{shows_arm, origin}, fore{shows_arm, origin};
   SampleSegment(pose.shoulder, pose.elbow, shape.upper_hw, shape.upper_hw, &upper);
   SampleSegment(pose.elbow, pose.wrist, 0, shape.fore_hw, &fore);
-  s.flank = std::max(FlankShare(flank_mask, origin, pose.shoulder, pose.elbow, shape.upper_hw,
-                                pose.elbow, pose.wrist, shape.fore_hw),
-                     FlankShare(flank_mask, origin, pose.elbow, pose.wrist, shape.fore_hw,
-                                pose.shoulder, pose.elbow, shape.upper_hw));
+  if (!flank_mask.empty()) {
+    s.flank = std::max(FlankShare(flank_mask, origin, pose.shoulder, pose.elbow, shape.upper_hw,
+                                  pose.elbow, pose.wrist, shape.fore_hw),
+                       FlankShare(flank_mask, origin, pose.elbow, pose.wrist, shape.fore_hw,
+                                  pose.shoulder, pose.elbow, shape.upper_hw));
+  }
   s.upper_samples = upper.n;
   s.fore_samples = fore.n;
   s.upper = upper.n > 0 ? static_cast<double>(upper.set) / upper.n : 0;
@@ -174,24 +127,6 @@ std::string SupportRule::Verdict(const PoseSupport& now, bool fresh) const {
            FormatNumber(now.flank, 2) + ", at most " + FormatNumber(flank_limit(), 2) + ")";
   }
   return {};
-}
-
-void DiffersFrom(const cv::Mat& bgr, const cv::Mat& reference, double threshold, cv::Mat* mask) {
-  cv::Mat diff;
-  MaxChannelDifference(bgr, reference, &diff);
-  cv::threshold(diff, *mask, threshold, 255, cv::THRESH_BINARY);
-}
-
-double NoiseThreshold(const cv::Mat& a, const cv::Mat& b) {
-  cv::Mat diff;
-  MaxChannelDifference(a, b, &diff);
-  std::vector<float> samples;
-  for (int y = 1; y < diff.rows; y += 2) {
-    const uchar* d = diff.ptr<uchar>(y);
-    for (int x = 1; x < diff.cols; x += 2) samples.push_back(d[x]);
-  }
-  const double sigma = 1.4826 * Median(&samples);
-  return std::max(kMinThreshold, kNoiseSigmas * sigma + kQuantisation);
 }
 
 }  // namespace armmimic::arm

@@ -32,7 +32,8 @@ struct PoseSupport {
 // forearm to the wrist) along its axis and on lines at half its half-width either side, and
 // counts those where `shows_arm` (CV_8U, nonzero: an arm now) is set; the flanks are counted on
 // `flank_mask` (the same size; e.g. only new evidence, as beside an arm at rest lies the
-// standstill's own arm or body). `origin` is the masks' top-left pixel in the pose's
+// standstill's own arm or body; empty: the arm's width is not measured, and the flanks are not
+// judged). `origin` is the masks' top-left pixel in the pose's
 // coordinates; samples outside the mask count as not set.
 PoseSupport MeasureSupport(const cv::Mat& shows_arm, const cv::Mat& flank_mask,
                            const cv::Point& origin, const ArmJoints& pose, const ArmShape& shape);
@@ -57,15 +58,5 @@ class SupportRule {
   double required_ = 0;
   double rest_share_ = 0;
 };
-
-// 255 where `bgr` differs from `reference` (both CV_8UC3, same size) by more than `threshold`
-// grey levels in some channel, after one gain per channel (the median ratio over a sparse grid)
-// has matched the light.
-void DiffersFrom(const cv::Mat& bgr, const cv::Mat& reference, double threshold, cv::Mat* mask);
-
-// The difference, in grey levels, that `DiffersFrom` needs between two images of one scene
-// (`a` and `b`, CV_8UC3): a robust spread of their per-pixel difference over the pixels (most of
-// them show the same room), four of its sigmas plus the rounding of the compression.
-double NoiseThreshold(const cv::Mat& a, const cv::Mat& b);
 
 }  // namespace armmimic::arm
