@@ -167,6 +167,7 @@ class BgsubEngine final : public Engine {
     cv::Mat person, uncovered;
     pixels_.StandstillPerson(&person);
     pixels_.Differ(arm_length_bgr_, pixels_.standstill(), &uncovered);
+    pixels_.SetThird(arm_length_bgr_);
     support_.Begin(cal_, upper, options_.rest_deg, evidence_.rect(), person, uncovered);
   }
 
@@ -190,6 +191,7 @@ class BgsubEngine final : public Engine {
       return;
     }
     pixels_.Compare(frame.image(region_), evidence_.rect(), cv::Mat(), &person_, &moved_);
+    pixels_.CompareThird(frame.image(region_), evidence_.rect(), &not_uncovered_);
     // Specks of a textured shirt moving a little (sway, noise, compression) are no arm; a moved
     // arm is a solid region.
     cv::morphologyEx(moved_, moved_, cv::MORPH_OPEN, kSpeckKernel);
@@ -216,8 +218,8 @@ class BgsubEngine final : public Engine {
     }
     if (fit.against > 0.25) note += ", with moving pixels against it";
     // The support rule (bgsub/support.h).
-    const std::string why =
-        support_.Check(support_.Joints(fit.upper_deg, fit.fore_deg, fit.scale), person_, moved_);
+    const std::string why = support_.Check(support_.Joints(fit.upper_deg, fit.fore_deg, fit.scale),
+                                           person_, moved_, not_uncovered_);
     if (!why.empty()) {
       m->note = why;
       return;
@@ -326,6 +328,7 @@ class BgsubEngine final : public Engine {
   bgsub::ArmEvidence evidence_;
   bgsub::ArmFitter fitter_;
   cv::Mat person_, moved_;
+  cv::Mat not_uncovered_;      // differs from the arm-length image (what the hanging arm covers)
   bgsub::FitSupport support_;  // an `ok` pose lies on pixels that show an arm now
   ArmGate gate_;               // honest status: weak evidence or an impossible jump is `lost`
 };

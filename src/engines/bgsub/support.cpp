@@ -18,9 +18,10 @@ void FitSupport::Begin(const ArmCalibration& cal, double upper_px, double rest_d
   const arm::ArmJoints rest = Joints(rest_deg, rest_deg);
   rule_.Calibrate(
       arm::MeasureSupport(standstill_person, standstill_person, cv::Point(), rest, shape_));
-  rest_mask_ = cv::Mat::zeros(rect.size(), CV_8UC1);
+  rest_region_ = cv::Mat::zeros(rect.size(), CV_8UC1);
   const cv::Point2d o(tl_);
-  arm::DrawArm(rest_mask_, {rest.shoulder - o, rest.elbow - o, rest.wrist - o}, shape_, 0);
+  arm::DrawArm(rest_region_, {rest.shoulder - o, rest.elbow - o, rest.wrist - o}, shape_, 0);
+  rest_mask_ = rest_region_.clone();
   // Only where the arm-length image, its arm raised, showed something else does an unchanged
   // pixel say the arm is still there.
   rest_mask_ &= uncovered(rect);
@@ -35,9 +36,15 @@ arm::ArmJoints FitSupport::Joints(double upper_deg, double fore_deg, double scal
 }
 
 std::string FitSupport::Check(const arm::ArmJoints& pose, const cv::Mat& person,
-                              const cv::Mat& moved) {
+                              const cv::Mat& moved, const cv::Mat& not_uncovered) {
+  // New arm: the person where the standstill was not, less what the hanging arm uncovered.
+  cv::bitwise_not(not_uncovered, revealed_);
+  revealed_ &= rest_region_;
   cv::bitwise_and(person, moved, new_arm_);
+  new_arm_ &= ~revealed_;
+  // Or the standstill's arm in place, unchanged.
   cv::bitwise_and(person, rest_mask_, shows_arm_);
+  shows_arm_ &= ~moved;
   shows_arm_ |= new_arm_;
   return rule_.Verdict(arm::MeasureSupport(shows_arm_, new_arm_, tl_, pose, shape_), true);
 }

@@ -103,12 +103,10 @@ PoseSupport MeasureSupport(const cv::Mat& shows_arm, const cv::Mat& flank_mask,
 
 void SupportRule::Calibrate(const PoseSupport& rest) {
   rest_share_ = rest.weaker();
-  // A standstill arm that would fail the rule by half (a segment of it off the person): the
+  // A standstill arm that fails the rule it sets (a segment of it off the person): the
   // calibration does not match the standstill, and no pose can be checked against it.
-  const double lowest = kShareOfRest * kLowestRestShare;
-  required_ = rest_share_ < kShareOfRest * lowest
-                  ? 0
-                  : kShareOfRest * std::max(rest_share_, kLowestRestShare);
+  required_ = kShareOfRest * std::max(rest_share_, kLowestRestShare);
+  if (rest_share_ < required_) required_ = 0;
 }
 
 std::string SupportRule::Verdict(const PoseSupport& now, bool fresh) const {

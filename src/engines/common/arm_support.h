@@ -40,9 +40,9 @@ PoseSupport MeasureSupport(const cv::Mat& shows_arm, const cv::Mat& flank_mask,
 
 class SupportRule {
  public:
-  // The standstill's own arm: its support on the engine's cue. Without a calibration, or when a
-  // segment of the standstill's arm would fail the rule by half (the calibration does not match
-  // the standstill), the rule keeps nothing `ok`.
+  // The standstill's own arm: its support on the engine's cue. Without a calibration, or when the
+  // standstill's arm fails the rule it sets (a segment of it off the person: the calibration does
+  // not match the standstill), the rule keeps nothing `ok`.
   void Calibrate(const PoseSupport& rest);
   bool calibrated() const { return required_ > 0; }
   // The share each segment needs: half the standstill arm's weaker share.
