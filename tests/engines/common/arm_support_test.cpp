@@ -59,7 +59,7 @@ TEST(ArmSupport, APoseOnPixelsThatShowNoArmIsLost) {
   EXPECT_NE(why.find("show no arm"), std::string::npos) << why;
 }
 
-TEST(ArmSupport, AForearmTwentyDegreesOffKeepsTooLittleOfItsLength) {
+TEST(ArmSupport, AForearmFiftyDegreesOffKeepsTooLittleOfItsLength) {
   const cv::Mat arm = ArmMask(-90, -90);
   const PoseSupport s = MeasureSupport(arm, arm, cv::Point(), Pose(-90, -40), Shape());
   EXPECT_LT(s.fore, Calibrated().required());
