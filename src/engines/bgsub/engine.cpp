@@ -12,6 +12,7 @@
 #include "bgsub/masks.h"
 #include "bgsub/pixels.h"
 #include "bgsub/scene.h"
+#include "bgsub/support.h"
 #include "common/arm_gate.h"
 #include "common/engine_internal.h"
 
@@ -163,6 +164,11 @@ class BgsubEngine final : public Engine {
     evidence_.Begin(cal_, region_.size(), options_.rest_deg);
     fitter_.Begin(static_cast<int>(evidence_.weights().step1()), upper, cal_.reach_px - upper,
                   cal_.half_width_px);
+    cv::Mat person, uncovered;
+    pixels_.StandstillPerson(&person);
+    pixels_.Differ(arm_length_bgr_, pixels_.standstill(), &uncovered);
+    pixels_.SetThird(arm_length_bgr_);
+    support_.Begin(cal_, upper, options_.rest_deg, evidence_.rect(), person, uncovered);
   }
 
   void FillSceneOverlay(ArmMeasurement* m) const {
@@ -185,6 +191,7 @@ class BgsubEngine final : public Engine {
       return;
     }
     pixels_.Compare(frame.image(region_), evidence_.rect(), cv::Mat(), &person_, &moved_);
+    pixels_.CompareThird(frame.image(region_), evidence_.rect(), &not_uncovered_);
     // Specks of a textured shirt moving a little (sway, noise, compression) are no arm; a moved
     // arm is a solid region.
     cv::morphologyEx(moved_, moved_, cv::MORPH_OPEN, kSpeckKernel);
@@ -210,6 +217,13 @@ class BgsubEngine final : public Engine {
                                                   : "the forearm fits weakly";
     }
     if (fit.against > 0.25) note += ", with moving pixels against it";
+    // The support rule (bgsub/support.h).
+    const std::string why = support_.Check(support_.Joints(fit.upper_deg, fit.fore_deg, fit.scale),
+                                           person_, moved_, not_uncovered_);
+    if (!why.empty()) {
+      m->note = why;
+      return;
+    }
     const cv::Point2d o = cv::Point2d(region_.tl()) + cv::Point2d(evidence_.window_tl());
     m->phase = MeasurementPhase::kOk;
     m->note = note;
@@ -218,7 +232,7 @@ class BgsubEngine final : public Engine {
     m->fore_deg = fit.fore_deg;
     m->bend_deg = AngleDiff(fit.fore_deg, fit.upper_deg);
     m->bent = std::fabs(m->bend_deg) > kStraightDeg;
-    m->yaw_deg = m->bent ? kNaN : 0.0;
+    m->yaw_deg = m->bent ? kNaN : StraightYaw(fit.scale);
     m->elbow_px = fit.elbow_px + o;
     m->wrist_px = fit.wrist_px + o;
     m->upper_com_px = (*m->shoulder_px + *m->elbow_px) * 0.5;
@@ -274,6 +288,14 @@ class BgsubEngine final : public Engine {
     m->arm_hull = Offset(g.hull, o);
   }
 
+  // A straight arm's yaw from how much both segments are foreshortened against the arm-length
+  // image's straight arm: acos of the shared length scale. A shortening under one pixel of the
+  // reach is within what the fit can measure: no yaw.
+  double StraightYaw(double scale) const {
+    if (scale * cal_.reach_px > cal_.reach_px - 1) return 0;
+    return DegFromRad(std::acos(std::clamp(scale, 0.0, 1.0)));
+  }
+
   // yaw = acos(a/b) (5.2.6): a from this frame, b from the arm-length image.
   double Yaw(const bgsub::ArmGeometry& g) const {
     const double a = g.axes.major, b = scene_.ref_major_px;
@@ -306,7 +328,9 @@ class BgsubEngine final : public Engine {
   bgsub::ArmEvidence evidence_;
   bgsub::ArmFitter fitter_;
   cv::Mat person_, moved_;
-  ArmGate gate_;  // honest status: weak evidence or an impossible jump is `lost`
+  cv::Mat not_uncovered_;      // differs from the arm-length image (what the hanging arm covers)
+  bgsub::FitSupport support_;  // an `ok` pose lies on pixels that show an arm now
+  ArmGate gate_;               // honest status: weak evidence or an impossible jump is `lost`
 };
 
 }  // namespace

@@ -1,3 +1,5 @@
+// Length: ArmFitter::FitLengths is one search (the upper arm's peaks, each one's forearm, the
+// refinement, the best distinct other pose, the chosen pose's counts) over one score table.
 #include "bgsub/fit.h"
 
 #include <algorithm>
@@ -61,6 +63,11 @@ constexpr double kFlankGap = 0.5, kFlankFrom = 0.25, kFlankTo = 0.8;
 
 int Wrap360(int deg) { return ((deg % 360) + 360) % 360; }
 
+// The yaws whose foreshortened lengths the directions are fitted with, and the largest yaw the
+// lengths are refined to (degrees). Past about 75 degrees a segment is a blob: no direction.
+constexpr double kCoarseYawDeg[] = {0, 25, 40, 55};
+constexpr int kMaxYawDeg = 75;
+
 }  // namespace
 
 void ArmEvidence::Begin(const ArmCalibration& cal, const cv::Size& region, double rest_deg) {
@@ -94,23 +101,29 @@ void ArmEvidence::Update(const cv::Mat& person, const cv::Mat& moved) {
   cv::LUT(code_, kTable, out);
 }
 
-std::vector<ArmFitter::Ray> ArmFitter::MakeRays(int stride, double t0, double t1,
-                                                double half_width) {
-  std::vector<Ray> rays(360);
+ArmFitter::Ray ArmFitter::MakeRay(int stride, int deg, double t0, double t1, double half_width) {
+  Ray ray;
   // Lines along the segment across most of its width: a ray off the arm's axis loses its outer
   // samples, so a straight arm is fitted along its axis and not bent within its own thickness.
   std::vector<double> across{0};
   if (half_width >= 2)
     across = {-kAcrossOuter * half_width, -kAcrossInner * half_width, 0, kAcrossInner * half_width,
               kAcrossOuter * half_width};
-  for (int k = 0; k < 360; ++k) {
-    const cv::Point2d d = DirectionVector(k), n(-d.y, d.x);
-    for (double t = t0; t <= t1; t += 1.0) {
-      for (double a : across) {
-        const cv::Point2d p = d * t + n * a;
-        rays[static_cast<std::size_t>(k)].offsets.push_back(cvRound(p.y) * stride + cvRound(p.x));
-      }
+  const cv::Point2d d = DirectionVector(deg), n(-d.y, d.x);
+  for (double t = t0; t <= t1; t += 1.0) {
+    for (double a : across) {
+      const cv::Point2d p = d * t + n * a;
+      ray.offsets.push_back(cvRound(p.y) * stride + cvRound(p.x));
     }
+  }
+  return ray;
+}
+
+std::vector<ArmFitter::Ray> ArmFitter::MakeRays(int stride, double t0, double t1,
+                                                double half_width) {
+  std::vector<Ray> rays(360);
+  for (int k = 0; k < 360; ++k) {
+    rays[static_cast<std::size_t>(k)] = MakeRay(stride, k, t0, t1, half_width);
   }
   return rays;
 }
@@ -147,19 +160,29 @@ double ArmFitter::Clutter(const cv::Mat& weights, int from, int deg,
   return clearer;
 }
 
+ArmFitter::Lengths ArmFitter::MakeLengths(double scale) const {
+  Lengths l;
+  l.upper = scale * upper_len_;
+  l.fore = scale * fore_len_;
+  const double hw = half_width_;
+  // The upper arm from one arm radius out (its first part is the shoulder, under the standstill's
+  // arm), the forearm from half a radius past the elbow to the fingertip.
+  l.upper_rays = MakeRays(stride_, std::min(hw, 0.5 * l.upper), l.upper, hw);
+  l.fore_rays = MakeRays(stride_, std::min(0.5 * hw, 0.5 * l.fore), l.fore, hw);
+  for (int i = 0; i < 2; ++i) {
+    l.upper_flank[i] = MakeFlanks(stride_, l.upper, hw, i == 0 ? 1 : -1);
+    l.fore_flank[i] = MakeFlanks(stride_, l.fore, hw, i == 0 ? 1 : -1);
+  }
+  return l;
+}
+
 void ArmFitter::Begin(int stride, double upper_len, double fore_len, double half_width) {
   stride_ = stride;
   upper_len_ = upper_len;
   fore_len_ = fore_len;
   half_width_ = half_width;
-  // The upper arm from one arm radius out (its first part is the shoulder, under the standstill's
-  // arm), the forearm from half a radius past the elbow to the fingertip.
-  upper_ = MakeRays(stride, std::min(half_width, 0.5 * upper_len), upper_len, half_width);
-  fore_ = MakeRays(stride, std::min(0.5 * half_width, 0.5 * fore_len), fore_len, half_width);
-  for (int i = 0; i < 2; ++i) {
-    upper_flank_[i] = MakeFlanks(stride, upper_len, half_width, i == 0 ? 1 : -1);
-    fore_flank_[i] = MakeFlanks(stride, fore_len, half_width, i == 0 ? 1 : -1);
-  }
+  lengths_.clear();
+  for (double yaw : kCoarseYawDeg) lengths_.push_back(MakeLengths(std::cos(RadFromDeg(yaw))));
 }
 
 int ArmFitter::Score(const cv::Mat& weights, int from, int deg,
@@ -180,20 +203,68 @@ void ArmFitter::Count(const cv::Mat& weights, int from, int deg, const std::vect
   }
 }
 
-const cv::Mat& ArmFitter::WithoutUpper(const cv::Mat& weights, const cv::Point& origin,
-                                       int deg) const {
+const cv::Mat& ArmFitter::WithoutUpper(const cv::Mat& weights, const cv::Point& origin, int deg,
+                                       double len) const {
   weights.copyTo(without_upper_);
-  const cv::Point2d elbow = cv::Point2d(origin) + DirectionVector(deg) * upper_len_;
+  const cv::Point2d elbow = cv::Point2d(origin) + DirectionVector(deg) * len;
   cv::line(without_upper_, origin, elbow, cv::Scalar(0), 2 * static_cast<int>(half_width_) + 1);
   return without_upper_;
 }
 
 ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
+  ArmFit best;
+  if (lengths_.empty() || weights.empty()) return best;
+  // The lengths that fit best: beyond the arm's end lie the room's pixels, which count against
+  // it, and a shorter arm leaves the end's pixels out. Of equal scores the longer arm.
+  int best_score = std::numeric_limits<int>::min();
+  for (const Lengths& l : lengths_) {
+    int score = 0;
+    const ArmFit fit = FitLengths(weights, origin, l, &score);
+    if (fit.found && score > best_score) {
+      best = fit;
+      best_score = score;
+    }
+  }
+  if (best.found) RefineScale(weights, origin, &best);
+  return best;
+}
+
+void ArmFitter::RefineScale(const cv::Mat& weights, const cv::Point& origin, ArmFit* fit) const {
+  const int from = origin.y * stride_ + origin.x;
+  const int u = Wrap360(static_cast<int>(std::lround(fit->upper_deg)));
+  const int f = Wrap360(static_cast<int>(std::lround(fit->fore_deg)));
+  const double hw = half_width_;
+  int best_score = std::numeric_limits<int>::min();
+  double best_scale = fit->scale;
+  for (int yaw = 0; yaw <= kMaxYawDeg; ++yaw) {
+    const double scale = std::cos(RadFromDeg(yaw));
+    const double ul = scale * upper_len_, fl = scale * fore_len_;
+    const Ray upper = MakeRay(stride_, u, std::min(hw, 0.5 * ul), ul, hw);
+    const Ray fore = MakeRay(stride_, f, std::min(0.5 * hw, 0.5 * fl), fl, hw);
+    const cv::Point2d e = DirectionVector(u) * ul;
+    const int elbow = from + cvRound(e.y) * stride_ + cvRound(e.x);
+    const schar* w = weights.ptr<schar>();
+    const schar* wr = WithoutUpper(weights, origin, u, ul).ptr<schar>();
+    int score = 0;
+    for (int off : upper.offsets) score += w[from + off];
+    for (int off : fore.offsets) score += wr[elbow + off];
+    if (score > best_score) {
+      best_score = score;
+      best_scale = scale;
+    }
+  }
+  fit->scale = best_scale;
+  fit->elbow_px = cv::Point2d(origin) + DirectionVector(u) * (best_scale * upper_len_);
+  fit->wrist_px = fit->elbow_px + DirectionVector(f) * (best_scale * fore_len_);
+}
+
+ArmFit ArmFitter::FitLengths(const cv::Mat& weights, const cv::Point& origin, const Lengths& l,
+                             int* score) const {
   ArmFit fit;
-  if (upper_.empty() || weights.empty()) return fit;
   const int from = origin.y * stride_ + origin.x;
   std::vector<int> up(360);
-  for (int k = 0; k < 360; ++k) up[static_cast<std::size_t>(k)] = Score(weights, from, k, upper_);
+  for (int k = 0; k < 360; ++k)
+    up[static_cast<std::size_t>(k)] = Score(weights, from, k, l.upper_rays);
   struct Pose {
     int up, fore, score;
   };
@@ -205,15 +276,15 @@ ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
             std::abs(AngleDiff(f, u)) < std::abs(AngleDiff(than.fore, than.up)));
   };
   auto elbow_at = [&](int deg) {
-    const cv::Point2d e = DirectionVector(deg) * upper_len_;
+    const cv::Point2d e = DirectionVector(deg) * l.upper;
     return from + cvRound(e.y) * stride_ + cvRound(e.x);
   };
   for (int u : Peaks(up, 4, 4)) {
     const int e = elbow_at(u);
-    const cv::Mat& rest = WithoutUpper(weights, origin, u);
+    const cv::Mat& rest = WithoutUpper(weights, origin, u, l.upper);
     Pose best{u, u, std::numeric_limits<int>::min() / 2};
     for (int f = u - 160; f <= u + 160; f += 2) {
-      const int s = Score(rest, e, f, fore_);
+      const int s = Score(rest, e, f, l.fore_rays);
       if (better(s, u, f, best)) best = {u, Wrap360(f), s};
     }
     best.score += up[static_cast<std::size_t>(u)];
@@ -227,10 +298,10 @@ ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
   const Pose coarse = best;
   for (int du = -1; du <= 1; ++du) {
     const int u = Wrap360(coarse.up + du), e = elbow_at(u);
-    const cv::Mat& rest = WithoutUpper(weights, origin, u);
+    const cv::Mat& rest = WithoutUpper(weights, origin, u, l.upper);
     for (int df = -2; df <= 2; ++df) {
       const int f = Wrap360(coarse.fore + df);
-      const int s = up[static_cast<std::size_t>(u)] + Score(rest, e, f, fore_);
+      const int s = up[static_cast<std::size_t>(u)] + Score(rest, e, f, l.fore_rays);
       if (better(s, u, f, best)) best = {u, f, s};
     }
   }
@@ -240,27 +311,30 @@ ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
     if (std::abs(AngleDiff(poses[i].up, best.up)) > 15) second = std::max(second, poses[i].score);
   }
   const int e = elbow_at(best.up);
-  const cv::Mat& rest = WithoutUpper(weights, origin, best.up);
+  const cv::Mat& rest = WithoutUpper(weights, origin, best.up, l.upper);
   for (int f = best.up - 160; f <= best.up + 160; f += 2) {
     if (std::abs(AngleDiff(f, best.fore)) <= 15) continue;
-    second = std::max(second, up[static_cast<std::size_t>(best.up)] + Score(rest, e, f, fore_));
+    second =
+        std::max(second, up[static_cast<std::size_t>(best.up)] + Score(rest, e, f, l.fore_rays));
   }
   int upos = 0, uneg = 0, un = 0, fpos = 0, fneg = 0, fn = 0;
-  Count(weights, from, best.up, upper_, &upos, &uneg, &un);
-  Count(weights, e, best.fore, fore_, &fpos, &fneg, &fn);
-  fit.clutter = std::max(Clutter(weights, from, best.up, upper_flank_),
-                         Clutter(weights, e, best.fore, fore_flank_));
+  Count(weights, from, best.up, l.upper_rays, &upos, &uneg, &un);
+  Count(weights, e, best.fore, l.fore_rays, &fpos, &fneg, &fn);
+  fit.clutter = std::max(Clutter(weights, from, best.up, l.upper_flank),
+                         Clutter(weights, e, best.fore, l.fore_flank));
   fit.found = true;
   fit.upper_deg = Wrap180(best.up);
   fit.fore_deg = Wrap180(best.fore);
-  fit.elbow_px = cv::Point2d(origin) + DirectionVector(best.up) * upper_len_;
-  fit.wrist_px = fit.elbow_px + DirectionVector(best.fore) * fore_len_;
+  fit.scale = l.upper / upper_len_;
+  fit.elbow_px = cv::Point2d(origin) + DirectionVector(best.up) * l.upper;
+  fit.wrist_px = fit.elbow_px + DirectionVector(best.fore) * l.fore;
   fit.upper_support = un > 0 ? static_cast<double>(upos) / un : 0;
   fit.fore_support = fn > 0 ? static_cast<double>(fpos) / fn : 0;
   fit.against = un + fn > 0 ? static_cast<double>(uneg + fneg) / (un + fn) : 1;
   fit.margin = second > (std::numeric_limits<int>::min() / 4)
                    ? static_cast<double>(best.score - second) / (un + fn)
                    : 2.0;
+  *score = best.score;
   return fit;
 }
 

@@ -1,9 +1,11 @@
 // Background-subtraction engine, default path: the arm as two segments of calibrated length fitted
-// to per-pixel evidence. Every pixel the arm can reach from the shoulder gets a weight: the person
-// where the standstill was not (the arm now there) counts for it, the empty room against it, the
-// standstill's own arm unchanged for it, the unchanged body neither way. The upper arm is the ray
-// from the shoulder, the forearm (with the hand) the ray from the elbow at the upper arm's length,
-// and the pair with the most weight along both wins. Private to src/engines.
+// to per-pixel evidence; both segments may be foreshortened alike (an arm turned out of the image
+// plane by a yaw: each seen at cos(yaw) of its length), and the yaw that fits best is measured.
+// Every pixel the arm can reach from the shoulder gets a weight: the person where the standstill
+// was not (the arm now there) counts for it, the empty room against it, the standstill's own arm
+// unchanged for it, the unchanged body neither way. The upper arm is the ray from the shoulder, the
+// forearm (with the hand) the ray from the elbow at the upper arm's length, and the pair with the
+// most weight along both wins. Private to src/engines.
 #pragma once
 
 #include <vector>
@@ -48,6 +50,8 @@ struct ArmFit {
   // a mask flooded by light or texture covers both.
   double clutter = 0;
   double margin = 0;  // mean weight per sample over the best distinct other pose
+  // Both segments seen at this share of their calibrated lengths (cos of the yaw, 0..1].
+  double scale = 1;
 };
 
 class ArmFitter {
@@ -60,6 +64,19 @@ class ArmFitter {
   struct Ray {
     std::vector<int> offsets;  // sample offsets from the ray's origin, in weights' elements
   };
+  // The rays of one pair of segment lengths (the calibrated ones foreshortened by one yaw).
+  struct Lengths {
+    double upper = 0, fore = 0;
+    std::vector<Ray> upper_rays, fore_rays;  // one per degree, 0..359 (DirectionVector)
+    std::vector<Ray> upper_flank[2], fore_flank[2];
+  };
+  Lengths MakeLengths(double scale) const;
+  // The best pose with the segments of `l`; its score in *score.
+  ArmFit FitLengths(const cv::Mat& weights, const cv::Point& origin, const Lengths& l,
+                    int* score) const;
+  // The yaw, to a degree, that fits `fit`'s directions best: its lengths and joints.
+  void RefineScale(const cv::Mat& weights, const cv::Point& origin, ArmFit* fit) const;
+  static Ray MakeRay(int stride, int deg, double t0, double t1, double half_width);
   static std::vector<Ray> MakeRays(int stride, double t0, double t1, double half_width);
   // Lines beside a segment on one side (+1 left of its direction, -1 right), outside its width,
   // over its middle part.
@@ -70,15 +87,16 @@ class ArmFitter {
   void Count(const cv::Mat& weights, int from, int deg, const std::vector<Ray>& rays, int* pos,
              int* neg, int* n) const;
 
-  // `weights` with the upper arm at `deg` cleared: the forearm is scored on what the upper arm
-  // does not already explain (a forearm folded back over it would count its pixels twice).
-  const cv::Mat& WithoutUpper(const cv::Mat& weights, const cv::Point& origin, int deg) const;
+  // `weights` with an upper arm of `len` at `deg` cleared: the forearm is scored on what the
+  // upper arm does not already explain (a forearm folded back over it would count its pixels
+  // twice).
+  const cv::Mat& WithoutUpper(const cv::Mat& weights, const cv::Point& origin, int deg,
+                              double len) const;
 
   int stride_ = 0;
   double upper_len_ = 0, fore_len_ = 0, half_width_ = 0;
   mutable cv::Mat without_upper_;  // WithoutUpper's buffer
-  std::vector<Ray> upper_, fore_;  // one per degree, 0..359 (DirectionVector)
-  std::vector<Ray> upper_flank_[2], fore_flank_[2];
+  std::vector<Lengths> lengths_;   // the calibrated lengths first, then shorter ones
 };
 
 }  // namespace armmimic::bgsub

@@ -232,6 +232,18 @@ void PixelModel::Compare(const cv::Mat& bgr, const cv::Rect& rect, const cv::Mat
   Exceeds(frame, scaled_, threshold, &diff_, &any_, person);
 }
 
+void PixelModel::SetThird(const cv::Mat& bgr) {
+  const cv::Scalar g = GlobalGain(bgr, standstill_);
+  bgr.convertTo(third_f_, CV_32FC3);
+  cv::multiply(third_f_, cv::Scalar(1 / g[0], 1 / g[1], 1 / g[2]), third_f_);
+}
+
+void PixelModel::CompareThird(const cv::Mat& bgr, const cv::Rect& rect, cv::Mat* differs) {
+  cv::multiply(third_f_(rect), gain_map_(rect), scaled_f_);
+  scaled_f_.convertTo(scaled_, CV_8UC3);
+  Exceeds(bgr(rect), scaled_, threshold_(rect), &diff_, &any_, differs);
+}
+
 void PixelModel::StandstillPerson(cv::Mat* mask) const {
   cv::Mat scaled, diff, any;
   cv::multiply(background_, standstill_gain_, scaled);

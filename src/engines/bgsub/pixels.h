@@ -31,6 +31,12 @@ class PixelModel {
   // (CV_8UC1 of the whole image, may be empty) marks pixels left out of the light's estimate.
   void Compare(const cv::Mat& bgr, const cv::Rect& rect, const cv::Mat& ignore, cv::Mat* person,
                cv::Mat* moved);
+  // A third reference, `bgr` (CV_8UC3, the images' size; e.g. the arm-length image), taken into
+  // the standstill's light by one gain per channel.
+  void SetThird(const cv::Mat& bgr);
+  // After Compare on the same frame: the pixels of `bgr`'s part `rect` that differ from the third
+  // reference in this frame's light (CV_8UC1 0/255, size of `rect`).
+  void CompareThird(const cv::Mat& bgr, const cv::Rect& rect, cv::Mat* differs);
   // The person of the standstill: pixels of the standstill that differ from the empty room.
   void StandstillPerson(cv::Mat* mask) const;
   // Pixels of `bgr` (a whole image, e.g. the arm-length image) that differ from `reference`
@@ -46,6 +52,7 @@ class PixelModel {
   int count_ = 0;
   cv::Mat background_, standstill_;      // CV_8UC3
   cv::Mat background_f_, standstill_f_;  // CV_32FC3; the background in the standstill's light
+  cv::Mat third_f_;                      // CV_32FC3: SetThird's image in the standstill's light
   cv::Mat threshold_;                    // CV_8UC3: the per-pixel threshold, one copy per channel
   cv::Scalar standstill_gain_;           // of the standstill over the empty room
   double noise_ = 0;
