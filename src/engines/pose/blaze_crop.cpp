@@ -50,6 +50,16 @@ bool CropFromMoveNet(const PoseKeypoints& k, double min_score, BlazeCrop* crop) 
   return true;
 }
 
+bool SeedCrop(PoseNetwork* movenet, BlazePoseNetwork* blaze, const cv::Mat& bgr, double min_score,
+              BlazeCrop* crop) {
+  const PoseKeypoints k = movenet->Run(bgr, WholeImageCrop(bgr.size()));
+  if (!CropFromMoveNet(k, min_score, crop)) return false;
+  const BlazeLandmarks first = blaze->Run(bgr, *crop);
+  if (first.poseflag < kMinPoseFlag) return false;
+  *crop = CropFromAuxiliary(first.px[kBlazeCentre], first.px[kBlazeTop]);
+  return true;
+}
+
 PoseKeypoints AsMoveNetKeypoints(const BlazeLandmarks& b) {
   static constexpr int kFrom[kPoseKeypointCount] = {
       kBlazeNose,         kBlazeLeftEye,       kBlazeRightEye,  kBlazeLeftEar,    kBlazeRightEar,

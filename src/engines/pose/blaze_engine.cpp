@@ -56,16 +56,9 @@ class BlazePoseEngine : public Engine {
   AngleMeta Describe() const override { return {{"model", internal::kBlazePoseModelName}}; }
 
  private:
-  // The first crop: from MoveNet on the whole image, then once more from BlazePose's own
-  // auxiliary landmarks in that crop. False when nobody is seen.
+  // The first crop (SeedCrop). False when nobody is seen.
   bool Seed(const cv::Mat& image) {
-    const PoseKeypoints k = movenet_->Run(image, WholeImageCrop(image.size()));
-    if (!internal::CropFromMoveNet(k, o_.crop_score, &crop_)) return false;
-    const internal::BlazeLandmarks first = blaze_->Run(image, crop_);
-    if (first.poseflag < internal::kMinPoseFlag) return false;
-    crop_ = internal::CropFromAuxiliary(first.px[internal::kBlazeCentre],
-                                        first.px[internal::kBlazeTop]);
-    return true;
+    return internal::SeedCrop(movenet_.get(), blaze_.get(), image, o_.crop_score, &crop_);
   }
 
   // Without a first-second choice: the arm more visible now.

@@ -30,10 +30,6 @@ class BoneLengthGate {
   double running_m_ = 0;
 };
 
-// MediaPipe's threshold on the person flag (BLAZEPOSE_POSE_PRESENCE_SCORE): below it nobody is
-// in the crop, and the next frame is placed afresh.
-inline constexpr double kMinPoseFlag = 0.5;
-
 class BlazeArmGate {
  public:
   explicit BlazeArmGate(const PoseOptions& options) : o_(options) {}

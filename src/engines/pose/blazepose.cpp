@@ -90,10 +90,11 @@ cv::Mat BlazePoseNetwork::MakeInput(const cv::Mat& bgr, const BlazeCrop& crop) {
   return out;
 }
 
-BlazeLandmarks BlazePoseNetwork::Run(const cv::Mat& bgr, const BlazeCrop& crop) {
+BlazeLandmarks BlazePoseNetwork::RunInput(const cv::Mat& rgb256) {
+  CV_Assert(rgb256.type() == CV_8UC3 && rgb256.rows == kInputSize && rgb256.cols == kInputSize);
   // The input scaled to 0..1, as blazepose_tfjs's shiftImageValue(image, [0, 1]).
-  const cv::Mat blob = cv::dnn::blobFromImage(MakeInput(bgr, crop), 1.0 / 255, cv::Size(),
-                                              cv::Scalar(), false, false, CV_32F);
+  const cv::Mat blob =
+      cv::dnn::blobFromImage(rgb256, 1.0 / 255, cv::Size(), cv::Scalar(), false, false, CV_32F);
   impl_->net.setInput(blob);
   std::vector<cv::Mat> outs;
   impl_->net.forward(outs, impl_->outputs);
@@ -104,17 +105,23 @@ BlazeLandmarks BlazePoseNetwork::Run(const cv::Mat& bgr, const BlazeCrop& crop) 
   BlazeLandmarks b;
   b.poseflag = outs[2].ptr<float>()[0];
   for (int i = 0; i < kBlazeLandmarkCount; ++i) {
-    b.px[i] = CropToImage(crop, ld[5 * i] / kInputSize, ld[5 * i + 1] / kInputSize);
+    b.px[i] = {ld[5 * i], ld[5 * i + 1]};
     b.visibility[i] = Sigmoid(ld[5 * i + 3]);
     b.presence[i] = Sigmoid(ld[5 * i + 4]);
   }
+  for (int i = 0; i < kBlazeBodyCount; ++i) {
+    b.world[i] = {world[3 * i], world[3 * i + 1], world[3 * i + 2]};
+  }
+  return b;
+}
+
+BlazeLandmarks BlazePoseNetwork::Run(const cv::Mat& bgr, const BlazeCrop& crop) {
+  BlazeLandmarks b = RunInput(MakeInput(bgr, crop));
+  for (cv::Point2d& p : b.px) p = CropToImage(crop, p.x / kInputSize, p.y / kInputSize);
   // World landmarks are in the crop's axes: turned back by its rotation (MediaPipe's
   // WorldLandmarkProjectionCalculator); z is not affected.
   const double c = std::cos(crop.rotation), s = std::sin(crop.rotation);
-  for (int i = 0; i < kBlazeBodyCount; ++i) {
-    const double x = world[3 * i], y = world[3 * i + 1];
-    b.world[i] = {c * x - s * y, s * x + c * y, world[3 * i + 2]};
-  }
+  for (cv::Vec3d& w : b.world) w = {c * w[0] - s * w[1], s * w[0] + c * w[1], w[2]};
   return b;
 }
 

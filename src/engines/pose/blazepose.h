@@ -20,6 +20,9 @@ inline constexpr const char* kBlazePoseJson = "blazepose-full.json";
 inline constexpr const char* kBlazePoseWeights = "blazepose-full.bin";
 inline constexpr int kBlazeLandmarkCount = 39;  // 33 body landmarks, then auxiliary ones
 inline constexpr int kBlazeBodyCount = 33;
+// MediaPipe's threshold on the person flag (BLAZEPOSE_POSE_PRESENCE_SCORE): below it nobody is
+// in the crop, and the next frame is placed afresh.
+inline constexpr double kMinPoseFlag = 0.5;
 // The landmarks the engine reads (BlazePose's order; left/right are the person's own sides).
 enum BlazeLandmark {
   kBlazeNose = 0,
@@ -68,6 +71,9 @@ class BlazePoseNetwork {
   // builds the network; errors name the file and how to get it.
   static std::unique_ptr<BlazePoseNetwork> Load(const std::string& flag_dir, Status* status);
   BlazeLandmarks Run(const cv::Mat& bgr, const BlazeCrop& crop);
+  // The same from the network's own 256x256 RGB input, in the crop's terms: landmarks in input
+  // pixels (0..256), world landmarks in the crop's axes (parity checks against other runtimes).
+  BlazeLandmarks RunInput(const cv::Mat& rgb256);
   // The 256x256 RGB input the network sees for `crop` (black outside the image).
   static cv::Mat MakeInput(const cv::Mat& bgr, const BlazeCrop& crop);
   static constexpr int kInputSize = 256;
@@ -85,6 +91,11 @@ BlazeCrop CropFromAuxiliary(const cv::Point2d& centre, const cv::Point2d& top);
 // centre -> the shoulders' centre points up, and wide enough for every keypoint scored above
 // `min_score`. False when the hips or shoulders are not seen.
 bool CropFromMoveNet(const PoseKeypoints& k, double min_score, BlazeCrop* crop);
+// The crop of a frame seen afresh: from MoveNet on the whole image (CropFromMoveNet), then once
+// more from BlazePose's own auxiliary landmarks in that crop, as the engine's first frame. False
+// when nobody is seen (no MoveNet torso, or BlazePose's person flag below 0.5).
+bool SeedCrop(PoseNetwork* movenet, BlazePoseNetwork* blaze, const cv::Mat& bgr, double min_score,
+              BlazeCrop* crop);
 // A point of the crop (u, v in 0..1 across and down it) in image pixels.
 cv::Point2d CropToImage(const BlazeCrop& crop, double u, double v);
 // BlazePose's landmarks in MoveNet's 17-keypoint order (the overlay and the side choice), their

@@ -1,7 +1,8 @@
-// The pose engine with BlazePose (--network blazepose): a scene with nobody in it gives lost
-// rows, and on the real clip the 3-D arm directions and elbow angles are measured against
-// MediaPipe's own world landmarks (pose_squats.world.tsv). Compiled in only when both models
-// are there (tests/engines/CMakeLists.txt); the real-clip test only when the clip is.
+// The pose engine with BlazePose (--network blazepose): the network against TensorFlow.js on the
+// same crops (reference landmarks made by scripts/blazepose-parity.sh), a scene with nobody in it
+// gives lost rows, and on the real clip the 3-D arm directions and elbow angles are measured
+// against MediaPipe's own world landmarks (pose_squats.world.tsv). Compiled in only when both
+// models are there (tests/engines/CMakeLists.txt); the real-clip test only when the clip is.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -14,6 +15,8 @@
 #include "armmimic/engines/engine.h"
 #include "armmimic/synth/arm_scene.h"
 #include "armmimic/synth/robustness_stats.h"
+#include "pose/blazepose.h"
+#include "test_util.h"
 
 #if defined(ARMMIMIC_HAVE_POSE_MODEL) && defined(ARMMIMIC_HAVE_BLAZEPOSE_MODEL)
 
@@ -83,6 +86,69 @@ cv::Vec3d FromAzimuthElevation(double az_deg, double el_deg) {
 
 double AngleBetweenDeg(const cv::Vec3d& a, const cv::Vec3d& b) {
   return DegFromRad(std::atan2(cv::norm(a.cross(b)), a.dot(b)));
+}
+
+// The same inputs (each frame's crop as the engine places it afresh) through TensorFlow.js and
+// through cv::dnn: the world landmarks within 1 cm and the arm's 3-D directions within 1 degree
+// at the median, the 2-D landmarks within a pixel of the 256x256 input.
+TEST(BlazePoseParityTest, TheRealClipAgreesWithTensorFlowJs) {
+  std::ifstream in(test::SourcePath("tests/engines/data/blazepose_parity_real.tsv"));
+  ASSERT_TRUE(in);
+  Status st;
+  auto video = VideoSource::Open(std::string(ARMMIMIC_REAL_DIR) + "/pose_squats.mp4", &st);
+  ASSERT_TRUE(video) << st.message();
+  auto movenet = PoseNetwork::Load("", &st);
+  ASSERT_TRUE(movenet) << st.message();
+  auto blaze = internal::BlazePoseNetwork::Load("", &st);
+  ASSERT_TRUE(blaze) << st.message();
+  std::vector<double> world_cm, direction_deg, px;
+  std::string line;
+  int frames = 0;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    std::string name;
+    double flag;
+    fields >> name >> flag;
+    std::array<cv::Point2d, internal::kBlazeBodyCount> ref_px;
+    std::array<cv::Vec3d, internal::kBlazeBodyCount> ref_world;
+    for (int i = 0; i < internal::kBlazeBodyCount; ++i) {
+      fields >> ref_px[i].x >> ref_px[i].y >> ref_world[i][0] >> ref_world[i][1] >> ref_world[i][2];
+    }
+    ASSERT_TRUE(fields) << name;
+    Frame f;
+    ASSERT_TRUE(video->Seek(std::stoi(name.substr(name.find('_') + 1))).ok());
+    ASSERT_TRUE(video->Read(&f, &st)) << st.message();
+    internal::BlazeCrop crop;
+    ASSERT_TRUE(internal::SeedCrop(movenet.get(), blaze.get(), f.image, 0.2, &crop)) << name;
+    const internal::BlazeLandmarks b =
+        blaze->RunInput(internal::BlazePoseNetwork::MakeInput(f.image, crop));
+    EXPECT_NEAR(b.poseflag, flag, 0.01) << name;
+    for (int i = 0; i < internal::kBlazeBodyCount; ++i) {
+      world_cm.push_back(100 * cv::norm(b.world[i] - ref_world[i]));
+      px.push_back(cv::norm(b.px[i] - ref_px[i]));
+    }
+    const int arm[2][3] = {
+        {internal::kBlazeLeftShoulder, internal::kBlazeLeftElbow, internal::kBlazeLeftWrist},
+        {internal::kBlazeRightShoulder, internal::kBlazeRightElbow, internal::kBlazeRightWrist}};
+    for (const auto& j : arm) {
+      for (int k = 0; k < 2; ++k) {
+        direction_deg.push_back(AngleBetweenDeg(b.world[j[k + 1]] - b.world[j[k]],
+                                                ref_world[j[k + 1]] - ref_world[j[k]]));
+      }
+    }
+    ++frames;
+  }
+  ASSERT_GE(frames, 10);
+  std::printf(
+      "BlazePose parity, %d frames: world landmarks median %.2f cm (max %.2f), arm directions "
+      "median %.2f degrees (max %.2f), 2-D landmarks median %.2f px (max %.2f)\n",
+      frames, synth::Quantile(world_cm, 0.5), synth::Quantile(world_cm, 1.0),
+      synth::Quantile(direction_deg, 0.5), synth::Quantile(direction_deg, 1.0),
+      synth::Quantile(px, 0.5), synth::Quantile(px, 1.0));
+  EXPECT_LE(synth::Quantile(world_cm, 0.5), 1.0);
+  EXPECT_LE(synth::Quantile(direction_deg, 0.5), 1.0);
+  EXPECT_LE(synth::Quantile(px, 0.5), 1.0);
 }
 
 // Both arms over the whole clip: the 3-D direction errors of the ok rows' segments against
