@@ -43,6 +43,11 @@ void BlazeArmGate::Decide(const BlazeLandmarks& b, PoseSide side, ArmMeasurement
     m->note = "no person in the crop (person flag " + FormatNumber(b.poseflag, 2) + ")";
     return;
   }
+  const double presence = std::min({b.presence[s], b.presence[e], b.presence[w]});
+  if (presence < o_.min_score) {
+    m->note = "arm outside the crop (presence " + FormatNumber(presence, 2) + ")";
+    return;
+  }
   if (visibility < o_.min_score) {
     m->note = "arm not seen (visibility " + FormatNumber(visibility, 2) + ")";
     return;

@@ -1,7 +1,7 @@
 // When a BlazePose row is lost (docs/pose.md, "BlazePose: when a row is lost"): the person flag
-// is low, a joint of the arm is not visible, or a bone's 3-D length jumps far from its running
-// value (the network has mistaken a joint). Otherwise the row carries both the 2-D directions
-// (the image landmarks) and the 3-D ones (the world landmarks).
+// is low, a joint of the arm is outside the crop or not visible, or a bone's 3-D length jumps far
+// from its running value (the network has mistaken a joint). Otherwise the row carries both the 2-D
+// directions (the image landmarks) and the 3-D ones (the world landmarks).
 #pragma once
 
 #include <deque>
