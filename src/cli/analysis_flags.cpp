@@ -25,6 +25,7 @@ const std::map<std::string, std::set<EngineKind>>& AnalysisFlags::EngineFlags() 
       {"--wrist", {EngineKind::kLk}},
       {"--roi", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kPose}},
       {"--side", {EngineKind::kPose, EngineKind::kLk}},
+      {"--network", {EngineKind::kPose}},
       {"--model", {EngineKind::kPose, EngineKind::kLk}},
       {"--auto-calibrate", {EngineKind::kLk}},
       {"--initial-upper", {EngineKind::kLk}},
@@ -127,8 +128,11 @@ void AnalysisFlags::Register(ArgParser& p) {
     const auto& side = Row(PoseOptionFields(), "side");
     p.String(side.flag, &side_name_, "left|right", RowHelp(side, For("pose, lk --auto-calibrate")));
   }
+  AddRowFlag(p, Row(PoseOptionFields(), "network"), &e.pose, For("pose"));
   p.String("--model", &f.model_dir, "DIR",
-           "pose, lk --auto-calibrate: the folder holding movenet-lightning.json and .bin");
+           "pose, lk --auto-calibrate: the folder holding the network's files "
+           "(movenet-lightning.json and .bin; blazepose-full.json and .bin as well for "
+           "--network blazepose)");
   p.Flag("--auto-calibrate", &f.auto_calibrate,
          "lk: the shoulder, elbow and wrist in frame F from the pose network");
   p.Flag("--thesis", &thesis_, "run the thesis method only, without the improvements");
@@ -217,6 +221,7 @@ void AnalysisFlags::ApplyGiven(const ArgParser& p, AnalysisOptions* o) const {
     o->engine.lk.standstill_frames = f.engine.lk.standstill_frames;
   }
   if (p.Given("--threshold")) o->engine.bgsub.threshold = f.engine.bgsub.threshold;
+  if (p.Given("--network")) o->engine.pose.network = f.engine.pose.network;
   if (p.Given("--initial-upper")) o->engine.lk.initial_upper_deg = f.engine.lk.initial_upper_deg;
   if (p.Given("--initial-fore")) o->engine.lk.initial_fore_deg = f.engine.lk.initial_fore_deg;
   // An explicit grey window is used as given; otherwise the marker engine may shift it when the

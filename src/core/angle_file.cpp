@@ -1,6 +1,6 @@
 // Angle file v1: formatting, the line-by-line reader with its checks, and the atomic writer.
 // Length: ParseAngleFile is one pass over the lines whose checks share the header's column
-// positions.
+// positions, and the optional columns' checks read those same positions.
 #include "armmimic/core/angle_file.h"
 #include "armmimic/core/text.h"
 
@@ -19,6 +19,8 @@ namespace armmimic {
 const char* const kAngleColumns[11] = {"frame",    "time_s",  "status",   "upper_deg",
                                        "fore_deg", "yaw_deg", "bend_deg", "upper_cx",
                                        "upper_cy", "fore_cx", "fore_cy"};
+const char* const kAngle3dColumns[5] = {"upper_az_deg", "upper_el_deg", "fore_az_deg",
+                                        "fore_el_deg", "elbow_deg"};
 
 namespace {}  // namespace
 
@@ -51,7 +53,7 @@ std::string FormatMetaLine(const AngleMeta& meta) {
 }
 
 std::string FormatAngleRow(const AngleRow& row, bool file_column, bool confidence_column,
-                           bool signed_yaw_column) {
+                           bool signed_yaw_column, bool columns_3d) {
   const bool ok = row.ok();
   auto ang = [&](double v) { return FormatNumber(ok ? v : kNaN, 3); };
   auto px = [&](double v) { return FormatNumber(ok ? v : kNaN, 2); };
@@ -81,8 +83,50 @@ std::string FormatAngleRow(const AngleRow& row, bool file_column, bool confidenc
     s += '\t';
     s += ang(row.yaw_signed_deg);
   }
+  if (columns_3d) {
+    for (double v :
+         {row.upper_az_deg, row.upper_el_deg, row.fore_az_deg, row.fore_el_deg, row.elbow_deg}) {
+      s += '\t';
+      s += ang(v);
+    }
+  }
   return s;
 }
+
+namespace {
+
+// The 3-D columns present (index > 0) of a row: numbers in their ranges, nan in lost rows.
+Status Parse3dColumns(const std::vector<std::string>& f, const std::size_t (&index)[5],
+                      AngleRow* row) {
+  double* values[5] = {&row->upper_az_deg, &row->upper_el_deg, &row->fore_az_deg, &row->fore_el_deg,
+                       &row->elbow_deg};
+  // Azimuths in (-180, 180], elevations in [-90, 90], the elbow in [0, 180].
+  const double lo[5] = {-180, -90, -180, -90, 0};
+  const double hi[5] = {180, 90, 180, 90, 180};
+  const bool lo_open[5] = {true, false, true, false, false};
+  for (int c = 0; c < 5; ++c) {
+    if (index[c] == 0) continue;
+    const std::string& v = f[index[c]];
+    const std::string name = kAngle3dColumns[c];
+    if (!ParseTableNumber(v, true, values[c])) {
+      return Status::Error(name + " \"" + Excerpt(v) +
+                           "\" is not a number (use '.' decimals, or nan)");
+    }
+    const double x = *values[c];
+    if (std::isnan(x)) continue;
+    if (!row->ok()) {
+      return Status::Error("status is lost but " + name +
+                           " is a number (lost rows carry nan angles)");
+    }
+    if ((lo_open[c] ? x <= lo[c] - 1e-9 : x < lo[c] - 1e-9) || x > hi[c] + 1e-9) {
+      return Status::Error(name + " " + Excerpt(v) + " is outside " + (lo_open[c] ? "(" : "[") +
+                           FormatNumber(lo[c], 0) + ", " + FormatNumber(hi[c], 0) + "]");
+    }
+  }
+  return Status::Ok();
+}
+
+}  // namespace
 
 Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFile* out) {
   *out = AngleFile();
@@ -98,6 +142,7 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
   int last_frame = -1;
   bool seen_meta = false;
   std::size_t signed_yaw_index = 0;
+  std::size_t index_3d[5] = {0, 0, 0, 0, 0};
   while (true) {
     // Bounded: never holds more than kMaxAngleLineLength + 1 characters of one line.
     bool too_long = false;
@@ -151,7 +196,11 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
         if (cols[i] == "file") file_index = i;
         if (cols[i] == "confidence") confidence_index = i;
         if (cols[i] == kSignedYawColumn) signed_yaw_index = i;
+        for (int c = 0; c < 5; ++c) {
+          if (cols[i] == kAngle3dColumns[c]) index_3d[c] = i;
+        }
       }
+      for (std::size_t i : index_3d) out->has_3d_columns = out->has_3d_columns || i > 0;
       out->has_file_column = file_index > 0;
       out->has_confidence_column = confidence_index > 0;
       out->has_signed_yaw_column = signed_yaw_index > 0;
@@ -229,6 +278,7 @@ Status ParseAngleFile(std::istream& in, const std::string& source_name, AngleFil
                    std::string(kSignedYawColumn) + " " + Excerpt(v) + " is outside (-180, 180]");
       }
     }
+    if (Status st = Parse3dColumns(f, index_3d, &row); !st) return err(line_no, st.message());
     out->rows.push_back(std::move(row));
   }
   if (!have_header) {
@@ -252,6 +302,7 @@ struct AngleFileWriter::Impl {
   bool file_column = false;
   bool confidence_column = false;
   bool signed_yaw_column = false;
+  bool columns_3d = false;
   bool open = false;
   int rows = 0;
 };
@@ -263,19 +314,22 @@ int AngleFileWriter::rows_written() const { return impl_->rows; }
 
 namespace {
 std::string HeaderText(const AngleMeta& meta, bool file_column, bool confidence_column,
-                       bool signed_yaw_column) {
+                       bool signed_yaw_column, bool columns_3d) {
   std::string s =
       std::string(kAngleFileMagic) + "\n" + FormatMetaLine(meta) + "\n" + kAngleFileUnits + "\n";
   for (int i = 0; i < 11; ++i) s += (i ? "\t" : "") + std::string(kAngleColumns[i]);
   if (confidence_column) s += "\tconfidence";
   if (file_column) s += "\tfile";
   if (signed_yaw_column) s += std::string("\t") + kSignedYawColumn;
+  if (columns_3d) {
+    for (const char* c : kAngle3dColumns) s += std::string("\t") + c;
+  }
   return s + "\n";
 }
 }  // namespace
 
 Status AngleFileWriter::Open(const std::string& path, const AngleMeta& meta, bool file_column,
-                             bool confidence_column, bool signed_yaw_column) {
+                             bool confidence_column, bool signed_yaw_column, bool columns_3d) {
   impl_ = std::make_unique<Impl>();
   Status st = impl_->file.Open(path);
   if (!st) return st;
@@ -284,7 +338,9 @@ Status AngleFileWriter::Open(const std::string& path, const AngleMeta& meta, boo
   impl_->file_column = file_column;
   impl_->confidence_column = confidence_column;
   impl_->signed_yaw_column = signed_yaw_column;
-  const std::string header = HeaderText(meta, file_column, confidence_column, signed_yaw_column);
+  impl_->columns_3d = columns_3d;
+  const std::string header =
+      HeaderText(meta, file_column, confidence_column, signed_yaw_column, columns_3d);
   if (std::fputs(header.c_str(), impl_->file.file()) < 0) {
     return Status::Error(path + ": write failed (" + ErrnoText(errno) + ")");
   }
@@ -298,9 +354,9 @@ Status AngleFileWriter::Write(const AngleRow& row) {
     return Status::Error(impl_->path + ": file name \"" + row.file +
                          "\" contains a tab or newline");
   }
-  const std::string s =
-      FormatAngleRow(row, impl_->file_column, impl_->confidence_column, impl_->signed_yaw_column) +
-      "\n";
+  const std::string s = FormatAngleRow(row, impl_->file_column, impl_->confidence_column,
+                                       impl_->signed_yaw_column, impl_->columns_3d) +
+                        "\n";
   if (std::fputs(s.c_str(), impl_->file.file()) < 0) {
     return Status::Error(impl_->path + ": write failed (" + ErrnoText(errno) + ")");
   }
@@ -327,8 +383,8 @@ Status AngleFileWriter::Commit(bool complete, const std::string& reason) {
   AngleMeta meta = impl_->meta;
   meta.emplace_back("complete", "no");
   if (!reason.empty()) meta.emplace_back("incomplete", reason);
-  const std::string header =
-      HeaderText(meta, impl_->file_column, impl_->confidence_column, impl_->signed_yaw_column);
+  const std::string header = HeaderText(meta, impl_->file_column, impl_->confidence_column,
+                                        impl_->signed_yaw_column, impl_->columns_3d);
   std::fputs(header.c_str(), marked.file());
   std::ifstream rows(impl_->file.temp_path(), std::ios::binary);
   std::string line;

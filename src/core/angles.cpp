@@ -39,4 +39,17 @@ double ResolveDirection(double axis_deg, const cv::Point2d& from_px,
   return dot >= 0 ? Wrap180(axis_deg) : Wrap180(axis_deg + 180.0);
 }
 
+void AzimuthElevationDeg(const cv::Vec3d& from, const cv::Vec3d& to, double* az_deg,
+                         double* el_deg) {
+  const cv::Vec3d d = to - from;
+  *az_deg = Wrap180(DegFromRad(std::atan2(-d[2], d[0])));  // -0 would give -180
+  *el_deg = DegFromRad(std::atan2(-d[1], std::hypot(d[0], d[2])));
+}
+
+double JointAngleDeg(const cv::Vec3d& a, const cv::Vec3d& joint, const cv::Vec3d& b) {
+  const cv::Vec3d u = a - joint, v = b - joint;
+  // atan2 of the cross and dot products: exact near 0 and 180 where acos is not.
+  return DegFromRad(std::atan2(cv::norm(u.cross(v)), u.dot(v)));
+}
+
 }  // namespace armmimic

@@ -4,6 +4,7 @@
 // it is there (tests/cli/CMakeLists.txt).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "armmimic/core/angle_file.h"
@@ -64,6 +65,59 @@ TEST_F(CliPose, FlagsThatDoNotFitAreUsageErrors) {
   EXPECT_NE(r.err.find("--auto-calibrate is not used by --engine bgsub"), std::string::npos)
       << r.err;
 }
+
+TEST_F(CliPose, TheNetworkFlagIsThePoseEnginesAndNamesItsChoices) {
+  const std::string video = dir_->file("scene.avi"), out = dir_->file("n.tsv");
+  test::CliResult r = test::RunCli({"analyze", video, "-o", out, "--engine", "lk",
+                                    "--background-frames", "45", "--network", "blazepose"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--network is not used by --engine lk"), std::string::npos) << r.err;
+  r = test::RunCli({"analyze", video, "-o", out, "--engine", "pose", "--network", "openpose"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--network"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("blazepose"), std::string::npos) << r.err;
+}
+
+TEST_F(CliPose, AMissingBlazePoseModelExitsOneNamingItsFile) {
+  const std::string none = dir_->file("no-model");
+  const test::CliResult r =
+      test::RunCli({"analyze", dir_->file("scene.avi"), "-o", dir_->file("b.tsv"), "--engine",
+                    "pose", "--network", "blazepose", "--side", "left", "--model", none, "-q"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "armmimic-cli analyze: --model: " + none +
+                       "/blazepose-full.json not found; install the package armmimic-models, "
+                       "or fetch the model with scripts/deps.sh --with-model in armmimic's "
+                       "source tree, or name the folder holding it\n");
+}
+
+#if defined(ARMMIMIC_HAVE_POSE_MODEL) && defined(ARMMIMIC_HAVE_BLAZEPOSE_MODEL)
+TEST_F(CliPose, BlazePoseWritesThe3dColumnsAndNamesItsNetwork) {
+  const std::string out = dir_->file("blazepose.tsv");
+  const test::CliResult r =
+      test::RunCli({"analyze", dir_->file("scene.avi"), "-o", out, "--engine", "pose", "--network",
+                    "blazepose", "--side", "left", "--start", "105"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  AngleFile f;
+  ASSERT_TRUE(ReadAngleFile(out, &f).ok());
+  EXPECT_EQ(f.Meta("model"), "blazepose-full-ghum");
+  EXPECT_EQ(f.Meta("pose.network"), "blazepose");
+  EXPECT_TRUE(f.has_confidence_column);
+  EXPECT_TRUE(f.has_3d_columns);
+  ASSERT_EQ(f.rows.size(), 12u);
+  int ok = 0;
+  for (const AngleRow& row : f.rows) {
+    if (!row.ok()) continue;
+    ++ok;
+    // An ok row carries all five 3-D values, the elbow's within [0, 180].
+    EXPECT_FALSE(std::isnan(row.upper_az_deg + row.upper_el_deg + row.fore_az_deg +
+                            row.fore_el_deg + row.elbow_deg))
+        << row.frame;
+    EXPECT_GE(row.elbow_deg, 0);
+    EXPECT_LE(row.elbow_deg, 180);
+  }
+  EXPECT_GT(ok, 0);
+}
+#endif
 
 #ifdef ARMMIMIC_HAVE_POSE_MODEL
 TEST_F(CliPose, PoseWritesEveryFrameFromTheStartWithAConfidence) {

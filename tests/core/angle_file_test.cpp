@@ -1,3 +1,6 @@
+// The angle file's reader and writer: round trips of every column (the optional confidence,
+// marker and 3-D columns too), locales, line ends and the messages for malformed files.
+// Length: one test per rule of the one format; splitting it would split the format's tests.
 #include "armmimic/core/angle_file.h"
 
 #include <clocale>
@@ -184,6 +187,78 @@ TEST(AngleFile, ConfidenceColumnRoundTrips) {
       std::string(kHeader) + "\tconfidence\n" + "0\t0\tok\t1\t2\tnan\t1\t4\t5\t6\t7\t1.5\n";
   const Status st = Parse(bad, &f);
   EXPECT_EQ(st.message(), "a.tsv:2: confidence \"1.5\" is not a number in [0, 1] (or nan)");
+}
+
+TEST(AngleFile, The3dColumnsRoundTripLastAndOnlyInOkRows) {
+  test::TempDir dir;
+  AngleFileWriter w;
+  ASSERT_TRUE(w.Open(dir.file("a.tsv"), {{"engine", "pose"}}, false, true, false, true).ok());
+  AngleRow ok;
+  ok.status = RowStatus::kOk;
+  ok.upper_deg = -100;
+  ok.upper_az_deg = 180;
+  ok.upper_el_deg = -65.25;
+  ok.fore_az_deg = 90;
+  ok.fore_el_deg = 0;
+  ok.elbow_deg = 157.5;
+  AngleRow lost = ok;  // a lost row's angles are written as nan whatever they hold
+  lost.frame = 1;
+  lost.status = RowStatus::kLost;
+  ASSERT_TRUE(w.Write(ok).ok());
+  ASSERT_TRUE(w.Write(lost).ok());
+  ASSERT_TRUE(w.Commit().ok());
+  const std::string text = test::ReadFile(dir.file("a.tsv"));
+  EXPECT_NE(text.find("\tconfidence\tupper_az_deg\tupper_el_deg\tfore_az_deg\tfore_el_deg\t"
+                      "elbow_deg\n"),
+            std::string::npos);
+  AngleFile f;
+  ASSERT_TRUE(ReadAngleFile(dir.file("a.tsv"), &f).ok());
+  ASSERT_TRUE(f.has_3d_columns);
+  ASSERT_EQ(f.rows.size(), 2u);
+  EXPECT_DOUBLE_EQ(f.rows[0].upper_az_deg, 180);
+  EXPECT_DOUBLE_EQ(f.rows[0].upper_el_deg, -65.25);
+  EXPECT_DOUBLE_EQ(f.rows[0].fore_az_deg, 90);
+  EXPECT_DOUBLE_EQ(f.rows[0].elbow_deg, 157.5);
+  EXPECT_TRUE(std::isnan(f.rows[1].upper_az_deg));
+  EXPECT_TRUE(std::isnan(f.rows[1].elbow_deg));
+}
+
+TEST(AngleFile, The3dColumnsAreReadByNameAndAFileWithoutThemReadsAsBefore) {
+  AngleFile f;
+  const std::string some = std::string(kHeader) + "\telbow_deg\textra\tupper_el_deg\n" +
+                           "0\t0\tok\t1\t2\tnan\t1\t4\t5\t6\t7\t90\tx\t-30\n";
+  ASSERT_TRUE(Parse(some, &f).ok()) << Parse(some, &f).message();
+  EXPECT_TRUE(f.has_3d_columns);
+  EXPECT_DOUBLE_EQ(f.rows[0].elbow_deg, 90);
+  EXPECT_DOUBLE_EQ(f.rows[0].upper_el_deg, -30);
+  EXPECT_TRUE(std::isnan(f.rows[0].upper_az_deg));  // a column the file does not have
+  const std::string plain = std::string(kHeader) + "\n0\t0\tok\t1\t2\tnan\t1\t4\t5\t6\t7\n";
+  ASSERT_TRUE(Parse(plain, &f).ok());
+  EXPECT_FALSE(f.has_3d_columns);
+  EXPECT_DOUBLE_EQ(f.rows[0].upper_deg, 1);
+  EXPECT_TRUE(std::isnan(f.rows[0].elbow_deg));
+}
+
+TEST(AngleFile, A3dValueOutsideItsRangeOrInALostRowNamesTheLine) {
+  const std::string head =
+      std::string(kHeader) + "\tupper_az_deg\tupper_el_deg\tfore_az_deg\tfore_el_deg\telbow_deg\n";
+  const std::string ok = "0\t0\tok\t1\t2\tnan\t1\t4\t5\t6\t7\t";
+  const std::string lost = "0\t0\tlost\tnan\tnan\tnan\tnan\tnan\tnan\tnan\tnan\t";
+  const std::pair<std::string, std::string> cases[] = {
+      {ok + "-180.5\t0\t0\t0\t90\n", "a.tsv:2: upper_az_deg -180.5 is outside (-180, 180]"},
+      {ok + "0\t91\t0\t0\t90\n", "a.tsv:2: upper_el_deg 91 is outside [-90, 90]"},
+      {ok + "0\t0\t0\t0\t-1\n", "a.tsv:2: elbow_deg -1 is outside [0, 180]"},
+      {ok + "0\t0\tleft\t0\t90\n",
+       "a.tsv:2: fore_az_deg \"left\" is not a number (use '.' decimals, or nan)"},
+      {lost + "nan\tnan\tnan\t5\tnan\n",
+       "a.tsv:2: status is lost but fore_el_deg is a number (lost rows carry nan angles)"},
+  };
+  for (const auto& [body, expect] : cases) {
+    AngleFile f;
+    EXPECT_EQ(Parse(head + body, &f).message(), expect) << body;
+  }
+  AngleFile f;
+  EXPECT_TRUE(Parse(head + ok + "180\t-90\t-179.5\t90\t0\n", &f).ok());  // the bounds
 }
 
 struct BadCase {

@@ -31,5 +31,31 @@ TEST(Angles, ResolveDirectionPointsAwayFromShoulder) {
   EXPECT_NEAR(v.y, 1, 1e-12);
 }
 
+// The angle file's 3-D convention: x to the image's right, y down, z away from the camera.
+TEST(Angles, AzimuthAndElevationFollowTheCameraFrame) {
+  const cv::Vec3d o(1, 2, 3);
+  double az = 0, el = 0;
+  AzimuthElevationDeg(o, o + cv::Vec3d(1, 0, 0), &az, &el);  // to the image's right
+  EXPECT_NEAR(az, 0, 1e-12);
+  EXPECT_NEAR(el, 0, 1e-12);
+  AzimuthElevationDeg(o, o + cv::Vec3d(0, 0, -2), &az, &el);  // at the camera
+  EXPECT_NEAR(az, 90, 1e-12);
+  EXPECT_NEAR(el, 0, 1e-12);
+  AzimuthElevationDeg(o, o + cv::Vec3d(0, 0, 2), &az, &el);  // away from it
+  EXPECT_NEAR(az, -90, 1e-12);
+  AzimuthElevationDeg(o, o + cv::Vec3d(-1, -1, 0), &az, &el);  // up and to the left
+  EXPECT_NEAR(az, 180, 1e-12);
+  EXPECT_NEAR(el, 45, 1e-12);
+  AzimuthElevationDeg(o, o + cv::Vec3d(0, 3, 0), &az, &el);  // straight down
+  EXPECT_NEAR(el, -90, 1e-12);
+}
+
+TEST(Angles, TheJointAngleIs180ForAStraightArm) {
+  const cv::Vec3d shoulder(0, 0, 0), elbow(0, 0.25, 0);
+  EXPECT_NEAR(JointAngleDeg(shoulder, elbow, {0, 0.5, 0}), 180, 1e-9);
+  EXPECT_NEAR(JointAngleDeg(shoulder, elbow, {0, 0.25, -0.2}), 90, 1e-9);  // forearm at the camera
+  EXPECT_NEAR(JointAngleDeg(shoulder, elbow, {0.1, 0.15, 0}), 45, 1e-9);
+}
+
 }  // namespace
 }  // namespace armmimic

@@ -32,6 +32,15 @@ struct AngleRow {
   // Marker engine only: the signed yaw, positive when the joint turns its right side towards the
   // camera (the trailing yaw_signed_deg column); yaw_deg is its magnitude.
   double yaw_signed_deg = kNaN;
+  // The optional 3-D columns (pose engine with BlazePose), read by name: each segment's
+  // direction in the camera's frame (x to the image's right, y down, z away from the camera) as
+  // azimuth atan2(-d_z, d_x) in (-180, 180] and elevation atan2(-d_y, hypot(d_x, d_z)) in
+  // [-90, 90], and the elbow's 3-D angle in [0, 180] (180: straight); docs/angle-file.md.
+  double upper_az_deg = kNaN;
+  double upper_el_deg = kNaN;
+  double fore_az_deg = kNaN;
+  double fore_el_deg = kNaN;
+  double elbow_deg = kNaN;
   bool ok() const { return status == RowStatus::kOk; }
   // The yaw to turn a robot joint by: the signed one where the row has it, else yaw_deg.
   double turn_yaw_deg() const { return std::isnan(yaw_signed_deg) ? yaw_deg : yaw_signed_deg; }
@@ -51,6 +60,7 @@ struct AngleFile {
   bool has_file_column = false;
   bool has_confidence_column = false;
   bool has_signed_yaw_column = false;  // a yaw_signed_deg column after the listed ones
+  bool has_3d_columns = false;         // any of kAngle3dColumns
   bool complete = true;  // false when the header says complete=no (an interrupted run)
   int meta_line = 0;     // the line of the "# key=value ..." header line; 0: none
   std::vector<AngleRow> rows;
@@ -66,6 +76,8 @@ inline constexpr const char* kAngleFileUnits =
 // after them.
 extern const char* const kAngleColumns[11];
 inline constexpr const char* kSignedYawColumn = "yaw_signed_deg";
+// The optional 3-D columns, written last (after confidence) and read by name.
+extern const char* const kAngle3dColumns[5];
 // The last line of a file written to a device or FIFO by a run that stopped early, where the
 // header could not be rewritten with complete=no; read as complete=no all the same.
 inline constexpr const char* kIncompleteMark = "# complete=no";
@@ -79,7 +91,7 @@ Status ReadAngleFile(const std::string& path, AngleFile* out);
 std::string FormatNumber(double value, int decimals);
 // Formats one data row (no trailing newline).
 std::string FormatAngleRow(const AngleRow& row, bool file_column, bool confidence_column = false,
-                           bool signed_yaw_column = false);
+                           bool signed_yaw_column = false, bool columns_3d = false);
 // The "# k=v k=v" meta line; spaces and '%' in values are percent-encoded.
 std::string FormatMetaLine(const AngleMeta& meta);
 
@@ -93,9 +105,10 @@ class AngleFileWriter {
   AngleFileWriter& operator=(const AngleFileWriter&) = delete;
 
   // confidence_column: the optional trailing confidence column after the contract's columns;
-  // signed_yaw_column: the marker engine's yaw_signed_deg, last.
+  // signed_yaw_column: the marker engine's yaw_signed_deg; columns_3d: kAngle3dColumns, last.
   Status Open(const std::string& path, const AngleMeta& meta, bool file_column,
-              bool confidence_column = false, bool signed_yaw_column = false);
+              bool confidence_column = false, bool signed_yaw_column = false,
+              bool columns_3d = false);
   Status Write(const AngleRow& row);
   // complete=false rewrites the header with complete=no (rows so far are kept); in a device or
   // FIFO, which cannot be rewound, a last line kIncompleteMark says so instead. A `reason`

@@ -38,4 +38,15 @@ double AxisDiff(double a_deg, double b_deg);
 // `from_px` towards `towards_px`. Used to resolve a segment's direction from the shoulder.
 double ResolveDirection(double axis_deg, const cv::Point2d& from_px, const cv::Point2d& towards_px);
 
+// A 3-D segment's direction, d = to - from in the camera's frame (x to the image's right, y
+// down, z away from the camera), as the angle file's 3-D columns give it: azimuth
+// atan2(-d_z, d_x) (0: the image's right, +90: at the camera) and elevation
+// atan2(-d_y, hypot(d_x, d_z)) (+90: straight up), degrees.
+void AzimuthElevationDeg(const cv::Vec3d& from, const cv::Vec3d& to, double* az_deg,
+                         double* el_deg);
+
+// The angle at `joint` between the segments to `a` and to `b`, degrees in [0, 180] (180: a
+// straight arm at the elbow).
+double JointAngleDeg(const cv::Vec3d& a, const cv::Vec3d& joint, const cv::Vec3d& b);
+
 }  // namespace armmimic

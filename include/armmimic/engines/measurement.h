@@ -37,6 +37,13 @@ struct ArmMeasurement {
   cv::Point2d upper_com_px{kNaN, kNaN};
   cv::Point2d fore_com_px{kNaN, kNaN};
   double confidence = kNaN;  // pose: 0..1, the angle file's confidence column
+  // Pose engine with BlazePose: the segments' 3-D directions in the camera's frame and the
+  // elbow's 3-D angle (the angle file's optional 3-D columns, angle_file.h).
+  double upper_az_deg = kNaN;
+  double upper_el_deg = kNaN;
+  double fore_az_deg = kNaN;
+  double fore_el_deg = kNaN;
+  double elbow_deg = kNaN;
 
   // Overlay (all in full-image pixels).
   std::optional<cv::Point2d> shoulder_px;
@@ -55,6 +62,9 @@ struct ArmMeasurement {
   std::vector<cv::Point2d> cylinder_edges_px;  // marker: silhouette, left top/bottom, right ...
   std::vector<cv::Point2d> pose_keypoints;     // pose: the 17 keypoints (pose.h order)
   std::vector<double> pose_scores;             // pose: their scores, 0..1
+  // pose with BlazePose: the arm's shoulder, elbow and wrist in metres (camera axes, origin
+  // between the hips), for a 3-D view.
+  std::vector<cv::Vec3d> arm_world_m;
 
   bool row() const { return phase != MeasurementPhase::kSetup; }
   AngleRow ToRow() const;

@@ -70,9 +70,10 @@ std::vector<std::string> PoseModelSearchPath(const std::string& flag_dir);
 // <prefix>/share/armmimic/models for the running program <prefix>/bin/NAME, its symbolic links
 // resolved, so a relocated install finds its own models ("" if the program's file is unknown).
 std::string InstalledPoseModelDir();
-// The first folder of PoseModelSearchPath holding the JSON file; with none, "" and the folders
-// tried (for the error message).
-std::string FindPoseModelDir(const std::string& flag_dir, std::vector<std::string>* tried);
+// The first folder of PoseModelSearchPath holding the JSON file `json` (MoveNet's by default);
+// with none, "" and the folders tried (for the error message).
+std::string FindPoseModelDir(const std::string& flag_dir, std::vector<std::string>* tried,
+                             const std::string& json = kPoseModelJson);
 
 class PoseNetwork {
  public:

@@ -10,7 +10,12 @@ namespace armmimic {
 // The person's own arm (their left arm is on the image's right when they face the camera).
 enum class PoseSide { kAuto, kLeft, kRight };  // kAuto: the arm better seen over the first second
 
+// The network: MoveNet SinglePose Lightning (2-D keypoints), or BlazePose GHUM full (2-D and
+// 3-D world landmarks, in a crop placed by its own auxiliary points; docs/pose.md).
+enum class PoseNetworkKind { kMoveNet, kBlazePose };
+
 struct PoseOptions {
+  PoseNetworkKind network = PoseNetworkKind::kMoveNet;
   PoseSide side = PoseSide::kAuto;
   // A shoulder, elbow or wrist scored below this is not seen: the row is lost.
   double min_score = 0.4;

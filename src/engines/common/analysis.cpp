@@ -473,11 +473,14 @@ Status AnalyzeToFile(const AnalysisOptions& options, const std::string& output_p
   const bool confidence_column =
       options.engine.kind == EngineKind::kPose || options.engine.kind == EngineKind::kLk ||
       (options.engine.kind == EngineKind::kBgsub && !options.engine.bgsub.thesis_mode);
+  // Only BlazePose measures the arm in 3-D.
+  const bool columns_3d = options.engine.kind == EngineKind::kPose &&
+                          options.engine.pose.network == PoseNetworkKind::kBlazePose;
   Status st = Run(
       options, callbacks,
       [&](const AngleMeta& meta) {
         return writer.Open(output_path, meta, file_column, confidence_column,
-                           /*signed_yaw_column=*/file_column);
+                           /*signed_yaw_column=*/file_column, columns_3d);
       },
       [&](const ArmMeasurement& m) { return writer.Write(m.ToRow()); }, summary);
   if (!st) return st;

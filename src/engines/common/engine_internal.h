@@ -19,11 +19,13 @@ namespace armmimic::internal {
 
 // The pose network the pose engine describes in an angle file's header (model=...).
 inline constexpr const char* kPoseModelName = "movenet-lightning-v4";
+inline constexpr const char* kBlazePoseModelName = "blazepose-full-ghum";  // --network blazepose
 
 std::unique_ptr<Engine> CreateBgsubEngine(const BgsubOptions& options);
 std::unique_ptr<Engine> CreateLkEngine(const LkOptions& options);
 std::unique_ptr<Engine> CreateMarkerEngine(const MarkerOptions& options);
-std::unique_ptr<Engine> CreatePoseEngine(const PoseOptions& options);
+std::unique_ptr<Engine> CreatePoseEngine(const PoseOptions& options);  // either network
+std::unique_ptr<Engine> CreateBlazePoseEngine(const PoseOptions& options);
 
 // The pose engine's steps before a run (pose/calibrate.cpp).
 // Opens the analysed input for one pass (AnalysisOptions::open_source or its files).

@@ -19,6 +19,11 @@ AngleRow ArmMeasurement::ToRow() const {
     row.upper_cy = upper_com_px.y;
     row.fore_cx = fore_com_px.x;
     row.fore_cy = fore_com_px.y;
+    row.upper_az_deg = upper_az_deg;
+    row.upper_el_deg = upper_el_deg;
+    row.fore_az_deg = fore_az_deg;
+    row.fore_el_deg = fore_el_deg;
+    row.elbow_deg = elbow_deg;
   }
   return row;
 }
@@ -37,6 +42,11 @@ ArmMeasurement ArmMeasurement::FromRow(const AngleRow& row) {
   m.confidence = row.confidence;
   m.upper_com_px = {row.upper_cx, row.upper_cy};
   m.fore_com_px = {row.fore_cx, row.fore_cy};
+  m.upper_az_deg = row.upper_az_deg;
+  m.upper_el_deg = row.upper_el_deg;
+  m.fore_az_deg = row.fore_az_deg;
+  m.fore_el_deg = row.fore_el_deg;
+  m.elbow_deg = row.elbow_deg;
   return m;
 }
 

@@ -87,7 +87,8 @@ bool IsKnownPlainKey(const std::string& key) {
 // The pose engine's own model=... (the network it runs), as opposed to an older header's
 // model=DIR (the folder, now model_dir).
 bool IsPoseModelName(const std::string& key, const std::string& value) {
-  return key == "model" && value == internal::kPoseModelName;
+  return key == "model" &&
+         (value == internal::kPoseModelName || value == internal::kBlazePoseModelName);
 }
 
 std::string Absolute(const std::string& path) {

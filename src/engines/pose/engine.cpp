@@ -81,6 +81,7 @@ class PoseEngine : public Engine {
 
 namespace internal {
 std::unique_ptr<Engine> CreatePoseEngine(const PoseOptions& options) {
+  if (options.network == PoseNetworkKind::kBlazePose) return CreateBlazePoseEngine(options);
   return std::make_unique<PoseEngine>(options);
 }
 }  // namespace internal

@@ -1,78 +1,32 @@
 // The pinned MoveNet model: found, checked (size and SHA-256), read as a TensorFlow.js graph and
 // built for cv::dnn, cut at its four heads; the decoder's shipped constants are read from the
 // same weights.
-#include <sys/stat.h>
 #include <cstring>
 #include <fstream>
 
 #include <opencv2/dnn.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "armmimic/core/sha256.h"
 #include "armmimic/engines/pose.h"
 #include "pose/decode.h"
 #include "pose/graph.h"
 #include "pose/net.h"
+#include "pose/pinned.h"
 
 namespace armmimic {
 namespace {
 
 // @vladmandic/human 3.3.6, models/: MoveNet SinglePose Lightning v4 as a TF.js graph model.
-struct PinnedFile {
-  const char* name;
-  long long bytes;
-  const char* sha256;
-};
-constexpr PinnedFile kPinned[] = {
+const std::vector<internal::PinnedFile> kPinned = {
     {kPoseModelJson, 161813, "df8cbde44d00f533ccc4916a7c6ebc17316532fb3fadad114ec667fef22872e9"},
     {kPoseModelWeights, 4650216,
      "bf97bc10d9c8a11200b0190ed64ce039b6252f1aff7cb552aca99b3d191c2f34"},
 };
-// Which package, or which command of a source tree, provides the model (docs/pose.md).
-std::string FetchAdvice() {
-  return std::string("install the package ") + kPoseModelPackage +
-         ", or fetch the model with scripts/deps.sh --with-model in armmimic's source tree, or "
-         "name the folder holding it";
-}
 
 constexpr const char* kInputNode = "input";
 // The heads: the last node of each of these name scopes.
 constexpr const char* kHeadScopes[4] = {"kpt_heatmap_0/", "center_0/", "kpt_regress_0/",
                                         "kpt_offset_0/"};
-
-bool FileExists(const std::string& path) {
-  struct stat st {};
-  return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
-}
-
-long long FileSize(const std::string& path) {
-  struct stat st {};
-  return ::stat(path.c_str(), &st) == 0 ? static_cast<long long>(st.st_size) : -1;
-}
-
-Status CheckPinned(const std::string& dir) {
-  for (const PinnedFile& f : kPinned) {
-    const std::string path = dir + "/" + f.name;
-    if (!FileExists(path)) return Status::Error(path + " not found; " + FetchAdvice());
-  }
-  for (const PinnedFile& f : kPinned) {
-    const std::string path = dir + "/" + f.name;
-    const long long size = FileSize(path);
-    if (size != f.bytes) {
-      return Status::Error(path + " is " + (size < f.bytes ? "truncated" : "not the pinned file") +
-                           " (" + std::to_string(size) + " bytes, the pinned model has " +
-                           std::to_string(f.bytes) + "); " + FetchAdvice());
-    }
-    std::string hex;
-    Status st = Sha256File(path, &hex);
-    if (!st) return st;
-    if (hex != f.sha256) {
-      return Status::Error(path + " does not match the pinned model (SHA-256 " + hex +
-                           ", expected " + f.sha256 + "); " + FetchAdvice());
-    }
-  }
-  return Status::Ok();
-}
 
 // The last node of `scope`: the one no other node of the scope reads.
 std::string HeadOf(const internal::TfjsGraph& g, const std::string& scope) {
@@ -144,23 +98,8 @@ PoseNetwork::~PoseNetwork() = default;
 const std::string& PoseNetwork::dir() const { return impl_->dir; }
 
 std::unique_ptr<PoseNetwork> PoseNetwork::Load(const std::string& flag_dir, Status* status) {
-  std::vector<std::string> tried;
-  const std::string dir = FindPoseModelDir(flag_dir, &tried);
-  if (dir.empty()) {
-    if (!flag_dir.empty()) {
-      *status = Status::Error("analysis.model",
-                              flag_dir + "/" + kPoseModelJson + " not found; " + FetchAdvice());
-    } else {
-      std::string list;
-      for (const std::string& d : tried) list += (list.empty() ? "" : ", ") + d;
-      *status =
-          Status::Error("analysis.model", std::string("the pose model (") + kPoseModelJson +
-                                              ") is in none of " + list + "; " + FetchAdvice());
-    }
-    return nullptr;
-  }
-  *status = CheckPinned(dir).WithKey("analysis.model");
-  if (!*status) return nullptr;
+  const std::string dir = internal::FindPinnedModel(flag_dir, kPinned, status);
+  if (dir.empty()) return nullptr;
   auto net = LoadUnchecked(dir + "/" + kPoseModelJson, status);
   if (net) net->impl_->dir = dir;
   return net;

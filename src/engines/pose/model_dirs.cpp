@@ -72,11 +72,12 @@ std::vector<std::string> PoseModelSearchPath(const std::string& flag_dir) {
   return unique;
 }
 
-std::string FindPoseModelDir(const std::string& flag_dir, std::vector<std::string>* tried) {
+std::string FindPoseModelDir(const std::string& flag_dir, std::vector<std::string>* tried,
+                             const std::string& json) {
   const std::vector<std::string> dirs = PoseModelSearchPath(flag_dir);
   for (const std::string& d : dirs) {
     std::error_code ec;
-    if (fs::is_regular_file(d + "/" + kPoseModelJson, ec)) return d;
+    if (fs::is_regular_file(d + "/" + json, ec)) return d;
   }
   if (tried) *tried = dirs;
   return std::string();

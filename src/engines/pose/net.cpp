@@ -204,6 +204,102 @@ class Builder {
     return Status::Ok();
   }
 
+  // TF's Pad with constant paddings [4, 2] (NHWC): zeros around H and W only.
+  Status AddPad(const TfjsNode& n) {
+    const Ref* x = Tensor(n, 0);
+    const TfjsTensor* pads = Const(n, 1);
+    Status st = Need(n, x && pads && pads->values.size() == 8,
+                     "needs a tensor and constant paddings of shape [4, 2]");
+    if (!st) return st;
+    const std::vector<float>& v = pads->values;  // (N, H, W, C) x (before, after)
+    st = Need(n, v[0] == 0 && v[1] == 0 && v[6] == 0 && v[7] == 0,
+              "pads the batch or channel axis, only H and W are read");
+    if (!st) return st;
+    for (float p : v) {
+      st = Need(n, p >= 0, "a negative padding");
+      if (!st) return st;
+    }
+    if (const TfjsAttr* mode = n.Attr("mode"); mode && !mode->strings.empty()) {
+      st = Need(n, mode->strings[0] == "CONSTANT", "mode " + mode->strings[0] + " is not read");
+      if (!st) return st;
+    }
+    const int nchw[8] = {0,
+                         0,
+                         0,
+                         0,
+                         static_cast<int>(v[2]),
+                         static_cast<int>(v[3]),
+                         static_cast<int>(v[4]),
+                         static_cast<int>(v[5])};
+    cv::dnn::LayerParams p;
+    p.set("paddings", cv::dnn::DictValue::arrayInt(nchw, 8));
+    p.set("value", 0.0f);
+    p.set("type", "constant");
+    refs_[n.name] = {AddLayer(n.name, "Padding", p, {*x}), 0, x->channels};
+    return Status::Ok();
+  }
+
+  // MaxPool over H and W (NHWC ksize and strides, SAME or VALID).
+  Status AddMaxPool(const TfjsNode& n) {
+    const Ref* x = Tensor(n, 0);
+    const TfjsAttr* ksize = n.Attr("ksize");
+    const TfjsAttr* strides = n.Attr("strides");
+    const TfjsAttr* pad = n.Attr("padding");
+    const TfjsAttr* format = n.Attr("data_format");
+    Status st =
+        Need(n, x && ksize && ksize->ints.size() == 4 && strides && strides->ints.size() == 4,
+             "needs a tensor, ksize and strides of four");
+    if (!st) return st;
+    st = Need(n, !format || format->strings.empty() || format->strings[0] == "NHWC",
+              "data_format " + (format && !format->strings.empty() ? format->strings[0] : "") +
+                  " is not read");
+    if (!st) return st;
+    st = Need(n,
+              ksize->ints[0] == 1 && ksize->ints[3] == 1 && strides->ints[0] == 1 &&
+                  strides->ints[3] == 1,
+              "pools across the batch or channels");
+    if (!st) return st;
+    const std::string padding = pad && !pad->strings.empty() ? pad->strings[0] : "VALID";
+    st = Need(n, padding == "SAME" || padding == "VALID", "padding " + padding + " is not read");
+    if (!st) return st;
+    cv::dnn::LayerParams p;
+    p.set("pool", "max");
+    p.set("kernel_h", static_cast<int>(ksize->ints[1]));
+    p.set("kernel_w", static_cast<int>(ksize->ints[2]));
+    p.set("stride_h", static_cast<int>(strides->ints[1]));
+    p.set("stride_w", static_cast<int>(strides->ints[2]));
+    p.set("pad_mode", padding);
+    refs_[n.name] = {AddLayer(n.name, "Pooling", p, {*x}), 0, x->channels};
+    return Status::Ok();
+  }
+
+  // Reshape to [batch, K] (a constant shape [-1 or 1, K]): the NHWC blob flattened in TF's order,
+  // so the NCHW blob is put back to NHWC first. Other shapes are not read.
+  Status AddReshape(const TfjsNode& n) {
+    const Ref* x = Tensor(n, 0);
+    const TfjsTensor* shape = Const(n, 1);
+    Status st = Need(n, x && shape, "needs a tensor and a constant shape");
+    if (!st) return st;
+    const std::vector<float>& v = shape->values;
+    st = Need(n, v.size() == 2 && (v[0] == -1 || v[0] == 1) && v[1] > 0,
+              "only a reshape to [batch, K] is read");
+    if (!st) return st;
+    const int k = static_cast<int>(v[1]);
+    st = Need(n, k % x->channels == 0,
+              "K " + std::to_string(k) + " is not a multiple of the input's " +
+                  std::to_string(x->channels) + " channels");
+    if (!st) return st;
+    const int order[4] = {0, 2, 3, 1};
+    cv::dnn::LayerParams permute;
+    permute.set("order", cv::dnn::DictValue::arrayInt(order, 4));
+    const Ref nhwc{AddLayer(n.name + "/nhwc", "Permute", permute, {*x}), 0, x->channels};
+    cv::dnn::LayerParams flatten;
+    flatten.set("axis", 1);
+    flatten.set("end_axis", -1);
+    refs_[n.name] = {AddLayer(n.name, "Flatten", flatten, {nhwc}), 0, k};
+    return Status::Ok();
+  }
+
   // Sub, Mul and AddV2: with a constant operand a per-channel affine layer, else an element sum.
   Status AddArithmetic(const TfjsNode& n) {
     const Ref* a = Tensor(n, 0);
@@ -255,6 +351,9 @@ class Builder {
     if (op == "FusedDepthwiseConv2dNative" || op == "DepthwiseConv2dNative")
       return AddConv(n, true);
     if (op == "ResizeBilinear") return AddResize(n);
+    if (op == "Pad") return AddPad(n);
+    if (op == "MaxPool") return AddMaxPool(n);
+    if (op == "Reshape") return AddReshape(n);
     if (op == "Sub" || op == "Mul" || op == "AddV2") return AddArithmetic(n);
     if (op == "Relu" || op == "Relu6" || op == "Sigmoid") {
       const Ref* x = Tensor(n, 0);

@@ -17,8 +17,10 @@ namespace armmimic::internal {
 // Ops the builder knows: Placeholder, Const, Identity, Cast, Unpack, ExpandDims, Squeeze (batch
 // axis), Sub/Mul/AddV2 with a constant (per-channel scale and shift), AddV2 of two tensors,
 // _FusedConv2D and FusedDepthwiseConv2dNative (BiasAdd, then Relu or Relu6),
-// DepthwiseConv2dNative, Conv2D, ResizeBilinear, Relu, Relu6, Sigmoid. Any other op needed by an
-// output fails with "unknown op 'OP' (node NAME)".
+// DepthwiseConv2dNative, Conv2D, ResizeBilinear, Relu, Relu6, Sigmoid, Pad (zeros around H and
+// W), MaxPool (over H and W) and Reshape to [batch, K] (flattened in TF's NHWC order; the output
+// is then a 2-D blob 1 x K). Any other op needed by an output fails with
+// "unknown op 'OP' (node NAME)".
 Status BuildTfjsNet(const TfjsGraph& graph, const std::string& input_node,
                     const std::vector<std::string>& output_nodes, cv::dnn::Net* net);
 

@@ -14,6 +14,12 @@ using P = PoseOptions;
 
 const std::vector<OptionField<PoseOptions>>& PoseOptionFields() {
   static const std::vector<OptionField<P>> fields = {
+      Enum<P>("network", &P::network, PoseNetworkKind::kMoveNet, {"movenet", "blazepose"},
+              "Network",
+              "movenet: MoveNet Lightning, 2-D keypoints; blazepose: BlazePose full, 2-D and 3-D "
+              "landmarks")
+          .Flag("--network")
+          .Main(),
       Enum<P>("side", &P::side, PoseSide::kAuto, {"auto", "left", "right"}, "Arm",
               "the person's own arm (auto: the better seen over the first second)")
           .Flag("--side")

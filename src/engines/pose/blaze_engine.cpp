@@ -1,0 +1,89 @@
+// The pose engine with BlazePose (--network blazepose): BlazePose's landmark network every frame
+// in a crop placed by the previous frame's auxiliary landmarks (MediaPipe's tracking). The
+// first frame, and any frame after the person was lost, places the crop from MoveNet's
+// keypoints on the whole image and refines it once with BlazePose's own auxiliary landmarks.
+// pose/blaze_gate.h decides each row.
+#include "armmimic/engines/pose.h"
+#include "common/engine_internal.h"
+#include "pose/blaze_gate.h"
+#include "pose/blazepose.h"
+
+namespace armmimic {
+namespace {
+
+class BlazePoseEngine : public Engine {
+ public:
+  explicit BlazePoseEngine(const PoseOptions& options) : o_(options), gate_(options) {}
+
+  EngineKind kind() const override { return EngineKind::kPose; }
+
+  Status Begin(const EngineContext& context) override {
+    if (context.frame_size.width <= 0 || context.frame_size.height <= 0) {
+      return Status::Error("pose: the video has no frame size");
+    }
+    area_ = cv::Rect(cv::Point(0, 0), context.frame_size);
+    if (context.roi) area_ = *context.roi & area_;
+    Status st;
+    blaze_ = internal::BlazePoseNetwork::Load(context.model_dir, &st);
+    if (!blaze_) return st;
+    movenet_ = PoseNetwork::Load(context.model_dir, &st);
+    if (!movenet_) return st;
+    tracking_ = false;
+    return Status::Ok();
+  }
+
+  ArmMeasurement Process(const Frame& frame) override {
+    ArmMeasurement m;
+    m.frame = frame.index;
+    m.time_s = frame.time_s;
+    const cv::Mat image = frame.image(area_);
+    if (!tracking_ && !Seed(image)) {
+      m.note = "no person seen to place the crop";
+      return m;
+    }
+    internal::BlazeLandmarks b = blaze_->Run(image, crop_);
+    tracking_ = b.poseflag >= internal::kMinPoseFlag;
+    if (tracking_) {
+      crop_ = internal::CropFromAuxiliary(b.px[internal::kBlazeCentre], b.px[internal::kBlazeTop]);
+    }
+    if (o_.side == PoseSide::kAuto) ChooseSide(b, &m);
+    const cv::Point2d offset(area_.tl());
+    for (cv::Point2d& p : b.px) p += offset;
+    gate_.Decide(b, o_.side, &m);
+    return m;
+  }
+
+  AngleMeta Describe() const override { return {{"model", internal::kBlazePoseModelName}}; }
+
+ private:
+  // The first crop (SeedCrop). False when nobody is seen.
+  bool Seed(const cv::Mat& image) {
+    return internal::SeedCrop(movenet_.get(), blaze_.get(), image, o_.crop_score, &crop_);
+  }
+
+  // Without a first-second choice: the arm more visible now.
+  void ChooseSide(const internal::BlazeLandmarks& b, ArmMeasurement* m) {
+    auto seen = [&](PoseSide side) { return ArmOf(internal::AsMoveNetKeypoints(b), side).score; };
+    o_.side = seen(PoseSide::kLeft) >= seen(PoseSide::kRight) ? PoseSide::kLeft : PoseSide::kRight;
+    m->estimate = std::string("arm: the person's ") + PoseSideName(o_.side) +
+                  " (the better seen in the first frame)";
+  }
+
+  PoseOptions o_;
+  internal::BlazeArmGate gate_;
+  cv::Rect area_;
+  std::unique_ptr<internal::BlazePoseNetwork> blaze_;
+  std::unique_ptr<PoseNetwork> movenet_;
+  bool tracking_ = false;
+  internal::BlazeCrop crop_;
+};
+
+}  // namespace
+
+namespace internal {
+std::unique_ptr<Engine> CreateBlazePoseEngine(const PoseOptions& options) {
+  return std::make_unique<BlazePoseEngine>(options);
+}
+}  // namespace internal
+
+}  // namespace armmimic
