@@ -45,6 +45,7 @@ void PlannerFlags::RegisterMapping(ArgParser& p, const std::function<void()>& mo
   if (more) more();
   AddRowFlag(p, MappingRow("j2_elevation"), &given_mapping_);
   AddRowFlag(p, MappingRow("j3_flexion"), &given_mapping_);
+  AddRowFlag(p, MappingRow("arm_3d"), &given_mapping_);
 }
 
 void PlannerFlags::RegisterFilter(ArgParser& p, const std::function<void()>& more) {

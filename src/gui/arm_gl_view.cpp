@@ -15,6 +15,7 @@ const QColor kArm(0x2a, 0x82, 0xda);
 const QColor kBase(0x8a, 0x90, 0x98);
 const QColor kBad(0xd0, 0x3b, 0x2f);
 const QColor kPath(0xe0, 0xa0, 0x00);
+const QColor kPerson(0x3c, 0xa0, 0x5a);
 
 const char* kVertexShader = R"(
 attribute vec3 position;
@@ -193,6 +194,24 @@ void ArmGlView::paintGL() {
         ball.scale(r);
         draw(sphere_, GL_TRIANGLES, ball, color, true);
       }
+    }
+  }
+  if (const std::optional<robot::PersonArm>& arm = owner_->personArm()) {
+    // The person's arm beside the robot: two rods with round joints, the robot's lengths.
+    const std::array<QVector3D, 3> points = {V(arm->shoulder), V(arm->elbow), V(arm->wrist)};
+    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+      const QVector3D axis = points[i + 1] - points[i];
+      QMatrix4x4 model;
+      model.translate(points[i]);
+      model.rotate(QQuaternion::rotationTo(QVector3D(0, 0, 1), axis.normalized()));
+      model.scale(0.035f, 0.035f, axis.length());
+      draw(cylinder_, GL_TRIANGLES, model, kPerson, true);
+    }
+    for (const QVector3D& p : points) {
+      QMatrix4x4 ball;
+      ball.translate(p);
+      ball.scale(0.05f);
+      draw(sphere_, GL_TRIANGLES, ball, kPerson, true);
     }
   }
   const std::vector<Eigen::Vector3d>& path = owner_->path();

@@ -101,6 +101,11 @@ void ArmView3D::setPath(const robot::Trajectory& trajectory) {
   redraw();
 }
 
+void ArmView3D::setPersonArm(const std::optional<robot::PersonArm>& arm) {
+  person_ = arm;
+  redraw();
+}
+
 QList<int> ArmView3D::violatingJoints() const {
   QList<int> out;
   const std::array<bool, robot::kJoints> outside = robot::JointsOutside(limits_, pose_);
@@ -149,7 +154,8 @@ void ArmView3D::showTexts() {
     parts << (bad.contains(j) ? QString("<span style='color:#d03b2f'><b>%1</b></span>").arg(t) : t);
   }
   values_label_->setText(parts.join("&nbsp;&nbsp; "));
-  caption_label_->setText(caption_);
+  caption_label_->setText(
+      person_ ? tr("%1; the person's arm in 3-D beside it, in green").arg(caption_) : caption_);
 }
 
 }  // namespace armmimic::gui

@@ -1,11 +1,14 @@
 // ArmView3D: the PUMA arm in 3-D, drawn with OpenGL (QOpenGLWidget): the pose it is given, with
 // every part a joint outside its limits moves drawn red, the joint values underneath (red when
-// out of limits), and the wrist's path over the whole plan. Drag to orbit, wheel to zoom,
+// out of limits), the wrist's path over the whole plan, and beside it the person's arm where the
+// angle file measured it in 3-D. Drag to orbit, wheel to zoom,
 // double-click or Reset view to go back. The arm's geometry and colouring rule are Qt-free
 // (armmimic/robot/kinematics.h); this widget only draws them. Where no OpenGL context can be made
 // (the offscreen platform, a display without OpenGL) it says so in one line instead, and the
 // compact 2-D views show the same pose.
 #pragma once
+
+#include <optional>
 
 #include <QMatrix4x4>
 #include <QString>
@@ -50,6 +53,9 @@ class ArmView3D : public QWidget {
 
   void setLimits(const robot::JointLimits& limits);
   void setPose(const robot::JointArray& joint_deg, const QString& caption);
+  // The person's arm measured in 3-D, drawn beside the robot (none: not drawn).
+  void setPersonArm(const std::optional<robot::PersonArm>& arm);
+  const std::optional<robot::PersonArm>& personArm() const { return person_; }
   // The plan whose wrist path is drawn (empty: none).
   void setPath(const robot::Trajectory& trajectory);
   const robot::JointArray& pose() const { return pose_; }
@@ -89,6 +95,7 @@ class ArmView3D : public QWidget {
   robot::JointArray pose_{0, -90, 0, 0, 0, 0};
   QString caption_;
   std::vector<Eigen::Vector3d> path_;
+  std::optional<robot::PersonArm> person_;
   ArmCamera camera_;
 };
 

@@ -208,6 +208,10 @@ void RobotPanel::showPose() {
   if (animate_.isActive()) return;
   if (sim_->isRunning() && link_->isConnected()) return;  // the poll shows the controller
   robot::JointArray j;
+  robot::PersonArm person;
+  view3d_->setPersonArm(plan_.loaded() && plan_.PersonArmAt(video_frame_, plannerOptions(), &person)
+                            ? std::optional<robot::PersonArm>(person)
+                            : std::nullopt);
   if (plan_.loaded() && plan_.MappedPose(video_frame_, plannerOptions(), &j)) {
     showArm(j, tr("frame %1 (mapped, unfiltered)").arg(video_frame_));
   } else if (plan_.planned()) {

@@ -115,22 +115,38 @@ bool RobotPlan::MappedPose(int frame, const robot::PlannerOptions& options,
                            robot::JointArray* out) const {
   robot::MappingOptions mapping = options.mapping;
   mapping.kind = robot::DetectSourceKind(angles_);
-  // A row whose yaw sign is unknown shows J1 where the plan holds it: at the last turn known.
+  // An arm file's 3-D columns turn the joints as the plan turns them (docs/robot.md).
+  const int side_3d =
+      mapping.kind == robot::SourceKind::kArm && mapping.arm_3d && angles_.has_3d_columns
+          ? robot::ImageSideOf(angles_)
+          : 0;
+  // A row whose yaw sign is unknown (or whose azimuth is blind) shows J1 where the plan holds
+  // it: at the last turn known.
   double held_yaw = 0;
   for (const AngleRow& row : angles_.rows) {
-    const double turn = row.turn_yaw_deg(angles_.has_signed_yaw_column);
+    double upper = row.upper_deg, bend = row.bend_deg;
+    double turn = row.turn_yaw_deg(angles_.has_signed_yaw_column);
+    const bool from_3d = side_3d != 0 && robot::SourcesFrom3d(row, side_3d, &upper, &bend, &turn);
     if (row.frame != frame) {
       if (row.ok() && std::isfinite(turn)) held_yaw = turn;
       continue;
     }
-    if (!row.ok() || (std::isnan(row.upper_deg) && mapping.kind == robot::SourceKind::kArm)) {
+    if (!row.ok() || (side_3d != 0 && !from_3d) ||
+        (std::isnan(upper) && mapping.kind == robot::SourceKind::kArm)) {
       return false;
     }
     const double yaw = std::isnan(turn) ? held_yaw : turn;
-    const double bend = std::isnan(row.bend_deg) ? 0.0 : row.bend_deg;
-    const double upper = std::isnan(row.upper_deg) ? -90.0 : row.upper_deg;
-    *out = mapping.Map(upper, bend, yaw);
+    *out = mapping.Map(std::isnan(upper) ? -90.0 : upper, std::isnan(bend) ? 0.0 : bend, yaw);
     return true;
+  }
+  return false;
+}
+
+bool RobotPlan::PersonArmAt(int frame, const robot::PlannerOptions& options,
+                            robot::PersonArm* out) const {
+  if (!options.mapping.arm_3d || !angles_.has_3d_columns) return false;
+  for (const AngleRow& row : angles_.rows) {
+    if (row.frame == frame) return robot::PersonArmFromRow(row, robot::ImageSideOf(angles_), out);
   }
   return false;
 }

@@ -9,6 +9,7 @@
 
 #include "armmimic/core/angle_file.h"
 #include "armmimic/core/status.h"
+#include "armmimic/robot/kinematics.h"
 #include "armmimic/robot/planner.h"
 #include "armmimic/robot/profile.h"
 #include "armmimic/robot/trajectory.h"
@@ -48,6 +49,9 @@ class RobotPlan {
   std::vector<LimitViolation> Violations(const robot::PlannerOptions& options) const;
   // The mapped joints of a row (NaN yaw held at 0), for the preview at the video's frame.
   bool MappedPose(int frame, const robot::PlannerOptions& options, robot::JointArray* out) const;
+  // The person's arm at `frame` from the file's 3-D columns, as the 3-D view draws it beside the
+  // robot; false where the row lacks them or the mapping plans from the 2-D columns.
+  bool PersonArmAt(int frame, const robot::PlannerOptions& options, robot::PersonArm* out) const;
   // The pose of the trajectory at time t (linear between keyframes).
   robot::JointArray PoseAt(double t_s) const;
   // Index of the keyframe at or before the angle file's `frame` (-1: none).

@@ -42,6 +42,15 @@ Status MimicRun::Start(const MimicOptions& options) {
   options_ = options;
   robot::LiveStreamOptions stream = options.stream;
   stream.sample_rate_hz = options.fallback_fps;
+  // The pose engine's named arm (the person's own, seen facing the camera) gives the image side
+  // the 3-D columns' azimuth is read from; with --side auto it is decided only once the video
+  // runs, and the stream turns J1 from the 2-D columns.
+  if (options.analysis.engine.kind == EngineKind::kPose) {
+    const PoseSide side = options.analysis.engine.pose.side;
+    stream.planner.mapping.image_side = side == PoseSide::kLeft    ? 1
+                                        : side == PoseSide::kRight ? -1
+                                                                   : 0;
+  }
   Status st = options.analysis.Check();
   if (st) st = stream_.Begin(stream);
   if (!st) return st;

@@ -70,4 +70,29 @@ std::array<bool, kJoints> JointsOutside(const JointLimits& limits, const JointAr
   return out;
 }
 
+namespace {
+
+// A segment's direction from its azimuth and elevation in the camera's frame, in the robot's
+// base frame (outward on the arm's side +x, towards the camera +y, up +z).
+Eigen::Vector3d DirectionInBase(double az_deg, double el_deg, int image_side) {
+  const double az = az_deg * M_PI / 180, el = el_deg * M_PI / 180;
+  return {image_side * std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
+}
+
+}  // namespace
+
+bool PersonArmFromRow(const AngleRow& row, int image_side, PersonArm* out, double beside_m,
+                      const ArmGeometry& geometry) {
+  if (!row.ok() || image_side == 0) return false;
+  for (double v : {row.upper_az_deg, row.upper_el_deg, row.fore_az_deg, row.fore_el_deg}) {
+    if (!std::isfinite(v)) return false;
+  }
+  out->shoulder = Eigen::Vector3d(0, -beside_m, geometry.shoulder_height_m);
+  out->elbow = out->shoulder + geometry.upper_arm_m *
+                                   DirectionInBase(row.upper_az_deg, row.upper_el_deg, image_side);
+  out->wrist = out->elbow +
+               geometry.forearm_m * DirectionInBase(row.fore_az_deg, row.fore_el_deg, image_side);
+  return true;
+}
+
 }  // namespace armmimic::robot

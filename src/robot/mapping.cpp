@@ -100,6 +100,26 @@ JointArray MappingOptions::Map(double upper_deg, double bend_deg, double yaw_deg
   return out;
 }
 
+bool SourcesFrom3d(const AngleRow& row, int image_side, double* upper, double* bend, double* yaw) {
+  if (image_side == 0 || !std::isfinite(row.upper_az_deg) || !std::isfinite(row.upper_el_deg) ||
+      !std::isfinite(row.elbow_deg)) {
+    return false;
+  }
+  *upper = row.upper_el_deg;
+  *bend = 180 - row.elbow_deg;
+  *yaw = std::abs(row.upper_el_deg) > 90 - kAzimuthBlindDeg
+             ? kNaN
+             : Wrap180(image_side > 0 ? row.upper_az_deg : 180 - row.upper_az_deg);
+  return true;
+}
+
+int ImageSideOf(const AngleFile& angles) {
+  const std::string side = angles.Meta("pose.side");
+  if (side == "left") return 1;
+  if (side == "right") return -1;
+  return 0;
+}
+
 std::string ParseJointMap(const std::string& value, JointMap* out) {
   const auto comma = value.find(',');
   const std::string form = "'" + value + "' is not SIGN,OFFSET (e.g. -1,-90 or +,0)";

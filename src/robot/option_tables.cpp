@@ -135,6 +135,10 @@ const std::vector<OptionField<MappingOptions>>& MappingOptionFields() {
       Choice<M>("j3_flexion", &M::j3_flexion, true, "bend", "flexion", "J3 source",
                 "arm: J3 from the flexion |bend| or the signed bend_deg")
           .Flag("--j3-source"),
+      Choice<M>("arm_3d", &M::arm_3d, true, "2d", "3d", "Arm source",
+                "arm: J1, J2 and J3 from the 3-D columns (the upper arm's azimuth and elevation, "
+                "elbow_deg) in rows that have them, or from the 2-D columns always")
+          .Flag("--arm-source"),
       Text<M>(
           "hold_deg", "0,0,0", [](const M& o) { return JoinNumbers(o.hold_deg.data() + 3, 3); },
           [](const std::string& text, M* o) {

@@ -2,6 +2,8 @@
 // times and rate, 1. unwrapping and impossible jumps, 2. gaps, 3. mapping, 4. the zero-phase
 // low-pass, 5. the joint limits, 6. keyframes and 7. the speed limits (the last two, and the
 // options' check, in planner.cpp).
+// Length: one file for the steps in order, each its own function over the shared series; the
+// 3-D sources' checks sit with the mapping step that reads them.
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -112,9 +114,11 @@ Status SampleTimes(const AngleFile& angles, const PlannerOptions& options, PlanR
   return Status::Ok();
 }
 
-// 1. Unwrap from the first measured posture and flag impossible jumps.
+// 1. Unwrap from the first measured posture and flag impossible jumps. side_3d: the arm's image
+// side when the rows' 3-D columns are the sources (SourcesFrom3d), 0 for the 2-D columns.
 Status Unwrap(const std::vector<AngleRow>& rows, const std::vector<double>& t, bool marker,
-              bool signed_column, const PlannerOptions& options, PlanReport* report, Series* out) {
+              bool signed_column, int side_3d, const PlannerOptions& options, PlanReport* report,
+              Series* out) {
   const int n = static_cast<int>(rows.size());
   std::vector<double>&upper = out->upper, &bend = out->bend, &yaw = out->yaw;
   std::vector<char>&good = out->good, &flagged = out->flagged;
@@ -130,10 +134,12 @@ Status Unwrap(const std::vector<AngleRow>& rows, const std::vector<double>& t, b
     if (!r.ok()) continue;
     double u = marker ? 0.0 : r.upper_deg;
     double b = r.bend_deg;
-    if (!std::isfinite(u) || !std::isfinite(b)) continue;
     // A marker row whose yaw sign is unknown holds J1 (never turned by the unsigned yaw).
-    const double y =
-        std::isfinite(r.turn_yaw_deg(signed_column)) ? r.turn_yaw_deg(signed_column) : kNaN;
+    double y = std::isfinite(r.turn_yaw_deg(signed_column)) ? r.turn_yaw_deg(signed_column) : kNaN;
+    // From the 3-D columns, a row without them is not measured (J1 held while the azimuth is
+    // blind).
+    if (side_3d != 0 && !SourcesFrom3d(r, side_3d, &u, &b, &y)) continue;
+    if (!std::isfinite(u) || !std::isfinite(b)) continue;
     if (signed_column && std::isnan(y) && std::isfinite(r.yaw_deg) && unsigned_rows++ == 0) {
       first_unsigned = r.frame;
     }
@@ -351,12 +357,31 @@ Status PlanTrajectory(const AngleFile& angles, const PlannerOptions& options, Tr
   }
   const bool marker = mapping.kind == SourceKind::kMarker;
   report.mapping = mapping.Describe();
+  int side_3d = 0;
+  if (!marker && mapping.arm_3d && angles.has_3d_columns) {
+    side_3d = ImageSideOf(angles);
+    if (side_3d == 0) {
+      return Status::Error("mapping.arm_3d",
+                           "the angle file's 3-D columns need the arm's side (pose.side in its "
+                           "header) to turn J1 from the azimuth; plan it from the 2-D columns "
+                           "instead");
+    }
+    if (!mapping.j2_elevation || !mapping.j3_flexion) {
+      return Status::Error("mapping.arm_3d",
+                           "the 3-D columns turn J2 by the elevation and J3 by the flexion; the "
+                           "signed sources (upper, bend) need the 2-D columns");
+    }
+    report.mapping +=
+        " from the 3-D columns (J1 the upper arm's azimuth, J2 its elevation, J3 "
+        "180 - elbow_deg)";
+  }
 
   Timing timing;
   s = SampleTimes(angles, options, &report, &timing);
   if (!s.ok()) return s;
   Series series;
-  s = Unwrap(rows, timing.t, marker, angles.has_signed_yaw_column, options, &report, &series);
+  s = Unwrap(rows, timing.t, marker, angles.has_signed_yaw_column, side_3d, options, &report,
+             &series);
   if (!s.ok()) return s;
   s = FillGaps(rows, timing, options, &report, &series);
   if (!s.ok()) return s;

@@ -113,10 +113,16 @@ bool StreamPlanner::Measure(const AngleRow& row, double prev_row_t, double* uppe
   if (!row.ok()) return false;
   double u = marker ? 0.0 : row.upper_deg;
   double b = row.bend_deg;
-  if (!std::isfinite(u) || !std::isfinite(b)) return false;
   // The marker engine's signed yaw turns J1; nan (the sign could not be told) holds it.
   const double turn = marker ? row.yaw_signed_deg : row.yaw_deg;
-  const double y = std::isfinite(turn) ? turn : kNaN;
+  double y = std::isfinite(turn) ? turn : kNaN;
+  // An arm engine's 3-D columns, when it measures them (docs/robot.md, "Mapping the 3-D columns").
+  const MappingOptions& m = options_.mapping;
+  if (!marker && m.arm_3d && m.image_side != 0 && std::isfinite(row.upper_az_deg) &&
+      !SourcesFrom3d(row, m.image_side, &u, &b, &y)) {
+    return false;
+  }
+  if (!std::isfinite(u) || !std::isfinite(b)) return false;
   if (have_prev_) {
     u -= 360.0 * std::round((u - prev_upper_) / 360.0);
     b -= 360.0 * std::round((b - prev_bend_) / 360.0);

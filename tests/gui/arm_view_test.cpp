@@ -20,6 +20,9 @@
 #include "video_player.h"
 #include "video_view.h"
 
+#include "armmimic/core/angle_file.h"
+#include "test_util.h"
+
 namespace armmimic::test {
 namespace {
 
@@ -84,6 +87,57 @@ TEST_F(ArmView3DTest, ShowsThePoseWithOutOfLimitJointsRed) {
     }
   }
   EXPECT_GT(blue, 100);
+}
+
+TEST_F(ArmView3DTest, AFileWithThreeDColumnsShowsThePersonsArmBesideTheRobot) {
+  // A pose-engine file of the person's left arm (image right) with the 3-D columns: level and
+  // reaching 60 degrees towards the camera.
+  TempDir dir;
+  const std::string path = dir.file("arm3d.tsv");
+  AngleFileWriter writer;
+  ASSERT_TRUE(writer
+                  .Open(path, {{"engine", "pose"}, {"fps", "30"}, {"pose.side", "left"}}, false,
+                        true, false, true)
+                  .ok());
+  for (int f = 0; f < 10; ++f) {
+    AngleRow r;
+    r.frame = f;
+    r.time_s = f / 30.0;
+    r.status = RowStatus::kOk;
+    r.upper_deg = 0;
+    r.fore_deg = 0;
+    r.bend_deg = 0;
+    r.upper_az_deg = r.fore_az_deg = 60;
+    r.upper_el_deg = r.fore_el_deg = 0;
+    r.elbow_deg = 180;
+    r.confidence = 0.9;
+    ASSERT_TRUE(writer.Write(r).ok());
+  }
+  ASSERT_TRUE(writer.Commit().ok());
+  gui::RobotPlan plan;
+  ASSERT_TRUE(plan.Load(path).ok());
+  robot::PlannerOptions options;
+  // The preview turns J1 by the azimuth, as the plan does.
+  robot::JointArray j;
+  ASSERT_TRUE(plan.MappedPose(5, options, &j));
+  EXPECT_NEAR(j[0], 60, 1e-9);
+  EXPECT_NEAR(j[1], -90, 1e-9);
+  robot::PersonArm arm;
+  ASSERT_TRUE(plan.PersonArmAt(5, options, &arm));
+  EXPECT_NEAR((arm.elbow - arm.shoulder).normalized().y(), std::sin(60 * M_PI / 180), 1e-9);
+  // From the 2-D columns there is no waist turn and no person's arm.
+  options.mapping.arm_3d = false;
+  ASSERT_TRUE(plan.MappedPose(5, options, &j));
+  EXPECT_NEAR(j[0], 0, 1e-9);
+  EXPECT_FALSE(plan.PersonArmAt(5, options, &arm));
+  // The view draws it and says so under the arm.
+  ArmView3D view;
+  view.setPose({60, -90, 0, 0, 0, 0}, "frame 5");
+  view.setPersonArm(arm);
+  ASSERT_TRUE(view.personArm().has_value());
+  EXPECT_TRUE(view.findChild<QLabel*>("armView3dCaption")->text().contains("the person's arm"));
+  view.setPersonArm(std::nullopt);
+  EXPECT_EQ(view.findChild<QLabel*>("armView3dCaption")->text(), "frame 5");
 }
 
 TEST_F(ArmView3DTest, OrbitZoomAndResetMoveTheCamera) {

@@ -178,6 +178,9 @@ const std::map<std::string, Absent>& AbsentRows() {
       {"planner.fallback_fps", {"", "the panel keeps the default fallback rate", ""}},
       {"mapping.j2_elevation", {"", "the panel maps J2 from the elevation (the default)", ""}},
       {"mapping.j3_flexion", {"", "the panel maps J3 from the flexion (the default)", ""}},
+      {"mapping.arm_3d",
+       {"", "the panel maps an arm from its 3-D columns where the file has them (the default)",
+        ""}},
       {"mapping.hold_deg", {"", "the panel holds J4..J6 at 0 (the default)", ""}},
       {"limits.min_deg",
        {"--limits sets both limits rows in its own J<n>=MIN:MAX form; its help gives both rows' "

@@ -107,5 +107,45 @@ TEST(Kinematics, PartsFollowTheirJointsAndOnlyViolatingOnesAreMarked) {
   EXPECT_EQ(JointsOutside(limits, {160, -200, 45, -266, 100, 266}), (std::array<bool, kJoints>{}));
 }
 
+// A row of the 3-D columns with both segments along (az, el).
+AngleRow Arm3d(double az, double el) {
+  AngleRow r;
+  r.status = RowStatus::kOk;
+  r.upper_az_deg = r.fore_az_deg = az;
+  r.upper_el_deg = r.fore_el_deg = el;
+  r.elbow_deg = 180;
+  return r;
+}
+
+TEST(Kinematics, ThePersonsArmPointsWhereTheDefaultMappingTurnsTheRobot) {
+  PersonArm a;
+  const ArmGeometry g;
+  // On the image's right, level in the image plane: outward, as J1 = 0 and J2 = -90 hold the
+  // robot's upper arm (+x), beside the robot at its shoulder height.
+  ASSERT_TRUE(PersonArmFromRow(Arm3d(0, 0), 1, &a));
+  EXPECT_TRUE(a.shoulder.isApprox(Eigen::Vector3d(0, -0.9, g.shoulder_height_m)));
+  EXPECT_TRUE((a.elbow - a.shoulder).isApprox(Eigen::Vector3d(g.upper_arm_m, 0, 0)));
+  EXPECT_TRUE((a.wrist - a.elbow).isApprox(Eigen::Vector3d(g.forearm_m, 0, 0)));
+  // The same arm on the image's left points outward at azimuth 180: +x again.
+  ASSERT_TRUE(PersonArmFromRow(Arm3d(180, 0), -1, &a));
+  EXPECT_NEAR((a.elbow - a.shoulder).x(), g.upper_arm_m, 1e-12);
+  // Reaching at the camera (azimuth 90): +y, where J1 = +90 turns the robot.
+  ASSERT_TRUE(PersonArmFromRow(Arm3d(90, 0), 1, &a));
+  EXPECT_NEAR((a.elbow - a.shoulder).y(), g.upper_arm_m, 1e-12);
+  // Hanging: straight down; raised: straight up.
+  ASSERT_TRUE(PersonArmFromRow(Arm3d(0, -90), 1, &a));
+  EXPECT_NEAR((a.elbow - a.shoulder).z(), -g.upper_arm_m, 1e-12);
+  ASSERT_TRUE(PersonArmFromRow(Arm3d(0, 90), 1, &a));
+  EXPECT_NEAR((a.elbow - a.shoulder).z(), g.upper_arm_m, 1e-12);
+  // No side, a lost row or a missing column: nothing to draw.
+  EXPECT_FALSE(PersonArmFromRow(Arm3d(0, 0), 0, &a));
+  AngleRow lost = Arm3d(0, 0);
+  lost.status = RowStatus::kLost;
+  EXPECT_FALSE(PersonArmFromRow(lost, 1, &a));
+  AngleRow partial = Arm3d(0, 0);
+  partial.fore_el_deg = kNaN;
+  EXPECT_FALSE(PersonArmFromRow(partial, 1, &a));
+}
+
 }  // namespace
 }  // namespace armmimic::robot

@@ -207,6 +207,36 @@ TEST(StreamPlanner, AMarkerRowWhoseYawSignIsUnknownHoldsJ1) {
   for (const StreamCommand& c : cmds) EXPECT_NEAR(c.joint_deg[0], -5, 1e-9) << c.frame;
 }
 
+TEST(StreamPlanner, AnArmsThreeDColumnsTurnTheWaistByTheAzimuthOnly) {
+  // The person's left arm (image right), live from the pose engine with BlazePose: 1 s hanging
+  // with an azimuth that jumps about, 1 s raising it level in the image plane, then swung
+  // forwards to 40 degrees.
+  PlannerOptions o;
+  o.mapping = MappingOptions::Default(SourceKind::kArm);
+  o.mapping.image_side = 1;
+  o.cutoff_hz = 0;
+  StreamPlanner p;
+  ASSERT_TRUE(p.Begin(o, SourceKind::kArm, kFps).ok());
+  auto row = [](int f) {
+    AngleRow r = test::MakeRow(f, kFps, -90, 0, kNaN, false);
+    r.upper_el_deg = f < 30 ? -85 : std::min(0.0, -85 + (f - 30) * 85.0 / 30);
+    r.upper_az_deg = f < 30 ? (f % 2 ? 120 : -60) : std::min(40.0, std::max(0, f - 60) * 1.0);
+    r.elbow_deg = 170;
+    return r;
+  };
+  const auto cmds = Follow(p, 0, 150, row);
+  ASSERT_FALSE(cmds.empty());
+  double last_j1 = 0;
+  for (const StreamCommand& c : cmds) {
+    if (c.frame < 30) {
+      EXPECT_NEAR(c.joint_deg[0], 0, 1e-9) << c.frame;  // held: no azimuth yet
+    }
+    EXPECT_NEAR(c.joint_deg[2], -10, 1e-9) << c.frame;  // 180 - elbow_deg
+    last_j1 = c.joint_deg[0];
+  }
+  EXPECT_NEAR(last_j1, 40, 1);
+}
+
 TEST(StreamPlanner, BeginRefusesACutoffAboveHalfTheFrameRate) {
   PlannerOptions o;
   o.cutoff_hz = 20;

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "armmimic/core/angle_file.h"
 #include "armmimic/robot/limits.h"
 
 namespace armmimic::robot {
@@ -49,6 +50,19 @@ struct ArmPart {
 // The solids of the arm in `pose`, base first: pedestal, shoulder housing (J1), upper arm (J2),
 // forearm (J3), wrist (J4, J5) and flange with an off-centre finger that shows J6's roll.
 std::vector<ArmPart> ArmParts(const ArmPose& pose, const ArmGeometry& geometry = {});
+
+// The person's arm of an angle row's 3-D columns (docs/robot.md, "Mapping the 3-D columns"),
+// placed beside the robot in its base frame so that the two can be compared: each segment's
+// direction turned the way the default mapping turns the robot (the arm's outward direction in
+// the image plane is +x, towards the camera +y, up +z), with the robot's link lengths, from a
+// shoulder `beside_m` to the robot's right (-y) at the robot's shoulder height.
+struct PersonArm {
+  Eigen::Vector3d shoulder, elbow, wrist;
+};
+// image_side: +1 the arm on the image's right, -1 on its left (ImageSideOf). False when the row
+// is not ok, lacks a 3-D value, or the side is 0.
+bool PersonArmFromRow(const AngleRow& row, int image_side, PersonArm* out, double beside_m = 0.9,
+                      const ArmGeometry& geometry = {});
 
 // The joints of `joint_deg` outside `limits`: the view draws their parts red.
 std::array<bool, kJoints> JointsOutside(const JointLimits& limits, const JointArray& joint_deg);

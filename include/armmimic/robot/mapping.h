@@ -44,6 +44,14 @@ struct MappingOptions {
   bool j2_elevation = true;
   bool j3_flexion = true;
   JointArray hold_deg{};  // J4..J6 targets (entries 3..5); J1..J3 entries unused
+  // Arm only: in rows with the 3-D columns (docs/robot.md, "Mapping the 3-D columns"), J1 from the
+  // upper arm's azimuth, J2 from its elevation and J3 from elbow_deg (SourcesFrom3d); false: from
+  // the 2-D columns always.
+  bool arm_3d = true;
+  // The side of the image the arm is on, for the azimuth: +1 right (the person's left arm),
+  // -1 left, 0 unknown. Not a setting: taken from the angle file's header (ImageSideOf) or the
+  // live engine.
+  int image_side = 0;
   // true: the planner checks `kind` against the file (DetectSourceKind); false: `kind` was chosen
   // by the user for a file whose kind cannot be told from its header, and is used as given.
   bool follow_file_kind = true;
@@ -58,6 +66,24 @@ struct MappingOptions {
   // `yaw_deg` must be finite (the planner holds the last yaw while it is NaN).
   JointArray Map(double upper_deg, double bend_deg, double yaw_deg) const;
 };
+
+// An upper arm within this many degrees of vertical has no azimuth to speak of (its horizontal
+// part is under a third of its length, and the azimuth's error grows as 1 / cos(elevation)):
+// J1 is held there.
+inline constexpr double kAzimuthBlindDeg = 20;
+
+// The 2-D sources that a row's 3-D columns stand for, so that Map() turns them like any arm row
+// with J2 from the elevation and J3 from the flexion: `upper` the upper arm's elevation (the
+// folded elevation is then el + 90: 0 hanging, 90 level, 180 up), `bend` 180 - elbow_deg (the
+// flexion), `yaw` the upper arm's azimuth from the image plane on the arm's side, positive
+// towards the camera (image_side +1: az itself; -1: 180 - az), nan while the upper arm is within
+// kAzimuthBlindDeg of vertical. False when the row lacks a 3-D value or image_side is 0.
+bool SourcesFrom3d(const AngleRow& row, int image_side, double* upper, double* bend, double* yaw);
+
+// The arm's side of the image from an angle file's header: the pose engine's pose.side names the
+// person's own arm, seen facing the camera (their left arm on the image's right: +1); 0 when the
+// header does not say.
+int ImageSideOf(const AngleFile& angles);
 
 // "SIGN,OFFSET" with SIGN + or - (or +1/-1), e.g. "-1,-90" or "+,0". Error text or "".
 std::string ParseJointMap(const std::string& value, JointMap* out);
