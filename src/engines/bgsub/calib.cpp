@@ -8,27 +8,20 @@
 
 #include "armmimic/core/geometry.h"
 #include "bgsub/masks.h"
+#include "common/straight_arm.h"
 
 namespace armmimic::bgsub {
 namespace {
 
-// The arm's thickness: this quantile of its columns' heights (the upper arm is the thickest part;
-// a part hidden in front of something of its own colour shows thinner, never thicker). Columns at
-// least kFullShare of that thick give the axis' height.
-constexpr double kThickQuantile = 0.8;
-constexpr double kFullShare = 0.75;
-constexpr double kBandShare = 0.3;
 // A region of the standstill's difference this many times smaller than the torso is a speck.
 constexpr int kBodyPartShare = 25;
 
-double Quantile(std::vector<double> v, double q) {
+double MedianOf(std::vector<double> v) {
   if (v.empty()) return kNaN;
-  auto at = v.begin() + static_cast<std::ptrdiff_t>(std::lround(q * (v.size() - 1)));
+  auto at = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
   std::nth_element(v.begin(), at, v.end());
   return *at;
 }
-
-double MedianOf(std::vector<double> v) { return Quantile(std::move(v), 0.5); }
 
 // The standing body: the largest region of the standstill's difference from the empty room.
 void FindBody(const PixelModel& pixels, ArmCalibration* cal) {
@@ -49,22 +42,6 @@ void FindBody(const PixelModel& pixels, ArmCalibration* cal) {
   }
   Close(&cal->body, cv::Rect(cv::Point(), cal->body.size()), 5);
   cal->body_box = c.box;
-}
-
-// The rows of `box` that hold the horizontal arm: around the fullest row, those at least
-// kBandShare as full (what hangs off it, a strip of the torso's side, is left out).
-cv::Rect HorizontalBand(const cv::Mat& arm, const cv::Rect& box) {
-  std::vector<int> counts(static_cast<std::size_t>(box.height));
-  for (int y = 0; y < box.height; ++y) {
-    counts[static_cast<std::size_t>(y)] =
-        cv::countNonZero(arm(cv::Rect(box.x, box.y + y, box.width, 1)));
-  }
-  const auto full = std::max_element(counts.begin(), counts.end());
-  const int floor = static_cast<int>(std::ceil(kBandShare * *full));
-  int top = static_cast<int>(full - counts.begin()), bottom = top;
-  while (top > 0 && counts[static_cast<std::size_t>(top - 1)] >= floor) --top;
-  while (bottom + 1 < box.height && counts[static_cast<std::size_t>(bottom + 1)] >= floor) ++bottom;
-  return cv::Rect(box.x, box.y + top, box.width, bottom - top + 1);
 }
 
 // The straight arm of the arm-length image: the largest region outside the standing body that
@@ -151,44 +128,24 @@ ArmCalibration Calibrate(const PixelModel& pixels, const cv::Mat& arm_length,
   const double centre_x =
       fixed_shoulder ? fixed_shoulder->x : cal.body_box->x + 0.5 * cal.body_box->width;
   cal.side = m.cx >= centre_x ? 1 : -1;
-  // Column extents of the straight arm, inner end (towards the body) first.
-  struct Column {
-    int x, count, top, bottom;
-  };
-  std::vector<Column> cols;
-  for (int x = band.x; x < band.x + band.width; ++x) {
-    Column c{x, 0, band.y + band.height, band.y - 1};
-    for (int y = band.y; y < band.y + band.height; ++y) {
-      if (!arm.at<uchar>(y, x)) continue;
-      ++c.count;
-      c.top = std::min(c.top, y);
-      c.bottom = std::max(c.bottom, y);
-    }
-    if (c.count > 0) cols.push_back(c);
-  }
-  if (cols.size() < 4) {
+  const StraightArmColumns cols = MeasureStraightArm(arm, band, cal.side);
+  if (!cols.ok) {
     cal.note = "arm-length image: the straight arm is too small";
     return cal;
   }
-  if (cal.side < 0) std::reverse(cols.begin(), cols.end());
-  const double length = std::abs(cols.back().x - cols.front().x) + 1;
-  std::vector<double> heights, mids;
-  for (const Column& c : cols) heights.push_back(c.count);
-  const double thick = Quantile(heights, kThickQuantile);
-  for (const Column& c : cols) {
-    if (c.count >= kFullShare * thick) mids.push_back(0.5 * (c.top + c.bottom));
-  }
+  const double length = std::abs(cols.outer_x - cols.inner_x) + 1;
+  const double thick = cols.thick_px;
   cal.half_width_px = std::max(1.0, 0.5 * thick);
-  cal.shoulder_px = cv::Point2d(cols.front().x, MedianOf(mids));
+  cal.shoulder_px = cv::Point2d(cols.inner_x, cols.axis_y);
   if (fixed_shoulder) {
     cal.shoulder_px = *fixed_shoulder;
-  } else if (const double axis = HangingArmAxis(cal, cols.front().x, length); std::isfinite(axis)) {
+  } else if (const double axis = HangingArmAxis(cal, cols.inner_x, length); std::isfinite(axis)) {
     cal.shoulder_px.x = axis;
   } else {
     // Where the straight arm leaves the hanging one: one arm radius outside the shoulder.
     cal.shoulder_px.x -= cal.side * cal.half_width_px;
   }
-  cal.reach_px = cal.side * (cols.back().x - cal.shoulder_px.x) + 0.5;
+  cal.reach_px = cal.side * (cols.outer_x - cal.shoulder_px.x) + 0.5;
   if (!(cal.reach_px > 4 * cal.half_width_px)) {
     cal.note = "arm-length image: the straight arm is shorter than it is thick";
     return cal;

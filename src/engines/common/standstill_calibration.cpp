@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "armmimic/core/angle_file.h"
+#include "common/straight_arm.h"
 
 namespace armmimic {
 namespace {
@@ -19,10 +20,6 @@ namespace {
 constexpr double kUpperShare = 0.186, kForeShare = 0.146, kHandShare = 0.108;
 constexpr double kWristOfReach =
     (kUpperShare + kForeShare) / (kUpperShare + kForeShare + kHandShare);
-// The straight arm's thickness: this quantile of its columns' heights (a part hidden in front of
-// something of its own colour shows thinner, never thicker); columns at least kFullShare of it
-// give the axis row; its band holds the rows at least kBandShare as full as the fullest.
-constexpr double kThickQuantile = 0.8, kFullShare = 0.75, kBandShare = 0.3;
 // A region of the standstill's difference this many times smaller than the torso is a speck.
 constexpr int kBodyPartShare = 25;
 // A hanging arm fitted further than this from straight down is not believed (the protocol asks
@@ -113,19 +110,7 @@ bool FindStraightArm(const cv::Mat& background, const cv::Mat& standstill,
   const Part* main = Largest(parts);
   if (!main) return false;
   *arm = labels == main->label;
-  std::vector<int> counts(static_cast<std::size_t>(main->box.height));
-  for (int y = 0; y < main->box.height; ++y) {
-    counts[static_cast<std::size_t>(y)] =
-        cv::countNonZero((*arm)(cv::Rect(main->box.x, main->box.y + y, main->box.width, 1)));
-  }
-  const auto full = std::max_element(counts.begin(), counts.end());
-  const int floor = static_cast<int>(std::ceil(kBandShare * *full));
-  int top = static_cast<int>(full - counts.begin()), bottom = top;
-  while (top > 0 && counts[static_cast<std::size_t>(top - 1)] >= floor) --top;
-  while (bottom + 1 < main->box.height && counts[static_cast<std::size_t>(bottom + 1)] >= floor) {
-    ++bottom;
-  }
-  const cv::Rect rows(main->box.x, main->box.y + top, main->box.width, bottom - top + 1);
+  const cv::Rect rows = HorizontalBand(*arm, main->box);
   *band = rows;
   for (const Part& p : parts) {
     const double cy = p.box.y + 0.5 * p.box.height;
@@ -202,37 +187,17 @@ StandstillCalibration CalibrateFromStandstill(const cv::Mat& background, const c
                (cal.side > 0 ? "right" : "left") + ", not on the side named";
     return cal;
   }
-  // The straight arm's columns, inner end (towards the body) first.
-  struct Column {
-    int x, count, top, bottom;
-  };
-  std::vector<Column> cols;
-  for (int x = band.x; x < band.x + band.width; ++x) {
-    Column c{x, 0, band.y + band.height, band.y - 1};
-    for (int y = band.y; y < band.y + band.height; ++y) {
-      if (!arm.at<uchar>(y, x)) continue;
-      ++c.count;
-      c.top = std::min(c.top, y);
-      c.bottom = std::max(c.bottom, y);
-    }
-    if (c.count > 0) cols.push_back(c);
-  }
-  if (cols.size() < 4) {
+  const StraightArmColumns cols = MeasureStraightArm(arm, band, cal.side);
+  if (!cols.ok) {
     cal.note = "the arm-length image: the straight arm is too small";
     return cal;
   }
-  if (cal.side < 0) std::reverse(cols.begin(), cols.end());
-  std::vector<double> heights, mids;
-  for (const Column& c : cols) heights.push_back(c.count);
-  const double thick = Quantile(heights, kThickQuantile);
-  for (const Column& c : cols) {
-    if (c.count >= kFullShare * thick) mids.push_back(0.5 * (c.top + c.bottom));
-  }
+  const double thick = cols.thick_px;
   const double r = std::max(1.0, 0.5 * thick);
   cal.half_width_px = r;
-  const double shoulder_y = Quantile(mids, 0.5);
-  const int inner = cols.front().x;
-  const double first_reach = cal.side * (cols.back().x - inner) + 1;
+  const double shoulder_y = cols.axis_y;
+  const int inner = cols.inner_x;
+  const double first_reach = cal.side * (cols.outer_x - inner) + 1;
   // The hanging upper arm: where the standstill shows the person but the arm-length image shows
   // the empty room again (the arm has left), from two radii below the shoulder down to the
   // elbow's expected height. Its axis in each row is the middle of that region near the straight
@@ -294,7 +259,7 @@ StandstillCalibration CalibrateFromStandstill(const cv::Mat& background, const c
     }
   }
   cal.shoulder = cv::Point2d(shoulder_x, shoulder_y);
-  cal.reach_px = cal.side * (cols.back().x - shoulder_x) + 0.5;
+  cal.reach_px = cal.side * (cols.outer_x - shoulder_x) + 0.5;
   if (!(cal.reach_px > 4 * r)) {
     cal.note = "the arm-length image: the straight arm is shorter than it is thick";
     return cal;

@@ -1,0 +1,31 @@
+// The straight horizontal arm of the arm-length image (thesis 5.2.3), measured column by column
+// once its region is found: shared by bgsub's calibration and the standstill calibration of the
+// arm engines (common/standstill_calibration.h), which find the region each their own way.
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "armmimic/core/angles.h"
+
+namespace armmimic {
+
+// The rows of `box` that hold the horizontal arm in `arm` (CV_8UC1 0/255): around the fullest
+// row, those at least 0.3 as full (what hangs off it, a strip of the torso's side, is left out).
+cv::Rect HorizontalBand(const cv::Mat& arm, const cv::Rect& box);
+
+struct StraightArmColumns {
+  bool ok = false;  // false with fewer than four columns: too small to measure
+  int inner_x = 0;  // the column nearest the body (the first with the arm, seen from it)
+  int outer_x = 0;  // the fingertip's column
+  // The arm's thickness: the 0.8 quantile of its columns' heights (a part hidden in front of
+  // something of its own colour shows thinner, never thicker).
+  double thick_px = kNaN;
+  // The axis row: the median middle of the columns at least 0.75 of that thick.
+  double axis_y = kNaN;
+};
+
+// The columns of `arm` within `band`; `side` +1 when the arm points to the image's right of the
+// body, -1 to its left.
+StraightArmColumns MeasureStraightArm(const cv::Mat& arm, const cv::Rect& band, int side);
+
+}  // namespace armmimic
