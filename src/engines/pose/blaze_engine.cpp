@@ -7,6 +7,7 @@
 #include "common/engine_internal.h"
 #include "pose/blaze_gate.h"
 #include "pose/blazepose.h"
+#include "pose/first_frame.h"
 
 namespace armmimic {
 namespace {
@@ -18,12 +19,8 @@ class BlazePoseEngine : public Engine {
   EngineKind kind() const override { return EngineKind::kPose; }
 
   Status Begin(const EngineContext& context) override {
-    if (context.frame_size.width <= 0 || context.frame_size.height <= 0) {
-      return Status::Error("pose: the video has no frame size");
-    }
-    area_ = cv::Rect(cv::Point(0, 0), context.frame_size);
-    if (context.roi) area_ = *context.roi & area_;
-    Status st;
+    Status st = internal::PoseArea(context, &area_);
+    if (!st) return st;
     blaze_ = internal::BlazePoseNetwork::Load(context.model_dir, &st);
     if (!blaze_) return st;
     movenet_ = PoseNetwork::Load(context.model_dir, &st);
@@ -46,7 +43,9 @@ class BlazePoseEngine : public Engine {
     if (tracking_) {
       crop_ = internal::CropFromAuxiliary(b.px[internal::kBlazeCentre], b.px[internal::kBlazeTop]);
     }
-    if (o_.side == PoseSide::kAuto) ChooseSide(b, &m);
+    if (o_.side == PoseSide::kAuto) {
+      o_.side = internal::BetterSeenSide(internal::AsMoveNetKeypoints(b), &m.estimate);
+    }
     const cv::Point2d offset(area_.tl());
     for (cv::Point2d& p : b.px) p += offset;
     gate_.Decide(b, o_.side, &m);
@@ -59,14 +58,6 @@ class BlazePoseEngine : public Engine {
   // The first crop (SeedCrop). False when nobody is seen.
   bool Seed(const cv::Mat& image) {
     return internal::SeedCrop(movenet_.get(), blaze_.get(), image, o_.crop_score, &crop_);
-  }
-
-  // Without a first-second choice: the arm more visible now.
-  void ChooseSide(const internal::BlazeLandmarks& b, ArmMeasurement* m) {
-    auto seen = [&](PoseSide side) { return ArmOf(internal::AsMoveNetKeypoints(b), side).score; };
-    o_.side = seen(PoseSide::kLeft) >= seen(PoseSide::kRight) ? PoseSide::kLeft : PoseSide::kRight;
-    m->estimate = std::string("arm: the person's ") + PoseSideName(o_.side) +
-                  " (the better seen in the first frame)";
   }
 
   PoseOptions o_;

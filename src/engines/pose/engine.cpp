@@ -8,6 +8,7 @@
 // on its direction (pose/gate.h): never `ok` on a guess.
 #include "armmimic/engines/pose.h"
 #include "common/engine_internal.h"
+#include "pose/first_frame.h"
 #include "pose/gate.h"
 #include "pose/looks.h"
 
@@ -21,12 +22,8 @@ class PoseEngine : public Engine {
   EngineKind kind() const override { return EngineKind::kPose; }
 
   Status Begin(const EngineContext& context) override {
-    if (context.frame_size.width <= 0 || context.frame_size.height <= 0) {
-      return Status::Error("pose: the video has no frame size");
-    }
-    area_ = cv::Rect(cv::Point(0, 0), context.frame_size);
-    if (context.roi) area_ = *context.roi & area_;
-    Status st;
+    Status st = internal::PoseArea(context, &area_);
+    if (!st) return st;
     net_ = PoseNetwork::Load(context.model_dir, &st);
     if (!net_) return st;
     tracking_ = false;
@@ -43,13 +40,7 @@ class PoseEngine : public Engine {
         tracking_ && (crop_.x != whole.x || crop_.y != whole.y || crop_.size != whole.size);
     PoseCrop used = cropped ? crop_ : whole;
     PoseKeypoints k = net_->Run(image, used);
-    if (o_.side == PoseSide::kAuto) {  // without a first-second choice: the better arm now
-      o_.side = ArmOf(k, PoseSide::kLeft).score >= ArmOf(k, PoseSide::kRight).score
-                    ? PoseSide::kLeft
-                    : PoseSide::kRight;
-      m.estimate = std::string("arm: the person's ") + PoseSideName(o_.side) +
-                   " (the better seen in the first frame)";
-    }
+    if (o_.side == PoseSide::kAuto) o_.side = internal::BetterSeenSide(k, &m.estimate);
     if (cropped && ArmOf(k, o_.side).score < o_.min_score) {
       // The scores dropped inside the crop: search the whole image again.
       const PoseKeypoints again = net_->Run(image, whole);
