@@ -16,6 +16,7 @@
 #include "armmimic/synth/arm_scene.h"
 #include "armmimic/synth/robustness_stats.h"
 #include "pose/blazepose.h"
+#include "start_pose.h"
 #include "test_util.h"
 
 #if defined(ARMMIMIC_HAVE_POSE_MODEL) && defined(ARMMIMIC_HAVE_BLAZEPOSE_MODEL)
@@ -24,17 +25,9 @@ namespace armmimic {
 namespace {
 
 std::unique_ptr<Engine> StartBlazePose(const cv::Size& size, PoseSide side) {
-  EngineOptions o;
-  o.kind = EngineKind::kPose;
-  o.pose.network = PoseNetworkKind::kBlazePose;
-  o.pose.side = side;
-  auto engine = Engine::Create(o);
-  EngineContext context;
-  context.frame_size = size;
-  context.fps = 30;
-  const Status st = engine->Begin(context);
-  EXPECT_TRUE(st.ok()) << st.message();
-  return engine;
+  PoseOptions pose;
+  pose.network = PoseNetworkKind::kBlazePose;
+  return test::StartPose(size, side, pose);
 }
 
 TEST(BlazePoseEngineTest, ASceneWithNobodyGivesLostRows) {

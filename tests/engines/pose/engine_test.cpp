@@ -16,6 +16,7 @@
 #include "armmimic/engines/engine.h"
 #include "armmimic/engines/pose.h"
 #include "armmimic/synth/arm_scene.h"
+#include "start_pose.h"
 #include "test_util.h"
 
 #ifdef ARMMIMIC_HAVE_POSE_MODEL
@@ -139,20 +140,7 @@ TEST(PoseNetworkTest, TheMirroredLookNamesTheSameJoints) {
   EXPECT_GT(mirrored.score[kLeftWrist], 0.4);
 }
 
-std::unique_ptr<Engine> StartPose(const cv::Size& size, PoseSide side,
-                                  const PoseOptions& pose = PoseOptions()) {
-  EngineOptions o;
-  o.kind = EngineKind::kPose;
-  o.pose = pose;
-  o.pose.side = side;
-  auto engine = Engine::Create(o);
-  EngineContext context;
-  context.frame_size = size;
-  context.fps = 30;
-  const Status st = engine->Begin(context);
-  EXPECT_TRUE(st.ok()) << st.message();
-  return engine;
-}
+using test::StartPose;
 
 TEST(PoseEngineTest, ASceneWithNobodyGivesLostRows) {
   synth::ArmSceneOptions o;
