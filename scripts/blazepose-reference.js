@@ -5,22 +5,11 @@
 // pixels) and the world landmark's x y z (metres, the crop's axes).
 //   node scripts/blazepose-reference.js MODEL_DIR OUT.tsv INPUT.ppm...
 // Needs @tensorflow/tfjs-core, -converter and -backend-wasm 4.22.0 installed outside the
-// repository, found through NODE_PATH (scripts/blazepose-parity.sh does both).
+// repository, found through NODE_PATH (scripts/pose-parity.sh does both).
 'use strict';
 const fs = require('fs');
 const path = require('path');
-const tf = require('@tensorflow/tfjs-core');
-const converter = require('@tensorflow/tfjs-converter');
-const wasm = require('@tensorflow/tfjs-backend-wasm');
-
-function readPpm(file) {
-  const buf = fs.readFileSync(file);
-  const header = buf.toString('latin1', 0, 64).match(/^P6\s+(\d+)\s+(\d+)\s+255\s/);
-  if (!header) throw new Error(`${file}: not a binary PPM`);
-  const [w, h] = [Number(header[1]), Number(header[2])];
-  const pixels = buf.subarray(header[0].length, header[0].length + w * h * 3);
-  return { w, h, data: Float32Array.from(pixels, (v) => v / 255) };
-}
+const { tf, readPpm, loadWasmModel } = require('./tfjs-model.js');
 
 async function main() {
   const [modelDir, out, ...inputs] = process.argv.slice(2);
@@ -28,30 +17,14 @@ async function main() {
     console.error('usage: node scripts/blazepose-reference.js MODEL_DIR OUT.tsv INPUT.ppm...');
     process.exit(2);
   }
-  const wasmDir = path.dirname(require.resolve('@tensorflow/tfjs-backend-wasm'));
-  wasm.setWasmPaths(wasmDir + path.sep);
-  wasm.setThreadsCount(1);
-  await tf.setBackend('wasm');
-  await tf.ready();
-  const json = JSON.parse(fs.readFileSync(path.join(modelDir, 'blazepose-full.json')));
-  const weights = fs.readFileSync(path.join(modelDir, 'blazepose-full.bin'));
-  const handler = {
-    load: async () => ({
-      modelTopology: json.modelTopology,
-      weightSpecs: json.weightsManifest[0].weights,
-      weightData: weights.buffer.slice(weights.byteOffset, weights.byteOffset + weights.length),
-      format: json.format,
-      generatedBy: json.generatedBy,
-      convertedBy: json.convertedBy,
-    }),
-  };
-  const model = await converter.loadGraphModel(handler);
+  const model = await loadWasmModel(modelDir, 'blazepose-full');
   const lines = ['# BlazePose full landmarks from TensorFlow.js (WASM backend, one thread) for the ' +
                  '256x256 network input of each frame (input scaled to 0..1): person flag, then ' +
                  'per body landmark x y (input pixels) and world x y z (metres, crop axes)',
-                 '# made by scripts/blazepose-parity.sh'];
+                 '# made by scripts/pose-parity.sh'];
   for (const file of inputs) {
-    const img = readPpm(file);
+    const ppm = readPpm(file);
+    const img = { w: ppm.w, h: ppm.h, data: Float32Array.from(ppm.pixels, (v) => v / 255) };
     const [ld, world, flag] = tf.tidy(() => model.execute(
         tf.tensor4d(img.data, [1, img.h, img.w, 3], 'float32'),
         ['Identity_2', 'Identity_4', 'Identity_3']));

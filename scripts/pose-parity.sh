@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Makes the pose parity test's reference files (tests/engines/data/pose_parity_*.tsv): the
-# network inputs of some frames (the real clip's and a generated scene's) are written outside
-# the repository by the pose_inputs tool, run through TensorFlow.js (WASM, one thread) by
-# scripts/pose-reference.js, and only the keypoint numbers are kept.
+# Makes the pose parity tests' reference files (tests/engines/data/*parity_*.tsv): the network
+# inputs of some frames (the real clip's and a generated scene's for MoveNet, by the pose_inputs
+# tool; the real clip's in the crops the engine places for BlazePose, by blazepose_inputs) are
+# written outside the repository, run through TensorFlow.js (WASM, one thread) by
+# scripts/pose-reference.js and scripts/blazepose-reference.js, and only the numbers are kept.
 #   scripts/pose-parity.sh [BUILD_DIR] [REAL_DIR]   (defaults: build, ../shared/real)
 # Installs @tensorflow/tfjs-core, -converter and -backend-wasm 4.22.0 into a scratch folder
 # ($ARMMIMIC_TFJS_DIR, default /tmp/armmimic-tfjs) with npm; runs offline after that.
@@ -17,7 +18,7 @@ TFJS="${ARMMIMIC_TFJS_DIR:-/tmp/armmimic-tfjs}"
 REAL_FRAMES=(0 4 8 12 16 20 24 28 32 36 40 44 48 52 56 60)
 SYNTH_FRAMES=(110 140 170 200 230 250)
 
-cmake --build "$BUILD_DIR" --target pose_inputs >/dev/null
+cmake --build "$BUILD_DIR" --target pose_inputs blazepose_inputs >/dev/null
 if [[ ! -d "$TFJS/node_modules/@tensorflow/tfjs-backend-wasm" ]]; then
   mkdir -p "$TFJS"
   npm install --silent --no-audit --no-fund --prefix "$TFJS" @tensorflow/tfjs-core@4.22.0 \
@@ -33,5 +34,13 @@ if [[ -f "$REAL/pose_squats.mp4" ]]; then
   mapfile -t real < <("$TOOL" "$TMP" video "$REAL/pose_squats.mp4" "${REAL_FRAMES[@]}")
   NODE_PATH="$TFJS/node_modules" node scripts/pose-reference.js "$MODEL_DIR" \
     tests/engines/data/pose_parity_real.tsv "${real[@]}"
+  # BlazePose on the same frames, each in the crop the pose engine places on it.
+  mapfile -t blaze < <(ARMMIMIC_MODEL_DIR="$MODEL_DIR" "$BUILD_DIR/tests/engines/blazepose_inputs" \
+    "$TMP" "$REAL/pose_squats.mp4" "${REAL_FRAMES[@]}")
+  NODE_PATH="$TFJS/node_modules" node scripts/blazepose-reference.js "$MODEL_DIR" \
+    tests/engines/data/blazepose_parity_real.tsv "${blaze[@]}"
+else
+  echo "scripts/pose-parity.sh: $REAL/pose_squats.mp4 not found: only the generated scene's" \
+    "MoveNet reference was made" >&2
 fi
-ls -l tests/engines/data/pose_parity_*.tsv
+ls -l tests/engines/data/*parity_*.tsv

@@ -1,5 +1,5 @@
 // The pose engine with BlazePose (--network blazepose): the network against TensorFlow.js on the
-// same crops (reference landmarks made by scripts/blazepose-parity.sh), a scene with nobody in it
+// same crops (reference landmarks made by scripts/pose-parity.sh), a scene with nobody in it
 // gives lost rows, and on the real clip the 3-D arm directions and elbow angles are measured
 // against MediaPipe's own world landmarks (pose_squats.world.tsv). Compiled in only when both
 // models are there (tests/engines/CMakeLists.txt); the real-clip test only when the clip is.

@@ -1,6 +1,6 @@
 // blazepose_inputs: writes BlazePose's 256x256 RGB inputs for frames of a video, each in the
 // crop the pose engine would place on it seen afresh (SeedCrop: MoveNet, then BlazePose's own
-// auxiliary landmarks), as binary PPM files for scripts/blazepose-parity.sh to run through
+// auxiliary landmarks), as binary PPM files for scripts/pose-parity.sh to run through
 // TensorFlow.js. The inputs stay outside the repository; only landmark numbers are committed.
 //   blazepose_inputs OUTDIR VIDEO FRAME...
 #include <cstdio>
