@@ -7,21 +7,12 @@
 #include <iostream>
 #include <string>
 
+#include "../../tools/write_ppm.h"
 #include "armmimic/core/video_source.h"
 #include "armmimic/engines/pose.h"
 #include "pose/blazepose.h"
 
-namespace {
-
-bool WritePpm(const std::string& path, const cv::Mat& rgb) {
-  FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) return false;
-  std::fprintf(f, "P6\n%d %d\n255\n", rgb.cols, rgb.rows);
-  for (int y = 0; y < rgb.rows; ++y) std::fwrite(rgb.ptr(y), 1, rgb.cols * 3, f);
-  return std::fclose(f) == 0;
-}
-
-}  // namespace
+using armmimic::test::WritePpm;
 
 int main(int argc, char** argv) {
   using namespace armmimic;  // NOLINT(google-build-using-namespace): a small tool
