@@ -53,7 +53,7 @@ EngineSettingsPanel::EngineSettingsPanel(QWidget* parent)
   engine_->addItem(tr("Background subtraction (ch. 5)"), int(EngineKind::kBgsub));
   engine_->addItem(tr("Lucas–Kanade tracking (ch. 6)"), int(EngineKind::kLk));
   engine_->addItem(tr("Marker joint (ch. 4)"), int(EngineKind::kMarker));
-  engine_->addItem(tr("Pose network (MoveNet)"), int(EngineKind::kPose));
+  engine_->addItem(tr("Pose network"), int(EngineKind::kPose));
   forms_[0] = new ParameterForm(EngineKind::kBgsub,
                                 LiftOptionFields(BgsubOptionFields(), &EngineOptions::bgsub));
   forms_[1] =

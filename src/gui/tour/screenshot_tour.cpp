@@ -383,6 +383,25 @@ int main(int argc, char** argv) {
     }
     w.job()->cancel();
     Wait([&] { return !w.job()->isRunning(); }, 60000);
+    // The same clip through BlazePose: the arm in 3-D, drawn in green beside the robot, which
+    // turns its waist by the arm's azimuth (the arms come forwards in the squat at frame 30).
+    p.engine.pose.network = armmimic::PoseNetworkKind::kBlazePose;
+    p.engine.pose.side = armmimic::PoseSide::kLeft;
+    w.settingsPanel()->setOptions(p);
+    w.startAnalysis();
+    if (!Wait([&] { return !w.job()->isRunning(); }, 300000)) return 1;
+    robot->setPlannerOptions(slow);
+    robot->link()->disconnectPort();  // the view shows the plan's pose, not a controller's
+    robot->simulator()->stop();
+    w.findChild<QDockWidget*>("analysisDock")->raise();
+    auto* robot_dock_3d = w.findChild<QDockWidget*>("robotDock");
+    robot_dock_3d->setFloating(true);
+    robot_dock_3d->setGeometry(820, 60, 760, 900);
+    robot->findChild<QTabWidget*>("robotTabs")->setCurrentIndex(0);
+    w.player()->seek(30);
+    Wait([&] { return w.view()->frameIndex() == 30; });
+    Shot("20-real-blazepose-3d");
+    robot_dock_3d->setFloating(false);
   }
   // Closing with results in no exported file asks first.
   ShotOfDialog<QMessageBox>(
