@@ -183,22 +183,25 @@ CONTROL
     "/usr/share/armmimic/models, licences in /usr/share/doc/armmimic-models/copyright"
 }
 
-# Runs the pose engine of the armmimic-cli at $1 on a generated scene in folder $2, with no model
-# flag, no model folder in the environment and an empty home; prints how many frames were ok.
+# Runs the pose engine of the armmimic-cli at $1, with each network, on a generated scene in
+# folder $2, with no model flag, no model folder in the environment and an empty home; prints how
+# many frames each found the arm in.
 run_pose_without_flags() {
-  local cli="$1" tmp="$2"
+  local cli="$1" tmp="$2" net ok report=""
   mkdir -p "$tmp/home"
   "$cli" -q synth arm "$tmp/scene" --seed 2 --frames 12 >&2 || return 1
-  (cd "$tmp" && env -u ARMMIMIC_MODEL_DIR -u XDG_CACHE_HOME HOME="$tmp/home" \
-    "$cli" -q analyze scene/scene.avi -o angles.tsv --engine pose --side left --start 105 >&2) ||
-    return 1
-  local ok
-  ok=$(awk -F'\t' '$3 == "ok"' "$tmp/angles.tsv" | wc -l)
-  if ((ok == 0)); then
-    echo "package.sh: $cli's pose engine found no arm in $tmp/scene/scene.avi" >&2
-    return 1
-  fi
-  echo "$ok of 12 frames ok"
+  for net in movenet blazepose; do
+    (cd "$tmp" && env -u ARMMIMIC_MODEL_DIR -u XDG_CACHE_HOME HOME="$tmp/home" \
+      "$cli" -q analyze scene/scene.avi -o "$net.tsv" --engine pose --network "$net" --side left \
+      --start 105 >&2) || return 1
+    ok=$(awk -F'\t' '$3 == "ok"' "$tmp/$net.tsv" | wc -l)
+    if ((ok == 0)); then
+      echo "package.sh: $cli's pose engine ($net) found no arm in $tmp/scene/scene.avi" >&2
+      return 1
+    fi
+    report+="${report:+, }$net $ok of 12 frames ok"
+  done
+  echo "$report"
 }
 
 if [[ $with_models == yes ]]; then
