@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "armmimic/core/angle_file.h"
+#include "common/colour_difference.h"
 #include "common/straight_arm.h"
 
 namespace armmimic {
@@ -27,16 +28,6 @@ constexpr int kBodyPartShare = 25;
 constexpr double kMaxHangFromDownDeg = 35;
 constexpr int kMinHangingRows = 5;
 constexpr double kHangingShare = 0.5;
-
-cv::Mat Differs(const cv::Mat& a, const cv::Mat& b, int threshold) {
-  cv::Mat diff;
-  cv::absdiff(a, b, diff);
-  std::vector<cv::Mat> channels;
-  cv::split(diff, channels);
-  cv::Mat largest = channels[0];
-  for (std::size_t c = 1; c < channels.size(); ++c) cv::max(largest, channels[c], largest);
-  return largest > threshold;
-}
 
 struct Part {
   int label = 0, area = 0;
@@ -75,11 +66,17 @@ void Open3(cv::Mat* mask) {
   cv::morphologyEx(*mask, *mask, cv::MORPH_OPEN, cv::Mat::ones(3, 3, CV_8UC1));
 }
 
+// Where the three images differ from each other (ColourDifferenceMask), each taken once.
+struct Differences {
+  cv::Mat standstill_room;        // the standstill against the empty room: the standing person
+  cv::Mat arm_length_room;        // the arm-length image against the empty room
+  cv::Mat arm_length_standstill;  // the arm-length image against the standstill
+};
+
 // The standing body: the largest region of the standstill's difference from the empty room, with
 // every sizeable region beside it (the head, a hanging arm a gap of wall away).
-bool FindBody(const cv::Mat& background, const cv::Mat& standstill, int threshold, cv::Mat* body,
-              cv::Rect* box) {
-  cv::Mat person = Differs(standstill, background, threshold), labels;
+bool FindBody(const Differences& d, cv::Mat* body, cv::Rect* box) {
+  cv::Mat person = d.standstill_room.clone(), labels;
   Open3(&person);
   const std::vector<Part> parts = Parts(person, &labels);
   const Part* main = Largest(parts);
@@ -98,12 +95,8 @@ bool FindBody(const cv::Mat& background, const cv::Mat& standstill, int threshol
 // The straight arm of the arm-length image: the largest region outside the standing body that
 // differs from both the empty room and the standstill, with the pieces in line with it (an arm
 // broken where it crosses something of its own colour). `band`: its rows, around the fullest.
-bool FindStraightArm(const cv::Mat& background, const cv::Mat& standstill,
-                     const cv::Mat& arm_length, int threshold, const cv::Mat& body, cv::Mat* arm,
-                     cv::Rect* band) {
-  cv::Mat both = Differs(arm_length, background, threshold) &
-                 Differs(arm_length, standstill, threshold),
-          labels;
+bool FindStraightArm(const Differences& d, const cv::Mat& body, cv::Mat* arm, cv::Rect* band) {
+  cv::Mat both = d.arm_length_room & d.arm_length_standstill, labels;
   both.setTo(0, body);
   Open3(&both);
   const std::vector<Part> parts = Parts(both, &labels);
@@ -168,13 +161,16 @@ StandstillCalibration CalibrateFromStandstill(const cv::Mat& background, const c
     cal.note = "needs the background, the standstill and the arm-length image, of one size";
     return cal;
   }
+  const Differences d{ColourDifferenceMask(standstill, background, threshold),
+                      ColourDifferenceMask(arm_length, background, threshold),
+                      ColourDifferenceMask(arm_length, standstill, threshold)};
   cv::Mat body, arm;
   cv::Rect body_box, band;
-  if (!FindBody(background, standstill, threshold, &body, &body_box)) {
+  if (!FindBody(d, &body, &body_box)) {
     cal.note = "no person in the standstill: it does not differ from the background";
     return cal;
   }
-  if (!FindStraightArm(background, standstill, arm_length, threshold, body, &arm, &band)) {
+  if (!FindStraightArm(d, body, &arm, &band)) {
     cal.note = "the arm-length image: no arm differs from the standstill";
     return cal;
   }
@@ -203,9 +199,7 @@ StandstillCalibration CalibrateFromStandstill(const cv::Mat& background, const c
   // elbow's expected height. Its axis in each row is the middle of that region near the straight
   // arm's inner end (the search leans out as far as an arm may hang); a row where less than an
   // arm radius of it shows (the arm in front of something of its own colour) gives none.
-  const cv::Mat left_empty = Differs(standstill, background, threshold) &
-                             Differs(standstill, arm_length, threshold) &
-                             ~Differs(arm_length, background, threshold);
+  const cv::Mat left_empty = d.standstill_room & d.arm_length_standstill & ~d.arm_length_room;
   const double lean = std::tan(kMaxHangFromDownDeg * M_PI / 180);
   const int y0 = static_cast<int>(std::lround(shoulder_y + 2 * r));
   const int y1 = static_cast<int>(

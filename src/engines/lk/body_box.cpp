@@ -4,6 +4,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "common/colour_difference.h"
+
 namespace armmimic::lk {
 namespace {
 // Pieces of the person at least this fraction of the largest one widen the body box.
@@ -16,13 +18,7 @@ BodyBox FindBodyBox(const cv::Mat& background, const cv::Mat& standstill,
   if (background.empty() || standstill.empty() || background.size() != standstill.size()) {
     return out;
   }
-  cv::Mat diff;
-  cv::absdiff(background, standstill, diff);
-  std::vector<cv::Mat> channels;
-  cv::split(diff, channels);
-  cv::Mat largest = channels[0];
-  for (std::size_t c = 1; c < channels.size(); ++c) cv::max(largest, channels[c], largest);
-  cv::Mat mask = largest > options.body_threshold;
+  cv::Mat mask = ColourDifferenceMask(background, standstill, options.body_threshold);
   // Close small gaps (a shirt close to the wall colour) before taking the largest region.
   cv::morphologyEx(mask, mask, cv::MORPH_CLOSE,
                    cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));

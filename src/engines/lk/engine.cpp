@@ -63,7 +63,6 @@ class LkEngine : public Engine {
       background_ = context.background(roi_).clone();
     }
     arm_length_.release();
-    calibrated_ = false;
     if (!context.arm_length.empty()) {
       if (context.arm_length.size() != frame_size_ || context.arm_length.type() != CV_8UC3) {
         return Status::Error("analysis.arm_length",
@@ -249,7 +248,6 @@ class LkEngine : public Engine {
     o_.side = cal.side > 0 ? LkArmSide::kRight : LkArmSide::kLeft;
     upper_length_px_ = cv::norm(cal.elbow - cal.shoulder);
     fore_length_px_ = cv::norm(cal.wrist - cal.elbow);
-    calibrated_ = true;
     tracker_ = lk::CreateModelTracker(o_);
     tracker_->SetTime(m.time_s);
     lk::TrackerStart start;
@@ -310,8 +308,7 @@ class LkEngine : public Engine {
   cv::Size frame_size_;
   cv::Rect roi_;
   cv::Mat background_;
-  cv::Mat arm_length_;       // the arm-length image's region; empty when not given
-  bool calibrated_ = false;  // the joints came from the standstill and the arm-length image
+  cv::Mat arm_length_;  // the arm-length image's region; empty when not given
   std::optional<cv::Point2d> shoulder_given_;
   double upper_length_px_ = 0, fore_length_px_ = 0;  // clicked; 0 when not given
   State state_ = State::kStandstill;
