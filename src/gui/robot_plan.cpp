@@ -116,10 +116,7 @@ bool RobotPlan::MappedPose(int frame, const robot::PlannerOptions& options,
   robot::MappingOptions mapping = options.mapping;
   mapping.kind = robot::DetectSourceKind(angles_);
   // An arm file's 3-D columns turn the joints as the plan turns them (docs/robot.md).
-  const int side_3d =
-      mapping.kind == robot::SourceKind::kArm && mapping.arm_3d && angles_.has_3d_columns
-          ? robot::ImageSideOf(angles_)
-          : 0;
+  const int side_3d = robot::SideFor3d(mapping, mapping.kind, angles_);
   // A row whose yaw sign is unknown (or whose azimuth is blind) shows J1 where the plan holds
   // it: at the last turn known.
   double held_yaw = 0;
@@ -144,9 +141,10 @@ bool RobotPlan::MappedPose(int frame, const robot::PlannerOptions& options,
 
 bool RobotPlan::PersonArmAt(int frame, const robot::PlannerOptions& options,
                             robot::PersonArm* out) const {
-  if (!options.mapping.arm_3d || !angles_.has_3d_columns) return false;
+  const int side = robot::SideFor3d(options.mapping, robot::DetectSourceKind(angles_), angles_);
+  if (side == 0) return false;
   for (const AngleRow& row : angles_.rows) {
-    if (row.frame == frame) return robot::PersonArmFromRow(row, robot::ImageSideOf(angles_), out);
+    if (row.frame == frame) return robot::PersonArmFromRow(row, side, out);
   }
   return false;
 }

@@ -120,6 +120,11 @@ int ImageSideOf(const AngleFile& angles) {
   return 0;
 }
 
+int SideFor3d(const MappingOptions& mapping, SourceKind kind, const AngleFile& angles) {
+  if (kind != SourceKind::kArm || !mapping.arm_3d || !angles.has_3d_columns) return 0;
+  return ImageSideOf(angles);
+}
+
 std::string ParseJointMap(const std::string& value, JointMap* out) {
   const auto comma = value.find(',');
   const std::string form = "'" + value + "' is not SIGN,OFFSET (e.g. -1,-90 or +,0)";

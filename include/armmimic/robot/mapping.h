@@ -85,6 +85,11 @@ bool SourcesFrom3d(const AngleRow& row, int image_side, double* upper, double* b
 // header does not say.
 int ImageSideOf(const AngleFile& angles);
 
+// The side SourcesFrom3d reads the rows of `angles` on under `mapping` (`kind` the file's), or 0
+// when they are planned from the 2-D columns: a marker file, arm_3d off, or no 3-D columns.
+// Also 0 for 3-D columns whose header does not name the side (the plan refuses those).
+int SideFor3d(const MappingOptions& mapping, SourceKind kind, const AngleFile& angles);
+
 // "SIGN,OFFSET" with SIGN + or - (or +1/-1), e.g. "-1,-90" or "+,0". Error text or "".
 std::string ParseJointMap(const std::string& value, JointMap* out);
 
