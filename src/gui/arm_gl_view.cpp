@@ -160,6 +160,23 @@ void ArmGlView::draw(Mesh& mesh, GLenum mode, const QMatrix4x4& model, const QCo
   mesh.buffer.release();
 }
 
+void ArmGlView::drawRod(const QVector3D& from, const QVector3D& to, float radius,
+                        const QColor& color) {
+  const QVector3D axis = to - from;
+  QMatrix4x4 model;
+  model.translate(from);
+  model.rotate(QQuaternion::rotationTo(QVector3D(0, 0, 1), axis.normalized()));
+  model.scale(radius, radius, axis.length());
+  draw(cylinder_, GL_TRIANGLES, model, color, true);
+}
+
+void ArmGlView::drawBall(const QVector3D& centre, float radius, const QColor& color) {
+  QMatrix4x4 model;
+  model.translate(centre);
+  model.scale(radius);
+  draw(sphere_, GL_TRIANGLES, model, color, true);
+}
+
 void ArmGlView::paintGL() {
   if (!program_) return;
   const QColor background = palette().color(QPalette::Base);
@@ -177,42 +194,21 @@ void ArmGlView::paintGL() {
   const std::array<bool, robot::kJoints> bad =
       robot::JointsOutside(owner_->limits(), owner_->pose());
   for (const robot::ArmPart& part : robot::ArmParts(pose)) {
-    const QVector3D from = V(part.from);
-    const QVector3D axis = V(part.to) - from;
     const float r = float(part.radius_m);
     const QColor color = part.joint < 0 ? kBase : bad[part.joint] ? kBad : kArm;
-    QMatrix4x4 model;
-    model.translate(from);
-    model.rotate(QQuaternion::rotationTo(QVector3D(0, 0, 1), axis.normalized()));
-    model.scale(r, r, axis.length());
-    draw(cylinder_, GL_TRIANGLES, model, color, true);
+    drawRod(V(part.from), V(part.to), r, color);
     // Rounded joints at both ends of the links.
     if (part.joint >= 1 && part.joint <= 2) {
-      for (const QVector3D& end : {from, V(part.to)}) {
-        QMatrix4x4 ball;
-        ball.translate(end);
-        ball.scale(r);
-        draw(sphere_, GL_TRIANGLES, ball, color, true);
-      }
+      for (const QVector3D& end : {V(part.from), V(part.to)}) drawBall(end, r, color);
     }
   }
   if (const std::optional<robot::PersonArm>& arm = owner_->personArm()) {
     // The person's arm beside the robot: two rods with round joints, the robot's lengths.
     const std::array<QVector3D, 3> points = {V(arm->shoulder), V(arm->elbow), V(arm->wrist)};
     for (std::size_t i = 0; i + 1 < points.size(); ++i) {
-      const QVector3D axis = points[i + 1] - points[i];
-      QMatrix4x4 model;
-      model.translate(points[i]);
-      model.rotate(QQuaternion::rotationTo(QVector3D(0, 0, 1), axis.normalized()));
-      model.scale(0.035f, 0.035f, axis.length());
-      draw(cylinder_, GL_TRIANGLES, model, kPerson, true);
+      drawRod(points[i], points[i + 1], 0.035f, kPerson);
     }
-    for (const QVector3D& p : points) {
-      QMatrix4x4 ball;
-      ball.translate(p);
-      ball.scale(0.05f);
-      draw(sphere_, GL_TRIANGLES, ball, kPerson, true);
-    }
+    for (const QVector3D& p : points) drawBall(p, 0.05f, kPerson);
   }
   const std::vector<Eigen::Vector3d>& path = owner_->path();
   if (path.size() > 1) {

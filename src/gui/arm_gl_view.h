@@ -39,6 +39,9 @@ class ArmGlView : public QOpenGLWidget, protected QOpenGLFunctions {
   // Frees what lives in the GL context (it goes when the panel floats or docks again).
   void releaseGl();
   void draw(Mesh& mesh, GLenum mode, const QMatrix4x4& model, const QColor& color, bool lit);
+  // A lit cylinder of `radius` from `from` to `to`, and a lit sphere: the arms' solids.
+  void drawRod(const QVector3D& from, const QVector3D& to, float radius, const QColor& color);
+  void drawBall(const QVector3D& centre, float radius, const QColor& color);
 
   ArmView3D* owner_;
   std::unique_ptr<QOpenGLShaderProgram> program_;
