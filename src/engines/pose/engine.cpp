@@ -1,9 +1,7 @@
 // The pose-network engine: MoveNet keypoints every frame, one arm's shoulder, elbow and wrist
-// turned into the angle file's directions. Crop tracking as in MoveNet's demo: the first frame
-// (and any frame after the person was lost) runs on the whole image padded to a square, later
-// frames on a square around the previous keypoints; when the arm's scores drop in a crop, the
-// whole image is searched again at once. That body look is followed by a closer look at the
-// upper body (pose/looks.h), which places the joints. A row is lost when a joint's score is low,
+// turned into the angle file's directions. MoveNet's looks at each frame (pose/movenet_track.h):
+// the body look, tracked as in MoveNet's demo, then a closer look at the upper body
+// (pose/looks.h), which places the joints. A row is lost when a joint's score is low,
 // a segment is much shorter than its usual length (pointing at the camera) or the looks disagree
 // on its direction (pose/gate.h): never `ok` on a guess.
 #include "armmimic/engines/pose.h"
@@ -11,6 +9,7 @@
 #include "pose/first_frame.h"
 #include "pose/gate.h"
 #include "pose/looks.h"
+#include "pose/movenet_track.h"
 
 namespace armmimic {
 namespace {
@@ -26,7 +25,7 @@ class PoseEngine : public Engine {
     if (!st) return st;
     net_ = PoseNetwork::Load(context.model_dir, &st);
     if (!net_) return st;
-    tracking_ = false;
+    track_ = std::make_unique<internal::MoveNetTracker>(net_.get(), o_);
     return Status::Ok();
   }
 
@@ -35,23 +34,9 @@ class PoseEngine : public Engine {
     m.frame = frame.index;
     m.time_s = frame.time_s;
     const cv::Mat image = frame.image(area_);
-    const PoseCrop whole = WholeImageCrop(image.size());
-    const bool cropped =
-        tracking_ && (crop_.x != whole.x || crop_.y != whole.y || crop_.size != whole.size);
-    PoseCrop used = cropped ? crop_ : whole;
-    PoseKeypoints k = net_->Run(image, used);
-    if (o_.side == PoseSide::kAuto) o_.side = internal::BetterSeenSide(k, &m.estimate);
-    if (cropped && ArmOf(k, o_.side).score < o_.min_score) {
-      // The scores dropped inside the crop: search the whole image again.
-      const PoseKeypoints again = net_->Run(image, whole);
-      if (ArmOf(again, o_.side).score > ArmOf(k, o_.side).score) {
-        k = again;
-        used = whole;
-      }
-    }
-    crop_ = NextCrop(k, image.size(), o_.crop_score);
-    tracking_ = crop_.size > 0;
-    internal::PoseLooks looks = internal::TakeLooks(net_.get(), image, k, used, o_.side, o_);
+    const PoseKeypoints body = track_->BodyLook(image, o_.side);
+    if (o_.side == PoseSide::kAuto) o_.side = internal::BetterSeenSide(body, &m.estimate);
+    internal::PoseLooks looks = track_->Looks(image, o_.side);
     looks.Shift(cv::Point2d(area_.tl()));
     gate_.Decide(looks, o_.side, &m);
     return m;
@@ -64,8 +49,7 @@ class PoseEngine : public Engine {
   internal::PoseArmGate gate_;
   cv::Rect area_;
   std::unique_ptr<PoseNetwork> net_;
-  bool tracking_ = false;
-  PoseCrop crop_;
+  std::unique_ptr<internal::MoveNetTracker> track_;
 };
 
 }  // namespace

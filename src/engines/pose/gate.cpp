@@ -7,12 +7,6 @@
 #include "armmimic/core/angles.h"
 
 namespace armmimic::internal {
-namespace {
-
-// The smallest in-plane segment lengths, in torso lengths (anthropometric tables put the upper
-// arm near 0.6 and the forearm near 0.5 of the shoulder-to-hip distance).
-constexpr double kUpperFloor = 0.45;
-constexpr double kForeFloor = 0.4;
 
 double TorsoPx(const PoseKeypoints& k, double min_score) {
   for (int j : {kLeftShoulder, kRightShoulder, kLeftHip, kRightHip}) {
@@ -22,16 +16,10 @@ double TorsoPx(const PoseKeypoints& k, double min_score) {
                   (k.px[kLeftHip] + k.px[kRightHip]) * 0.5);
 }
 
-// A person facing the camera, as the operator does, has their left shoulder on the image's right.
-// Both shoulders seen the other way round say that the network's left and right are not the
-// person's: they face away, or (on figures the network reads badly) it put the named arm's
-// joints on the other arm. Either way the row would name the wrong arm.
 bool Mirrored(const PoseKeypoints& k, double min_score) {
   return k.score[kLeftShoulder] >= min_score && k.score[kRightShoulder] >= min_score &&
          k.px[kLeftShoulder].x <= k.px[kRightShoulder].x;
 }
-
-}  // namespace
 
 double PoseLengthGate::P90(std::vector<double> v) {
   const auto k = static_cast<std::ptrdiff_t>((v.size() - 1) * 9 / 10);

@@ -17,6 +17,21 @@
 
 namespace armmimic::internal {
 
+// The smallest in-plane segment lengths, in torso lengths (anthropometric tables put the upper
+// arm near 0.6 and the forearm near 0.5 of the shoulder-to-hip distance).
+inline constexpr double kUpperFloor = 0.45;
+inline constexpr double kForeFloor = 0.4;
+
+// The distance from the shoulders' centre to the hips' centre in `k`, pixels; 0 when one of the
+// four is scored below `min_score`.
+double TorsoPx(const PoseKeypoints& k, double min_score);
+
+// A person facing the camera, as the operator does, has their left shoulder on the image's right.
+// Both shoulders seen the other way round say that the network's left and right are not the
+// person's: they face away, or (on figures the network reads badly) it put the named arm's
+// joints on the other arm. Either way the row would name the wrong arm.
+bool Mirrored(const PoseKeypoints& k, double min_score);
+
 class PoseLengthGate {
  public:
   // floor_ratio: the segment's smallest plausible in-plane length in torso lengths.
