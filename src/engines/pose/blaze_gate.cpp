@@ -97,16 +97,8 @@ void BlazeArmGate::Decide(const BlazeLandmarks& b, const PoseLooks& movenet, Pos
   // The 2-D columns, and the joints drawn, are MoveNet's: its closer looks place the joints at
   // about twice BlazePose's resolution in the image. The 3-D columns are BlazePose's. The two
   // agree within max_network_disagreement_deg (SecondOpinion).
-  const PoseArm a = ArmOf(movenet.Combined(), side);
-  m->shoulder_px = a.shoulder;
-  m->elbow_px = a.elbow;
-  m->wrist_px = a.wrist;
-  m->upper_deg = DirectionDeg(a.shoulder, a.elbow);
-  m->fore_deg = DirectionDeg(a.elbow, a.wrist);
-  m->bend_deg = Wrap180(m->fore_deg - m->upper_deg);
-  m->upper_com_px = (a.shoulder + a.elbow) * 0.5;
-  m->fore_com_px = (a.elbow + a.wrist) * 0.5;
-  m->bent = std::abs(m->bend_deg) > 20;
+  const PoseKeypoints seen = movenet.Combined();
+  SetArmDirections(seen, ArmOf(seen, side), o_.crop_score, &pivot_, m);
   AzimuthElevationDeg(world[0], world[1], &m->upper_az_deg, &m->upper_el_deg);
   AzimuthElevationDeg(world[1], world[2], &m->fore_az_deg, &m->fore_el_deg);
   m->elbow_deg = JointAngleDeg(world[0], world[1], world[2]);

@@ -90,10 +90,23 @@ void PoseArmGate::Decide(const PoseLooks& looks, PoseSide side, ArmMeasurement* 
     return;
   }
   m->phase = MeasurementPhase::kOk;
-  m->upper_deg = DirectionDeg(arm.shoulder, arm.elbow);
+  SetArmDirections(k, arm, o_.crop_score, &pivot_, m);
+}
+
+void SetArmDirections(const PoseKeypoints& k, const PoseArm& arm, double torso_score,
+                      ShoulderPivot* pivot, ArmMeasurement* m) {
+  cv::Point2d shoulder = arm.shoulder;
+  if (TorsoPx(k, torso_score) > 0) {
+    shoulder = pivot->Add(arm.shoulder, arm.elbow, (k.px[kLeftHip] + k.px[kRightHip]) * 0.5,
+                          (k.px[kLeftShoulder] + k.px[kRightShoulder]) * 0.5);
+  }
+  m->shoulder_px = shoulder;
+  m->elbow_px = arm.elbow;
+  m->wrist_px = arm.wrist;
+  m->upper_deg = DirectionDeg(shoulder, arm.elbow);
   m->fore_deg = DirectionDeg(arm.elbow, arm.wrist);
   m->bend_deg = Wrap180(m->fore_deg - m->upper_deg);
-  m->upper_com_px = (arm.shoulder + arm.elbow) * 0.5;
+  m->upper_com_px = (shoulder + arm.elbow) * 0.5;
   m->fore_com_px = (arm.elbow + arm.wrist) * 0.5;
   m->bent = std::abs(m->bend_deg) > 20;
 }

@@ -6,7 +6,8 @@
 //    the lengths seen so far (the last kWindow frames), never less than an anthropometric floor.
 //  - PoseArmGate: one arm's row from a frame's looks: lost when a joint is not seen, the
 //    shoulders are mirrored (the network's left is not the person's), a segment points at the
-//    camera, or the looks disagree on a segment's direction.
+//    camera, or the looks disagree on a segment's direction; an ok row's upper arm is measured
+//    from the shoulder's pivot once it is known (pose/shoulder_pivot.h).
 #pragma once
 
 #include <vector>
@@ -14,6 +15,7 @@
 #include "armmimic/engines/measurement.h"
 #include "armmimic/engines/pose_options.h"
 #include "pose/looks.h"
+#include "pose/shoulder_pivot.h"
 
 namespace armmimic::internal {
 
@@ -31,6 +33,12 @@ double TorsoPx(const PoseKeypoints& k, double min_score);
 // person's: they face away, or (on figures the network reads badly) it put the named arm's
 // joints on the other arm. Either way the row would name the wrong arm.
 bool Mirrored(const PoseKeypoints& k, double min_score);
+
+// An ok row's joints and 2-D columns from `arm` (joints of `k`): the upper arm is measured from
+// the shoulder's pivot (pose/shoulder_pivot.h) where `pivot` knows it, which needs `k`'s torso
+// scored at least `torso_score`, and from the shoulder keypoint otherwise.
+void SetArmDirections(const PoseKeypoints& k, const PoseArm& arm, double torso_score,
+                      ShoulderPivot* pivot, ArmMeasurement* m);
 
 class PoseLengthGate {
  public:
@@ -62,6 +70,7 @@ class PoseArmGate {
   PoseOptions o_;
   PoseLengthGate upper_;
   PoseLengthGate fore_;
+  ShoulderPivot pivot_;
 };
 
 }  // namespace armmimic::internal
