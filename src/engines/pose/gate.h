@@ -34,11 +34,13 @@ double TorsoPx(const PoseKeypoints& k, double min_score);
 // joints on the other arm. Either way the row would name the wrong arm.
 bool Mirrored(const PoseKeypoints& k, double min_score);
 
-// An ok row's joints and 2-D columns from `arm` (joints of `k`): the upper arm is measured from
-// the shoulder's pivot (pose/shoulder_pivot.h) where `pivot` knows it, which needs `k`'s torso
-// scored at least `torso_score`, and from the shoulder keypoint otherwise.
-void SetArmDirections(const PoseKeypoints& k, const PoseArm& arm, double torso_score,
-                      ShoulderPivot* pivot, ArmMeasurement* m);
+// Adds a frame's `arm` (joints of `k`) to `pivot` and returns the point to measure the upper
+// arm from: the shoulder's pivot where `pivot` knows it (pose/shoulder_pivot.h), the shoulder
+// keypoint otherwise, and always when `k`'s torso is not scored at least `torso_score`.
+cv::Point2d PivotShoulder(const PoseKeypoints& k, const PoseArm& arm, double torso_score,
+                          ShoulderPivot* pivot);
+// An ok row's joints and 2-D columns from `arm`, its upper arm measured from `shoulder`.
+void SetArmDirections(const PoseArm& arm, const cv::Point2d& shoulder, ArmMeasurement* m);
 
 class PoseLengthGate {
  public:
