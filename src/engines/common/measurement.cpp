@@ -2,6 +2,12 @@
 
 namespace armmimic {
 
+std::vector<const ArmMeasurement*> ArmMeasurement::Arms() const {
+  std::vector<const ArmMeasurement*> arms = {this};
+  if (right_arm) arms.push_back(right_arm.get());
+  return arms;
+}
+
 AngleRow ArmMeasurement::ToRow() const {
   AngleRow row;
   row.frame = frame;

@@ -5,9 +5,11 @@
 // whole image is searched again at once. That body look is followed by a closer look at the
 // upper body (pose/looks.h), which places the joints. A row is lost when a joint's score is low,
 // a segment is much shorter than its usual length (pointing at the camera) or the looks disagree
-// on its direction (pose/gate.h): never `ok` on a guess.
+// on its direction (pose/gate.h): never `ok` on a guess. With side both, the same looks give
+// both arms (pose/arms.h): the crop is searched again when either arm drops in it.
 #include "armmimic/engines/pose.h"
 #include "common/engine_internal.h"
+#include "pose/arms.h"
 #include "pose/first_frame.h"
 #include "pose/gate.h"
 #include "pose/looks.h"
@@ -17,7 +19,10 @@ namespace {
 
 class PoseEngine : public Engine {
  public:
-  explicit PoseEngine(const PoseOptions& options) : o_(options), gate_(options) {}
+  explicit PoseEngine(const PoseOptions& options)
+      : o_(options),
+        sides_(internal::FollowedSides(options.side)),
+        gates_(sides_.size(), internal::PoseArmGate(options)) {}
 
   EngineKind kind() const override { return EngineKind::kPose; }
 
@@ -40,28 +45,30 @@ class PoseEngine : public Engine {
         tracking_ && (crop_.x != whole.x || crop_.y != whole.y || crop_.size != whole.size);
     PoseCrop used = cropped ? crop_ : whole;
     PoseKeypoints k = net_->Run(image, used);
-    if (o_.side == PoseSide::kAuto) o_.side = internal::BetterSeenSide(k, &m.estimate);
-    if (cropped && ArmOf(k, o_.side).score < o_.min_score) {
+    if (sides_.front() == PoseSide::kAuto) {
+      sides_.front() = internal::BetterSeenSide(k, &m.estimate);
+    }
+    if (cropped && internal::WeakestArmScore(k, sides_) < o_.min_score) {
       // The scores dropped inside the crop: search the whole image again.
       const PoseKeypoints again = net_->Run(image, whole);
-      if (ArmOf(again, o_.side).score > ArmOf(k, o_.side).score) {
+      if (internal::WeakestArmScore(again, sides_) > internal::WeakestArmScore(k, sides_)) {
         k = again;
         used = whole;
       }
     }
     crop_ = NextCrop(k, image.size(), o_.crop_score);
     tracking_ = crop_.size > 0;
-    internal::PoseLooks looks = internal::TakeLooks(net_.get(), image, k, used, o_.side, o_);
+    internal::PoseLooks looks = internal::TakeLooks(net_.get(), image, k, used, sides_, o_);
     looks.Shift(cv::Point2d(area_.tl()));
-    gate_.Decide(looks, o_.side, &m);
-    return m;
+    return internal::DecideArms(gates_, sides_, looks, m);
   }
 
   AngleMeta Describe() const override { return {{"model", internal::kPoseModelName}}; }
 
  private:
   PoseOptions o_;
-  internal::PoseArmGate gate_;
+  std::vector<PoseSide> sides_;               // the arms followed (pose/arms.h)
+  std::vector<internal::PoseArmGate> gates_;  // one per side
   cv::Rect area_;
   std::unique_ptr<PoseNetwork> net_;
   bool tracking_ = false;
