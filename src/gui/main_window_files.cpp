@@ -99,8 +99,7 @@ QString MainWindow::planFilePath() const {
 
 void MainWindow::showResults(const ResultStore& results, const QString& angle_path) {
   results_ = results;
-  plot_->setResults(results_);
-  view_->setMeasurement(results_.at(view_->frameIndex()));
+  refreshViews();
   robot_->setAngleFile(angle_path);
   unsaved_ = false;  // they come from a file
   ui_->plotDock->raise();

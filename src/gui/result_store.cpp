@@ -14,4 +14,9 @@ int ResultStore::lost() const {
   return n;
 }
 
+int ResultStore::arms() const {
+  // Every measurement of a run follows the same arms.
+  return !by_frame_.empty() && by_frame_.begin()->second.right_arm ? 2 : 1;
+}
+
 }  // namespace armmimic::gui

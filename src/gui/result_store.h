@@ -25,6 +25,8 @@ class ResultStore {
   int size() const { return static_cast<int>(by_frame_.size()); }
   int rows() const;  // measurements that are angle-file rows (ok or lost)
   int lost() const;
+  // The arms measured: 2 for the pose engine's side both (ArmMeasurement::right_arm), else 1.
+  int arms() const;
 
  private:
   std::map<int, ArmMeasurement> by_frame_;

@@ -73,6 +73,8 @@ struct ArmMeasurement {
   // This measurement, and right_arm when set: one per angle file, in ArmOutputPaths' order
   // (analysis.h).
   std::vector<const ArmMeasurement*> Arms() const;
+  // Arms()[arm], or this measurement when there is no such arm (one arm measured).
+  const ArmMeasurement& Arm(std::size_t arm) const;
 
   bool row() const { return phase != MeasurementPhase::kSetup; }
   AngleRow ToRow() const;

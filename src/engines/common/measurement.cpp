@@ -8,6 +8,10 @@ std::vector<const ArmMeasurement*> ArmMeasurement::Arms() const {
   return arms;
 }
 
+const ArmMeasurement& ArmMeasurement::Arm(std::size_t arm) const {
+  return arm == 1 && right_arm ? *right_arm : *this;
+}
+
 AngleRow ArmMeasurement::ToRow() const {
   AngleRow row;
   row.frame = frame;
