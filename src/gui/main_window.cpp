@@ -267,6 +267,9 @@ void MainWindow::wireMimic() {
         AnalysisOptions options = settings_->options();
         options.inputs.clear();
         for (const QString& s : player_->inputs()) options.inputs.push_back(s.toStdString());
+        if (AnalysedArms(options).size() > 1) {  // the robot follows the arm picked
+          options.engine.pose.side = angles_->arm() == 1 ? PoseSide::kRight : PoseSide::kLeft;
+        }
         if (player_->isLive()) player_->close();  // the live run reads the camera itself
         return options;
       },
