@@ -126,15 +126,27 @@ void AnalysisJob::adoptResult(const QString& path) {
   summary_ = AnalysisSummary();
 }
 
-QString AnalysisJob::adoptResultText(const QString& text) {
+QString AnalysisJob::adoptResultTexts(const QStringList& texts, const AnalysisOptions& options) {
   if (running_) return tr("An analysis is running");
   if (!session_.isValid()) {
     return tr("cannot create a temporary folder for the results: %1").arg(session_.errorString());
   }
   const QString path = QDir(session_.path()).filePath(QString("angles-%1.tsv").arg(++run_));
-  const Status st = WriteOutputFile(path.toStdString(), text.toStdString());
-  if (!st) return QString::fromStdString(st.message());
-  adoptResult(path);
+  const std::vector<std::string> paths = ArmOutputPaths(options, path.toStdString());
+  if (paths.size() != static_cast<std::size_t>(texts.size())) {
+    return tr("the results hold %1 angle files, the settings %2")
+        .arg(texts.size())
+        .arg(paths.size());
+  }
+  QStringList written;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const Status st = WriteOutputFile(paths[i], texts[static_cast<int>(i)].toStdString());
+    if (!st) return QString::fromStdString(st.message());
+    written << QString::fromStdString(paths[i]);
+  }
+  result_paths_ = written;
+  result_options_ = options;
+  summary_ = AnalysisSummary();
   return QString();
 }
 

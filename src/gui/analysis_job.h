@@ -66,9 +66,10 @@ class AnalysisJob : public QObject {
   QString describeResult(bool cancelled) const;
   // Takes an angle file made elsewhere (File > Open angle file) as the result: export copies it.
   void adoptResult(const QString& path);
-  // Takes angle file text (a session's results) as the result, kept in the session folder.
-  // Returns "" or what went wrong.
-  QString adoptResultText(const QString& text);
+  // Takes angle file texts (a session's results: one, or with both arms the left and the right
+  // arm's) as the result of a run with `options`, kept in the session folder. Returns "" or what
+  // went wrong.
+  QString adoptResultTexts(const QStringList& texts, const AnalysisOptions& options);
   // Forgets the last result (another input was opened): nothing to export until the next run.
   void forgetResult() {
     if (!running_) result_paths_.clear();

@@ -5,6 +5,9 @@
 #include <map>
 #include <optional>
 
+#include <QStringList>
+
+#include "armmimic/core/status.h"
 #include "armmimic/engines/measurement.h"
 
 namespace armmimic::gui {
@@ -31,5 +34,10 @@ class ResultStore {
  private:
   std::map<int, ArmMeasurement> by_frame_;
 };
+
+// Reads the rows of angle files into `out` (cleared first): one file, or the left and the right
+// arm's files of one analysis (side both), joined frame by frame (ArmMeasurement::right_arm).
+// The error names the file.
+Status ReadResults(const QStringList& paths, ResultStore* out);
 
 }  // namespace armmimic::gui

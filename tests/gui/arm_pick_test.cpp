@@ -143,6 +143,32 @@ TEST_F(ArmPickTest, MimicLiveFollowsThePickedArm) {
   EXPECT_EQ(f.Meta("pose.side"), "right");
 }
 
+// A session keeps both arms' results: opened again, the picker and the robot follow either arm.
+TEST_F(ArmPickTest, ASessionKeepsBothArms) {
+  const QString session = QString::fromStdString(tmp_.file("both.armmimic"));
+  int left_ok = 0, right_ok = 0;
+  {
+    MainWindow w;
+    AnalyzeBothArms(w);
+    left_ok = OkRows(w.job()->resultPaths()[0]);
+    right_ok = OkRows(w.job()->resultPaths()[1]);
+    ASSERT_TRUE(w.saveSession(session)) << w.log()->text().toStdString();
+  }
+  MainWindow w;
+  w.resize(1200, 800);
+  w.show();
+  ASSERT_TRUE(w.openSession(session)) << w.log()->text().toStdString();
+  ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen() && w.results().size() > 0; }));
+  EXPECT_EQ(w.results().arms(), 2);
+  ASSERT_EQ(w.job()->resultPaths().size(), 2);
+  EXPECT_EQ(w.anglePanel()->arm(), 0);
+  EXPECT_EQ(w.plot()->pointCount(), left_ok);
+  EXPECT_EQ(w.robotPanel()->plan().angles().Meta("pose.side"), "left");
+  w.anglePanel()->setArm(1);
+  EXPECT_EQ(w.plot()->pointCount(), right_ok);
+  EXPECT_EQ(w.robotPanel()->plan().angles().Meta("pose.side"), "right");
+}
+
 // Exporting a result of both arms writes a file per arm beside the name chosen.
 TEST_F(ArmPickTest, ExportWritesAFilePerArm) {
   MainWindow w;
