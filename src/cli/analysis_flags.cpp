@@ -126,7 +126,8 @@ void AnalysisFlags::Register(ArgParser& p) {
   {
     // Read after the engine is known (CheckFor): lk takes it only with --auto-calibrate.
     const auto& side = Row(PoseOptionFields(), "side");
-    p.String(side.flag, &side_name_, "left|right", RowHelp(side, For("pose, lk --auto-calibrate")));
+    p.String(side.flag, &side_name_, "left|right|both",
+             RowHelp(side, For("pose, lk --auto-calibrate (left or right)")));
   }
   AddRowFlag(p, Row(PoseOptionFields(), "network"), &e.pose, For("pose"));
   p.String("--model", &f.model_dir, "DIR",
@@ -177,7 +178,12 @@ std::string AnalysisFlags::CheckFor(const ArgParser& p, const AnalysisOptions& o
   }
   PoseSide side = PoseSide::kAuto;
   if (p.Given("--side") && !ParsePoseSide(side_name_, &side)) {
-    return "--side '" + side_name_ + "': expected left or right (the person's own)";
+    return "--side '" + side_name_ + "': expected left, right or both (the person's own)";
+  }
+  if (side == PoseSide::kBoth && o.engine.kind != EngineKind::kPose) {
+    return "--side both is for --engine pose only (one pass of the network gives both arms); "
+           "--engine " +
+           engine + " takes left or right";
   }
   const bool auto_calibrate = o.auto_calibrate || f_.auto_calibrate;
   if (o.engine.kind != EngineKind::kPose && !auto_calibrate &&

@@ -50,6 +50,16 @@ Outcome Run(const AnalysisOptions& o, const std::string& output, const std::stri
   return out;
 }
 
+// The angle files a run writes for `output`, for messages: "A.tsv", or with side both
+// "A.left.tsv and A.right.tsv".
+std::string FilesText(const AnalysisOptions& o, const std::string& output) {
+  std::string text;
+  for (const std::string& path : ArmOutputPaths(o, output)) {
+    text += (text.empty() ? "" : " and ") + path;
+  }
+  return text;
+}
+
 std::string Source(const AnalysisOptions& o, const Outcome& r) {
   return r.summary.video.path.empty() ? o.inputs[0] : r.summary.video.path;
 }
@@ -69,8 +79,21 @@ void Report(const AnalysisOptions& o, const std::string& output, const Outcome& 
     char rate[64];
     std::snprintf(rate, sizeof(rate), "%.2f s, %.0f frames/s", s.seconds,
                   s.seconds > 0 ? r.frames_read / s.seconds : 0.0);
-    std::cerr << "analyze: " << s.frames << " rows (" << s.ok << " ok, " << s.lost << " lost) from "
-              << BaseName(Source(o, r)) << " in " << rate << " -> " << output << "\n";
+    const std::vector<std::string> paths = ArmOutputPaths(o, output);
+    if (paths.size() == 1 || paths.size() != s.arms.size()) {
+      std::cerr << "analyze: " << s.frames << " rows (" << s.ok << " ok, " << s.lost
+                << " lost) from " << BaseName(Source(o, r)) << " in " << rate << " -> " << output
+                << "\n";
+    } else {
+      // One file per arm, each with a row for every frame.
+      std::cerr << "analyze: " << s.arms.front().frames << " rows per arm from "
+                << BaseName(Source(o, r)) << " in " << rate << " ->";
+      for (std::size_t i = 0; i < paths.size(); ++i) {
+        std::cerr << (i ? "," : "") << " " << paths[i] << " (" << s.arms[i].ok << " ok, "
+                  << s.arms[i].lost << " lost)";
+      }
+      std::cerr << "\n";
+    }
   }
 }
 
@@ -80,21 +103,29 @@ std::string Cell(const std::string& text) { return EscapeTsvField(text); }
 
 struct SummaryRow {
   std::string video;
-  std::string angles;  // the angle file; empty for a video that ran and wrote none
+  std::string output;        // the angle file as planned (A.tsv; with side both A.left.tsv ...)
+  bool angles_shown = true;  // false for a video that ran and wrote none
   std::string status = "skipped", error;
   AnalysisSummary summary;
 };
 
-std::string SummaryText(const std::vector<SummaryRow>& rows) {
+// One line per angle file: per video, or with side both per video and arm.
+std::string SummaryText(const std::vector<SummaryRow>& rows, const AnalysisOptions& options) {
   std::string text = "video\tangles\tframes\tok\tlost\tcoverage\tseconds\tstatus\terror\n";
   for (const SummaryRow& r : rows) {
     const AnalysisSummary& s = r.summary;
     const bool ran = r.status != "skipped";
-    const double coverage = s.frames > 0 ? static_cast<double>(s.ok) / s.frames : kNaN;
-    text += Cell(r.video) + "\t" + Cell(r.angles) + "\t" + std::to_string(s.frames) + "\t" +
-            std::to_string(s.ok) + "\t" + std::to_string(s.lost) + "\t" +
-            FormatNumber(coverage, 3) + "\t" + (ran ? FormatNumber(s.seconds, 2) : "nan") + "\t" +
-            r.status + "\t" + Cell(r.error) + "\n";
+    const std::vector<std::string> paths = ArmOutputPaths(options, r.output);
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+      AnalysisSummary::ArmRows n{PoseSide::kAuto, s.frames, s.ok, s.lost};
+      if (paths.size() > 1) n = i < s.arms.size() ? s.arms[i] : AnalysisSummary::ArmRows();
+      const double coverage = n.frames > 0 ? static_cast<double>(n.ok) / n.frames : kNaN;
+      text += Cell(r.video) + "\t" + (r.angles_shown ? Cell(paths[i]) : "") + "\t" +
+              std::to_string(n.frames) + "\t" + std::to_string(n.ok) + "\t" +
+              std::to_string(n.lost) + "\t" + FormatNumber(coverage, 3) + "\t" +
+              (ran ? FormatNumber(s.seconds, 2) : "nan") + "\t" + r.status + "\t" + Cell(r.error) +
+              "\n";
+    }
   }
   return text;
 }
@@ -110,16 +141,18 @@ int AnalyzeOne(const AnalysisOptions& o, const std::string& output, const Global
   if (r.summary.cancelled) {
     std::cerr << "analyze: " << InterruptGuard::Message() << "; ";
     if (r.summary.meta.empty()) {
-      std::cerr << "no row yet, " << output << " not written\n";
+      std::cerr << "no row yet, " << FilesText(o, output) << " not written\n";
     } else {
-      std::cerr << r.summary.frames << " rows kept in " << output << " (marked complete=no)\n";
+      std::cerr << r.summary.frames << " rows kept in " << FilesText(o, output)
+                << " (marked complete=no)\n";
     }
     return kExitFailure;
   }
   Report(o, output, r, global);
   if (!r.summary.incomplete.empty()) {
     std::cerr << "armmimic-cli analyze: " << Source(o, r) << ": " << r.summary.incomplete << "; "
-              << r.summary.frames << " rows kept in " << output << " (marked complete=no)\n";
+              << r.summary.frames << " rows kept in " << FilesText(o, output)
+              << " (marked complete=no)\n";
     return kExitFailure;
   }
   return kExitOk;
@@ -147,7 +180,7 @@ int AnalyzeBatch(const AnalysisOptions& options, const BatchPlan& plan,
   int failed = 0;
   for (std::size_t i = 0; i < n; ++i) {
     rows[i].video = plan.videos[i];
-    rows[i].angles = plan.outputs[i];  // a skipped video's: where a rerun writes it
+    rows[i].output = plan.outputs[i];  // a skipped video's: where a rerun writes it
   }
   for (std::size_t i = 0; i < n && !InterruptGuard::interrupted(); ++i) {
     AnalysisOptions o = options;
@@ -158,7 +191,7 @@ int AnalyzeBatch(const AnalysisOptions& options, const BatchPlan& plan,
     SummaryRow& row = rows[i];
     row.summary = r.summary;
     // The file exists once its header went out: complete, incomplete or interrupted with rows.
-    if (!r.status || r.summary.meta.empty()) row.angles.clear();
+    if (!r.status || r.summary.meta.empty()) row.angles_shown = false;
     if (!r.status) {
       row.status = "failed";
       row.error = Worded(r.status);
@@ -169,9 +202,10 @@ int AnalyzeBatch(const AnalysisOptions& options, const BatchPlan& plan,
       row.error = InterruptGuard::Message() +
                   (r.summary.meta.empty() ? "; not written" : "; rows kept, marked complete=no");
       std::cerr << "analyze: " << label << " " << InterruptGuard::Message() << "; "
-                << (r.summary.meta.empty() ? plan.outputs[i] + " not written"
-                                           : std::to_string(r.summary.frames) + " rows kept in " +
-                                                 plan.outputs[i] + " (marked complete=no)")
+                << (r.summary.meta.empty()
+                        ? FilesText(o, plan.outputs[i]) + " not written"
+                        : std::to_string(r.summary.frames) + " rows kept in " +
+                              FilesText(o, plan.outputs[i]) + " (marked complete=no)")
                 << "\n";
     } else if (!r.summary.incomplete.empty()) {
       row.status = "incomplete";
@@ -185,7 +219,7 @@ int AnalyzeBatch(const AnalysisOptions& options, const BatchPlan& plan,
       Report(o, plan.outputs[i], r, global);
     }
   }
-  const Status st = WriteOutputFile(plan.summary, SummaryText(rows));
+  const Status st = WriteOutputFile(plan.summary, SummaryText(rows, options));
   if (!st) {
     std::cerr << "armmimic-cli analyze: " << st.message() << "\n";
     return kExitFailure;

@@ -41,8 +41,8 @@ constexpr const char* kSynopsis =
     "          [--side left|right] [--start F] [--model DIR]\n"
     "  armmimic-cli analyze INPUT... -o ANGLES.tsv --engine marker --reference REF.png\n"
     "          [--low 20] [--high 80] [--fov 60]\n"
-    "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine pose [--side left|right] [--start F]\n"
-    "          [--model DIR]\n"
+    "  armmimic-cli analyze VIDEO -o ANGLES.tsv --engine pose [--side left|right|both]\n"
+    "          [--start F] [--model DIR]\n"
     "  armmimic-cli analyze VIDEO -o NEW.tsv --params-from OLD.tsv [flags]\n"
     "  armmimic-cli analyze (VIDEO... | --list FILE) --output-dir DIR [--summary FILE]\n"
     "          (--engine E [engine flags] | --params-from OLD.tsv [flags])\n"
@@ -63,8 +63,11 @@ constexpr const char* kDescription =
     "pose: a pose network (MoveNet) finds the person's arm in every frame from F on, with no\n"
     "background or calibration; a row is lost where the arm is not seen or a segment points at\n"
     "the camera, and a confidence column (0-1) follows the angles. --side names the person's\n"
-    "own arm (default: the better seen over the first second). The model, found without flags,\n"
-    "comes with the armmimic-models package or scripts/deps.sh --with-model (docs/pose.md).\n"
+    "own arm (default: the better seen over the first second); --side both follows both arms\n"
+    "from the same inferences into one file per arm: -o A.tsv writes A.left.tsv and\n"
+    "A.right.tsv (with --output-dir, NAME.left.tsv and NAME.right.tsv, a summary line each).\n"
+    "The model, found without flags, comes with the armmimic-models package or\n"
+    "scripts/deps.sh --with-model (docs/pose.md).\n"
     "The header records the run: the engine, every ENGINE.KEY setting and the input images.\n"
     "--params-from OLD.tsv repeats that run on VIDEO; flags given as well override it. A\n"
     "recorded image is looked for where it was, beside OLD.tsv, then in the current folder; a\n"
@@ -191,11 +194,16 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
   }
   if (Status st = o.Check(); !st) return p.UsageError(Worded(st));
   BatchPlan plan;
-  if (batch) {
+  if (!batch) {
+    outputs.clear();  // with --side both: A.left.tsv and A.right.tsv
+    for (const std::string& path : ArmOutputPaths(o, a.output)) outputs.push_back({"-o", path});
+  } else {
     plan = PlanBatch(videos, a.output_dir, a.summary);
     outputs.clear();
     for (std::size_t i = 0; i < videos.size(); ++i) {
-      outputs.push_back({"the angle file of " + videos[i], plan.outputs[i]});
+      for (const std::string& path : ArmOutputPaths(o, plan.outputs[i])) {
+        outputs.push_back({"the angle file of " + videos[i], path});
+      }
     }
     outputs.push_back({"--summary", plan.summary});
     if (Status st = CheckOutputsAreDistinct(outputs); !st) return p.UsageError(st.message());

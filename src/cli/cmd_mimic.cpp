@@ -134,6 +134,10 @@ std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* 
   if (auto code = p.Parse(args)) return code;
   if (auto code = PickInput(p, videos, camera, stream_url, realtime, &o.analysis)) return code;
   if (auto code = analysis_flags.Finish(p, &o.analysis)) return code;
+  if (AnalysedArms(o.analysis).size() > 1) {
+    return p.UsageError(
+        "--side both: the robot follows one arm; name it with --side left or right");
+  }
   if (!m->dry_run && m->port.port.empty()) {
     return p.UsageError("--port is required (or --dry-run; 'send --list-ports' lists the ports)");
   }

@@ -71,7 +71,12 @@ AnalysisJob::AnalysisJob(QObject* parent) : QObject(parent), worker_(new Analysi
               emit finished(false, false);
               return;
             }
-            result_path_ = pending_path_;
+            result_options_ = pending_options_;
+            result_paths_.clear();
+            for (const std::string& path :
+                 ArmOutputPaths(result_options_, pending_path_.toStdString())) {
+              result_paths_ << QString::fromStdString(path);
+            }
             summary_ = summary;
             emit finished(true, summary.cancelled);
           });
@@ -97,37 +102,69 @@ AnalysisJob::~AnalysisJob() {
 }
 
 QString AnalysisJob::exportResult(const QString& path) const {
-  if (result_path_.isEmpty()) return tr("Nothing to export yet: run the analysis first (F5)");
-  QFile in(result_path_);
-  if (!in.open(QIODevice::ReadOnly)) {
-    return tr("%1: cannot read the analysis result: %2").arg(result_path_, in.errorString());
+  if (result_paths_.isEmpty()) return tr("Nothing to export yet: run the analysis first (F5)");
+  const std::vector<std::string> targets = ArmOutputPaths(result_options_, path.toStdString());
+  if (targets.size() != static_cast<std::size_t>(result_paths_.size())) {
+    return tr("%1: the result has %2 angle files").arg(path).arg(result_paths_.size());
   }
-  const QByteArray bytes = in.readAll();
-  const Status st = WriteOutputFile(path.toStdString(), bytes.toStdString());
-  return st ? QString() : QString::fromStdString(st.message());
+  for (int i = 0; i < result_paths_.size(); ++i) {
+    QFile in(result_paths_[i]);
+    if (!in.open(QIODevice::ReadOnly)) {
+      return tr("%1: cannot read the analysis result: %2").arg(result_paths_[i], in.errorString());
+    }
+    const QByteArray bytes = in.readAll();
+    const Status st = WriteOutputFile(targets[static_cast<std::size_t>(i)], bytes.toStdString());
+    if (!st) return QString::fromStdString(st.message());
+  }
+  return QString();
 }
 
 void AnalysisJob::adoptResult(const QString& path) {
   if (running_) return;
-  result_path_ = path;
+  result_paths_ = QStringList{path};
+  result_options_ = AnalysisOptions();  // one file, exported as it is
   summary_ = AnalysisSummary();
 }
 
-QString AnalysisJob::adoptResultText(const QString& text) {
+QString AnalysisJob::adoptResultTexts(const QStringList& texts, const AnalysisOptions& options) {
   if (running_) return tr("An analysis is running");
   if (!session_.isValid()) {
     return tr("cannot create a temporary folder for the results: %1").arg(session_.errorString());
   }
   const QString path = QDir(session_.path()).filePath(QString("angles-%1.tsv").arg(++run_));
-  const Status st = WriteOutputFile(path.toStdString(), text.toStdString());
-  if (!st) return QString::fromStdString(st.message());
-  adoptResult(path);
+  const std::vector<std::string> paths = ArmOutputPaths(options, path.toStdString());
+  if (paths.size() != static_cast<std::size_t>(texts.size())) {
+    return tr("the results hold %1 angle files, the settings %2")
+        .arg(texts.size())
+        .arg(paths.size());
+  }
+  QStringList written;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const Status st = WriteOutputFile(paths[i], texts[static_cast<int>(i)].toStdString());
+    if (!st) return QString::fromStdString(st.message());
+    written << QString::fromStdString(paths[i]);
+  }
+  result_paths_ = written;
+  result_options_ = options;
+  summary_ = AnalysisSummary();
   return QString();
 }
 
 QString AnalysisJob::describeResult(bool cancelled) const {
+  const QString done = cancelled ? tr("cancelled") : tr("done");
+  if (summary_.arms.size() == 2) {
+    const AnalysisSummary::ArmRows &left = summary_.arms[0], &right = summary_.arms[1];
+    return tr("Analysis %1: %2 rows per arm, left %3 ok, %4 lost, right %5 ok, %6 lost in %7 s")
+        .arg(done)
+        .arg(left.frames)
+        .arg(left.ok)
+        .arg(left.lost)
+        .arg(right.ok)
+        .arg(right.lost)
+        .arg(summary_.seconds, 0, 'f', 2);
+  }
   return tr("Analysis %1: %2 rows, %3 ok, %4 lost in %5 s")
-      .arg(cancelled ? tr("cancelled") : tr("done"))
+      .arg(done)
       .arg(summary_.frames)
       .arg(summary_.ok)
       .arg(summary_.lost)
@@ -149,6 +186,7 @@ bool AnalysisJob::start(const AnalysisOptions& options, bool live) {
   cancel_.store(false);
   running_ = true;
   pending_path_ = QDir(session_.path()).filePath(QString("angles-%1.tsv").arg(++run_));
+  pending_options_ = options;
   emit started();
   QMetaObject::invokeMethod(worker_, [w = worker_, options, path = pending_path_, live] {
     w->analyze(options, path, live);

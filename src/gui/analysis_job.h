@@ -51,23 +51,28 @@ class AnalysisJob : public QObject {
   bool start(const AnalysisOptions& options, bool live = false);
   bool startBackground(const QStringList& inputs, int start, int count, const QString& path);
   void cancel();
-  // The angle file of the last finished analysis ("" when none).
-  QString resultPath() const { return result_path_; }
+  // The angle file of the last finished analysis ("" when none); with both arms analysed (the
+  // pose engine's side both), the left arm's.
+  QString resultPath() const { return result_paths_.value(0); }
+  // Every angle file of the last finished analysis: one, or the left and the right arm's.
+  const QStringList& resultPaths() const { return result_paths_; }
   // The folder the results live in until exported (removed with this job).
   QString resultFolder() const { return session_.path(); }
-  // Copies the last result to `path` (atomically: a failed export leaves no half file).
+  // Copies the last result to `path` (atomically: a failed export leaves no half file); with
+  // both arms, to the arm files of `path` (A.left.tsv and A.right.tsv for A.tsv, ArmOutputPaths).
   // Returns "" or what went wrong, naming the file.
   QString exportResult(const QString& path) const;
   // "Analysis done: 40 rows, 38 ok, 2 lost in 0.25 s"
   QString describeResult(bool cancelled) const;
   // Takes an angle file made elsewhere (File > Open angle file) as the result: export copies it.
   void adoptResult(const QString& path);
-  // Takes angle file text (a session's results) as the result, kept in the session folder.
-  // Returns "" or what went wrong.
-  QString adoptResultText(const QString& text);
+  // Takes angle file texts (a session's results: one, or with both arms the left and the right
+  // arm's) as the result of a run with `options`, kept in the session folder. Returns "" or what
+  // went wrong.
+  QString adoptResultTexts(const QStringList& texts, const AnalysisOptions& options);
   // Forgets the last result (another input was opened): nothing to export until the next run.
   void forgetResult() {
-    if (!running_) result_path_.clear();
+    if (!running_) result_paths_.clear();
   }
   const AnalysisSummary& summary() const { return summary_; }
   bool waitForFinished(int timeout_ms);  // for tests and shutdown; pumps events
@@ -91,8 +96,10 @@ class AnalysisJob : public QObject {
   QTemporaryDir session_;
   bool running_ = false;
   int run_ = 0;
+  AnalysisOptions pending_options_;  // of the run going on, then of the result
   QString pending_path_;
-  QString result_path_;
+  QStringList result_paths_;
+  AnalysisOptions result_options_;
   AnalysisSummary summary_;
 };
 

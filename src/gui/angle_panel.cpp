@@ -39,7 +39,15 @@ AnglePanel::AnglePanel(QWidget* parent)
           [this, reset] { reset->setEnabled(plot_->isZoomed()); });
   reset->setEnabled(false);
   updateTimeAxisButton();
+  ui_->armPick->hide();
+  connect(ui_->armPick, &QComboBox::currentIndexChanged, this, &AnglePanel::armChanged);
 }
+
+void AnglePanel::setArmCount(int arms) { ui_->armPick->setVisible(arms > 1); }
+
+int AnglePanel::arm() const { return ui_->armPick->isHidden() ? 0 : ui_->armPick->currentIndex(); }
+
+void AnglePanel::setArm(int arm) { ui_->armPick->setCurrentIndex(arm); }
 
 AnglePanel::~AnglePanel() = default;
 

@@ -1,6 +1,7 @@
 // AnglePanel: the Angles dock: the plot with its tools (reset zoom, frames or seconds, save the
-// plot as an image, save the frames in view as CSV) and the hover readout. The form is
-// ui/angle_panel.ui; the tools are also the plot's right-click menu.
+// plot as an image, save the frames in view as CSV) and the hover readout; with both arms
+// analysed (the pose engine's side both), the arm picked for the plot, the overlay's angles and
+// the robot. The form is ui/angle_panel.ui; the tools are also the plot's right-click menu.
 #pragma once
 
 #include <memory>
@@ -30,8 +31,15 @@ class AnglePanel : public QWidget {
   bool saveImage(const QString& path);
   // Called when the video's frame rate is known: a time axis needs one.
   void updateTimeAxisButton();
+  // The arms the results hold: the arm picker shows only for 2 (left and right).
+  void setArmCount(int arms);
+  // The arm picked: 0 the person's left, 1 the right (0 with one arm).
+  int arm() const;
+  void setArm(int arm);
 
  signals:
+  // The operator picked the other arm.
+  void armChanged(int arm);
   // "Save range as CSV…": the window asks where and writes the rows of the frames in view.
   void rangeCsvRequested();
   void message(const QString& text);

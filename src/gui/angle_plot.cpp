@@ -223,12 +223,13 @@ void AnglePlot::fitDegreeTicks(const QRectF& plot_area) {
   y_->setLabelFormat(step < 1 ? "%.1f" : "%.0f");
 }
 
-void AnglePlot::setResults(const ResultStore& results) {
+void AnglePlot::setResults(const ResultStore& results, int arm) {
   rows_.clear();
   rows_.reserve(results.all().size());
   file_column_ = false;
   has_yaw_ = false;
-  for (const auto& [frame, m] : results.all()) {
+  for (const auto& [frame, both] : results.all()) {
+    const ArmMeasurement& m = both.Arm(static_cast<std::size_t>(arm));
     if (!m.row()) continue;
     rows_.push_back(m.ToRow());
     // The marker engine (it names each view's image) measures the joint's bend, not segments.

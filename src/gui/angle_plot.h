@@ -36,8 +36,9 @@ class AnglePlot : public QChartView {
 
   // The video's frames (0 .. count-1) and rate; fps <= 0 (still images) allows no time axis.
   void setFrameRange(int frame_count, double fps = 0);
-  // Rebuilds the curves from `results` (called on the window's throttle timer).
-  void setResults(const ResultStore& results);
+  // Rebuilds the curves from `results` (called on the window's throttle timer); with two arms
+  // measured (the pose engine's side both), those of arm `arm` (0 the left, 1 the right).
+  void setResults(const ResultStore& results, int arm = 0);
   void setCursorFrame(int frame);
   int cursorFrame() const { return cursor_frame_; }
   int pointCount() const;  // measured frames on the upper-arm curve, for tests

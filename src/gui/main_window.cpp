@@ -152,8 +152,8 @@ void MainWindow::wireActions() {
                     tr("Images (*.png *.bmp)"));
     if (!path.isEmpty()) estimateBackground(*k, path);
   });
-  connect(actions_, &AppActions::overlayChanged, this,
-          [this] { view_->setOverlayOptions(actions_->overlayOptions()); });
+  connect(actions_, &AppActions::overlayChanged, this, &MainWindow::applyOverlayOptions);
+  connect(angles_, &AnglePanel::armChanged, this, &MainWindow::followPickedArm);
   connect(a->about, &QAction::triggered, this, [this] { ShowAbout(this); });
 
   connect(bar_, &PlaybackBar::seekRequested, player_, &VideoPlayer::seek);
@@ -174,8 +174,7 @@ void MainWindow::wireActions() {
       session_path_.clear();  // another input: the session no longer describes what is shown
       results_.clear();
       job_->forgetResult();
-      plot_->setResults(results_);
-      view_->setMeasurement(std::nullopt);
+      refreshViews();
       robot_->setAngleFile(QString());
       unsaved_ = false;
     }
@@ -255,8 +254,9 @@ void MainWindow::wireAnalysis() {
     if (ok && analysis) {
       unsaved_ = results_.rows() > 0;
       if (!job_->resultPath().isEmpty()) log_->info(job_->describeResult(cancelled));
-      robot_->setAngleFile(job_->resultPath());  // the plan follows the angles shown
-      ui_->plotDock->raise();                    // the angles just measured, not old errors
+      // The plan follows the angles shown (the arm picked, with both arms).
+      robot_->setAngleFile(job_->resultPaths().value(angles_->arm(), job_->resultPath()));
+      ui_->plotDock->raise();  // the angles just measured, not old errors
     }
   });
 }
@@ -267,6 +267,9 @@ void MainWindow::wireMimic() {
         AnalysisOptions options = settings_->options();
         options.inputs.clear();
         for (const QString& s : player_->inputs()) options.inputs.push_back(s.toStdString());
+        if (AnalysedArms(options).size() > 1) {  // the robot follows the arm picked
+          options.engine.pose.side = angles_->arm() == 1 ? PoseSide::kRight : PoseSide::kLeft;
+        }
         if (player_->isLive()) player_->close();  // the live run reads the camera itself
         return options;
       },
@@ -381,8 +384,24 @@ void MainWindow::showFrame(int index, const QImage& image, double time_s) {
 }
 
 void MainWindow::refreshViews() {
-  plot_->setResults(results_);
+  angles_->setArmCount(results_.arms());
+  plot_->setResults(results_, angles_->arm());
   view_->setMeasurement(results_.at(view_->frameIndex()));
+}
+
+void MainWindow::applyOverlayOptions() {
+  OverlayOptions o = actions_->overlayOptions();
+  o.arm = angles_->arm();
+  view_->setOverlayOptions(o);
+}
+
+void MainWindow::followPickedArm() {
+  applyOverlayOptions();
+  refreshViews();
+  if (!job_->isRunning() && job_->resultPaths().size() > 1) {
+    robot_->setAngleFile(job_->resultPaths().value(angles_->arm()));
+  }
+  updateStatus();
 }
 
 void MainWindow::updateStatus() {

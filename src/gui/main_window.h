@@ -93,6 +93,11 @@ class MainWindow : public QMainWindow {
   void wireAnalysis();
   void wireMimic();
   void refreshViews();
+  // The overlay's options as the actions set them, its texts about the arm picked.
+  void applyOverlayOptions();
+  // The arm picked on the angle panel (both arms analysed): the plot, the overlay's angles and
+  // the robot's angle file follow it.
+  void followPickedArm();
   void updateStatus();
   void setBusy(bool busy);
   void showFrame(int index, const QImage& image, double time_s);

@@ -99,8 +99,8 @@ QString MainWindow::planFilePath() const {
 
 void MainWindow::showResults(const ResultStore& results, const QString& angle_path) {
   results_ = results;
-  plot_->setResults(results_);
-  view_->setMeasurement(results_.at(view_->frameIndex()));
+  if (results_.arms() > 1) angles_->setArm(0);  // the left arm's file is `angle_path`
+  refreshViews();
   robot_->setAngleFile(angle_path);
   unsaved_ = false;  // they come from a file
   ui_->plotDock->raise();
@@ -194,7 +194,11 @@ bool MainWindow::openSession(const QString& path) {
   }
   Session s;
   QString error = ReadSession(path, &s);
-  if (error.isEmpty() && !s.angle_text.isEmpty()) error = job_->adoptResultText(s.angle_text);
+  if (error.isEmpty() && !s.angle_text.isEmpty()) {
+    QStringList texts = {s.angle_text};
+    if (!s.right_angle_text.isEmpty()) texts << s.right_angle_text;
+    error = job_->adoptResultTexts(texts, s.options);
+  }
   if (!error.isEmpty()) {
     log_->error(error);
     return false;
@@ -202,13 +206,11 @@ bool MainWindow::openSession(const QString& path) {
   settings_->setOptions(s.options);
   ResultStore results;
   if (!s.angle_text.isEmpty()) {
-    AngleFile file;
-    const Status st = ReadAngleFile(job_->resultPath().toStdString(), &file);
+    const Status st = ReadResults(job_->resultPaths(), &results);
     if (!st) {
       log_->error(tr("%1: its results: %2").arg(path, QString::fromStdString(st.message())));
       return false;
     }
-    for (const AngleRow& row : file.rows) results.add(ArmMeasurement::FromRow(row));
   }
   RecentFiles::rememberDir(path);
   session_path_ = QFileInfo(path).absoluteFilePath();  // its plan and journal go beside it
@@ -230,9 +232,12 @@ bool MainWindow::saveSession(const QString& path) {
   if (player_->isOpen() && !player_->isLive()) s.inputs = player_->inputs();
   s.options = settings_->options();
   s.frame = view_->frameIndex();
-  if (!job_->resultPath().isEmpty()) {
-    QFile f(job_->resultPath());
-    if (f.open(QIODevice::ReadOnly)) s.angle_text = QString::fromUtf8(f.readAll());
+  const QStringList results = job_->resultPaths();  // one, or the left and right arm's
+  for (int i = 0; i < results.size() && i < 2; ++i) {
+    QFile f(results[i]);
+    if (f.open(QIODevice::ReadOnly)) {
+      (i == 0 ? s.angle_text : s.right_angle_text) = QString::fromUtf8(f.readAll());
+    }
   }
   const QString error = WriteSession(path, s);
   if (!error.isEmpty()) {

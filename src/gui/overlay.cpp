@@ -134,6 +134,44 @@ void PaintSkeleton(QPainter& p, const ArmMeasurement& m, double unit) {
   }
 }
 
+namespace {
+
+// One arm's segments, centres of mass, elbow and shoulder.
+void PaintArm(QPainter& p, const ArmMeasurement& m, const OverlayOptions& o, double unit) {
+  if (o.segments && m.shoulder_px && m.elbow_px) {
+    p.setPen(QPen(kUpper, 2 * unit, Qt::SolidLine, Qt::RoundCap));
+    p.drawLine(Q(*m.shoulder_px), Q(*m.elbow_px));
+    if (m.wrist_px) {
+      p.setPen(QPen(kFore, 2 * unit, Qt::SolidLine, Qt::RoundCap));
+      p.drawLine(Q(*m.elbow_px), Q(*m.wrist_px));
+    }
+  }
+  if (o.centres) {
+    p.setBrush(Qt::NoBrush);
+    if (Finite(m.upper_com_px)) {
+      p.setPen(QPen(kUpper, 1.5 * unit));
+      p.drawEllipse(Q(m.upper_com_px), 4 * unit, 4 * unit);
+    }
+    if (Finite(m.fore_com_px)) {
+      p.setPen(QPen(kFore, 1.5 * unit));
+      p.drawEllipse(Q(m.fore_com_px), 4 * unit, 4 * unit);
+    }
+  }
+  if (o.elbow && m.elbow_px) {
+    p.setPen(Qt::NoPen);
+    p.setBrush(kJoint);
+    p.drawEllipse(Q(*m.elbow_px), 3 * unit, 3 * unit);
+  }
+  if (o.shoulder && m.shoulder_px) {
+    p.setPen(QPen(kJoint, 1.5 * unit));
+    p.setBrush(Qt::NoBrush);
+    const QPointF s = Q(*m.shoulder_px);
+    p.drawRect(QRectF(s - QPointF(3.5 * unit, 3.5 * unit), QSizeF(7 * unit, 7 * unit)));
+  }
+}
+
+}  // namespace
+
 void PaintOverlayShapes(QPainter& p, QSize image_size, const ArmMeasurement* m,
                         const OverlayOptions& o) {
   p.save();
@@ -196,36 +234,7 @@ void PaintOverlayShapes(QPainter& p, QSize image_size, const ArmMeasurement* m,
       p.setBrush(Qt::NoBrush);
     }
     if (o.skeleton) PaintSkeleton(p, *m, unit);
-    if (o.segments && m->shoulder_px && m->elbow_px) {
-      p.setPen(QPen(kUpper, 2 * unit, Qt::SolidLine, Qt::RoundCap));
-      p.drawLine(Q(*m->shoulder_px), Q(*m->elbow_px));
-      if (m->wrist_px) {
-        p.setPen(QPen(kFore, 2 * unit, Qt::SolidLine, Qt::RoundCap));
-        p.drawLine(Q(*m->elbow_px), Q(*m->wrist_px));
-      }
-    }
-    if (o.centres) {
-      p.setBrush(Qt::NoBrush);
-      if (Finite(m->upper_com_px)) {
-        p.setPen(QPen(kUpper, 1.5 * unit));
-        p.drawEllipse(Q(m->upper_com_px), 4 * unit, 4 * unit);
-      }
-      if (Finite(m->fore_com_px)) {
-        p.setPen(QPen(kFore, 1.5 * unit));
-        p.drawEllipse(Q(m->fore_com_px), 4 * unit, 4 * unit);
-      }
-    }
-    if (o.elbow && m->elbow_px) {
-      p.setPen(Qt::NoPen);
-      p.setBrush(kJoint);
-      p.drawEllipse(Q(*m->elbow_px), 3 * unit, 3 * unit);
-    }
-    if (o.shoulder && m->shoulder_px) {
-      p.setPen(QPen(kJoint, 1.5 * unit));
-      p.setBrush(Qt::NoBrush);
-      const QPointF s = Q(*m->shoulder_px);
-      p.drawRect(QRectF(s - QPointF(3.5 * unit, 3.5 * unit), QSizeF(7 * unit, 7 * unit)));
-    }
+    for (const ArmMeasurement* arm : m->Arms()) PaintArm(p, *arm, o, unit);
   }
   p.restore();
 }
@@ -234,6 +243,7 @@ void PaintOverlayTexts(QPainter& p, const QRectF& area, double unit, const ArmMe
                        int frame_index, int frame_count, const OverlayOptions& o) {
   p.save();
   p.setRenderHint(QPainter::Antialiasing);
+  if (m) m = &m->Arm(static_cast<std::size_t>(o.arm));  // the texts are about the arm picked
   const OverlayTexts texts = MakeOverlayTexts(m, frame_index, frame_count);
   QFont font = p.font();
   font.setPointSizeF(8.0 * unit);

@@ -2,7 +2,9 @@
 // and forearm orientation lower right, centres of mass as circles, the segments, elbow and
 // shoulder, for the marker engine the markers, candidate boxes, the lower part's fitted cylinder
 // (silhouette and axis) and the signed yaw, and for the pose engine the skeleton with each
-// keypoint's score. Painted in image pixels, so the same code draws the view and the saved frame.
+// keypoint's score. With both arms measured (the pose engine's side both), each arm's segments
+// and joints, and the texts of the arm picked (OverlayOptions::arm). Painted in image pixels, so
+// the same code draws the view and the saved frame.
 #pragma once
 
 #include <QPainter>
@@ -25,6 +27,7 @@ struct OverlayOptions {
   bool features = true;  // LK features
   bool contour = false;  // arm contour and hull
   bool skeleton = true;  // pose engine: the keypoints, bones and keypoint scores
+  int arm = 0;  // with both arms measured: the arm whose angles the texts show (0 left, 1 right)
 };
 
 // The texts the overlay shows, so tests and the status bar read the same values.
@@ -35,6 +38,7 @@ struct OverlayTexts {
   QString state;        // "ok", "lost: <note>", "setup"
 };
 
+// `m`: the arm the texts are about (ArmMeasurement::Arm(OverlayOptions::arm)).
 OverlayTexts MakeOverlayTexts(const ArmMeasurement* m, int frame_index, int frame_count);
 
 // Paints over an image of `image_size` pixels (the painter maps image pixels). `m` may be null

@@ -5,6 +5,9 @@
 #include <map>
 #include <optional>
 
+#include <QStringList>
+
+#include "armmimic/core/status.h"
 #include "armmimic/engines/measurement.h"
 
 namespace armmimic::gui {
@@ -25,9 +28,16 @@ class ResultStore {
   int size() const { return static_cast<int>(by_frame_.size()); }
   int rows() const;  // measurements that are angle-file rows (ok or lost)
   int lost() const;
+  // The arms measured: 2 for the pose engine's side both (ArmMeasurement::right_arm), else 1.
+  int arms() const;
 
  private:
   std::map<int, ArmMeasurement> by_frame_;
 };
+
+// Reads the rows of angle files into `out` (cleared first): one file, or the left and the right
+// arm's files of one analysis (side both), joined frame by frame (ArmMeasurement::right_arm).
+// The error names the file.
+Status ReadResults(const QStringList& paths, ResultStore* out);
 
 }  // namespace armmimic::gui

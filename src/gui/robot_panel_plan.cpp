@@ -174,9 +174,14 @@ void RobotPanel::setAngleFile(const QString& path) {
     updateButtons();
     return;
   }
-  source_->setText(tr("%1 rows (%2)")
+  // The arm a pose file follows (one of the two files of side both, or the one arm named).
+  const std::string side = plan_.angles().Meta("pose.side", "");
+  const QString arm = side == "left"    ? tr(", the left arm")
+                      : side == "right" ? tr(", the right arm")
+                                        : QString();
+  source_->setText(tr("%1 rows (%2%3)")
                        .arg(plan_.angles().rows.size())
-                       .arg(QString::fromStdString(plan_.angles().Meta("engine", "?"))));
+                       .arg(QString::fromStdString(plan_.angles().Meta("engine", "?")), arm));
   followFileKind(robot::DetectSourceKind(plan_.angles()));
   replan();
   offerResume();

@@ -50,7 +50,7 @@ QJsonObject WriteAnalysis(const AnalysisOptions& o, const QDir& dir) {
   QJsonObject a;
   a["engine"] = EngineName(o.engine.kind);
   QJsonObject params;  // every engine's changed parameters, so switching engines keeps them
-  for (EngineKind kind : {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kMarker}) {
+  for (EngineKind kind : AllEngineKinds()) {
     EngineOptions e = o.engine;
     e.kind = kind;
     for (const auto& [key, value] : ChangedEngineOptions(e)) {
@@ -118,6 +118,7 @@ QString WriteSession(const QString& path, const Session& s) {
   root["frame"] = s.frame;
   root["analysis"] = WriteAnalysis(s.options, dir);
   root["angles"] = s.angle_text.isEmpty() ? QJsonValue() : QJsonValue(s.angle_text);
+  if (!s.right_angle_text.isEmpty()) root["angles_right"] = s.right_angle_text;
   const QByteArray bytes = QJsonDocument(root).toJson(QJsonDocument::Indented);
   const Status st = WriteOutputFile(path.toStdString(), bytes.toStdString());
   return st ? QString() : QString::fromStdString(st.message());
@@ -154,6 +155,7 @@ QString ReadSession(const QString& path, Session* s) {
   if (!bad.isEmpty()) return QString("%1: %2").arg(path, bad);
   out.ignored = QString::fromStdString(DescribeIgnoredEngineOptions(ignored));
   out.angle_text = root.value("angles").toString();
+  out.right_angle_text = root.value("angles_right").toString();
   *s = out;
   return QString();
 }

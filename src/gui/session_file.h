@@ -17,7 +17,10 @@ struct Session {
   QStringList inputs;       // the video, image folder or images
   AnalysisOptions options;  // everything but the inputs
   QString angle_text;       // the results as an angle file v1 ("" when there are none)
-  int frame = 0;            // the frame shown
+  // With both arms analysed (the pose engine's side both): the right arm's angle file, and
+  // angle_text the left's ("" for one arm).
+  QString right_angle_text;
+  int frame = 0;  // the frame shown
   // Read only: one line naming the recorded settings this version removed, which were ignored
   // ("" when none).
   QString ignored;

@@ -58,7 +58,9 @@ void VideoView::setTool(Tool tool) {
 }
 
 OverlayTexts VideoView::overlayTexts() const {
-  return MakeOverlayTexts(measurement_ ? &*measurement_ : nullptr, frame_index_, frame_count_);
+  const ArmMeasurement* m =
+      measurement_ ? &measurement_->Arm(static_cast<std::size_t>(overlay_.arm)) : nullptr;
+  return MakeOverlayTexts(m, frame_index_, frame_count_);
 }
 
 QImage VideoView::renderWithOverlay() const {

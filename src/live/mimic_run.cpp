@@ -52,6 +52,9 @@ Status MimicRun::Start(const MimicOptions& options) {
                                                                    : 0;
   }
   Status st = options.analysis.Check();
+  if (st && AnalysedArms(options.analysis).size() > 1) {
+    st = Status::Error("pose.side", "the robot follows one arm: name it (left or right), not both");
+  }
   if (st) st = stream_.Begin(stream);
   if (!st) return st;
   epoch_ = std::chrono::steady_clock::now();

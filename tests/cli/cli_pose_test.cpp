@@ -6,6 +6,9 @@
 
 #include <cmath>
 #include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "armmimic/core/angle_file.h"
 #include "test_util.h"
@@ -52,7 +55,7 @@ TEST_F(CliPose, FlagsThatDoNotFitAreUsageErrors) {
       << r.err;
   r = test::RunCli({"analyze", video, "-o", out, "--engine", "pose", "--side", "up"});
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--side 'up': expected left or right"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--side 'up': expected left, right or both"), std::string::npos) << r.err;
   r = test::RunCli(
       {"analyze", video, "-o", out, "--engine", "lk", "--auto-calibrate", "--shoulder", "10,10"});
   EXPECT_EQ(r.exit_code, 2);
@@ -90,7 +93,52 @@ TEST_F(CliPose, AMissingBlazePoseModelExitsOneNamingItsFile) {
                        "source tree, or name the folder holding it\n");
 }
 
+TEST_F(CliPose, SideBothIsThePoseEnginesAndMimicFollowsOneArm) {
+  const std::string video = dir_->file("scene.avi"), out = dir_->file("sb.tsv");
+  test::CliResult r = test::RunCli(
+      {"analyze", video, "-o", out, "--engine", "lk", "--auto-calibrate", "--side", "both"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--side both is for --engine pose only"), std::string::npos) << r.err;
+  r = test::RunCli(
+      {"mimic", video, "--realtime", "--engine", "pose", "--side", "both", "--dry-run"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--side both: the robot follows one arm"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::ifstream(dir_->file("sb.left.tsv")).good());
+  EXPECT_FALSE(std::ifstream(dir_->file("sb.right.tsv")).good());
+}
+
+TEST_F(CliPose, SideBothRefusesAnArmsFileThatIsAnInput) {
+  // -o o.avi with side both would write o.left.avi: the input itself.
+  const std::string input = dir_->file("o.left.avi");
+  std::ofstream(input, std::ios::binary) << test::ReadFile(dir_->file("scene.avi"));
+  const test::CliResult r = test::RunCli(
+      {"analyze", input, "-o", dir_->file("o.avi"), "--engine", "pose", "--side", "both"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("-o " + input + " is the same file as INPUT"), std::string::npos) << r.err;
+}
+
 #if defined(ARMMIMIC_HAVE_POSE_MODEL) && defined(ARMMIMIC_HAVE_BLAZEPOSE_MODEL)
+// BlazePose's crop does not depend on the arm, and on these frames MoveNet's looks (the 2-D
+// columns) come out the same with both arms as with one: each arm's file is the one-arm run's,
+// byte for byte.
+TEST_F(CliPose, SideBothWithBlazePoseWritesTheOneArmRunsFiles) {
+  const std::string video = dir_->file("scene.avi");
+  const std::vector<std::string> pose = {"--engine", "pose", "--network", "blazepose",
+                                         "--start",  "105",  "-q"};
+  auto run = [&](const std::string& out, const std::string& side) {
+    std::vector<std::string> args = {"analyze", video, "-o", out, "--side", side};
+    args.insert(args.end(), pose.begin(), pose.end());
+    const test::CliResult r = test::RunCli(args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+  };
+  run(dir_->file("bb.tsv"), "both");
+  run(dir_->file("bl.tsv"), "left");
+  run(dir_->file("br.tsv"), "right");
+  EXPECT_EQ(test::ReadFile(dir_->file("bb.left.tsv")), test::ReadFile(dir_->file("bl.tsv")));
+  EXPECT_EQ(test::ReadFile(dir_->file("bb.right.tsv")), test::ReadFile(dir_->file("br.tsv")));
+  EXPECT_FALSE(std::ifstream(dir_->file("bb.tsv")).good());
+}
+
 TEST_F(CliPose, BlazePoseWritesThe3dColumnsAndNamesItsNetwork) {
   const std::string out = dir_->file("blazepose.tsv");
   const test::CliResult r =
@@ -136,6 +184,69 @@ TEST_F(CliPose, PoseWritesEveryFrameFromTheStartWithAConfidence) {
     EXPECT_GE(row.confidence, 0.4);
     EXPECT_LE(row.confidence, 1.0);
   }
+}
+
+// --side both: one file per arm, each a whole angle file whose header is the one-arm run's of
+// that side, and whose rows are close to it (the crop is searched again when either arm drops).
+TEST_F(CliPose, SideBothWritesOneFilePerArmLikeTheOneArmRuns) {
+  const std::string video = dir_->file("scene.avi");
+  auto run = [&](const std::string& out, const std::string& side) {
+    return test::RunCli(
+        {"analyze", video, "-o", out, "--engine", "pose", "--side", side, "--start", "105"});
+  };
+  const test::CliResult r = run(dir_->file("arms.tsv"), "both");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("12 rows per arm from scene.avi"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::ifstream(dir_->file("arms.tsv")).good());
+  for (const std::string side : {"left", "right"}) {
+    ASSERT_EQ(run(dir_->file("one." + side + ".tsv"), side).exit_code, 0);
+    AngleFile both, one;
+    ASSERT_TRUE(ReadAngleFile(dir_->file("arms." + side + ".tsv"), &both).ok()) << side;
+    ASSERT_TRUE(ReadAngleFile(dir_->file("one." + side + ".tsv"), &one).ok()) << side;
+    EXPECT_EQ(both.meta, one.meta) << side;
+    EXPECT_EQ(both.Meta("pose.side"), side);
+    EXPECT_TRUE(both.has_confidence_column);
+    ASSERT_EQ(both.rows.size(), 12u) << side;
+    ASSERT_EQ(one.rows.size(), 12u) << side;
+    int same_status = 0;
+    for (std::size_t i = 0; i < both.rows.size(); ++i) {
+      const AngleRow &a = both.rows[i], &b = one.rows[i];
+      EXPECT_EQ(a.frame, b.frame);
+      same_status += a.status == b.status ? 1 : 0;
+      if (!a.ok() || !b.ok()) continue;
+      EXPECT_LE(std::abs(a.upper_deg - b.upper_deg), 5.0) << side << " frame " << a.frame;
+      EXPECT_LE(std::abs(a.fore_deg - b.fore_deg), 5.0) << side << " frame " << a.frame;
+    }
+    EXPECT_GE(same_status, 11) << side;
+  }
+}
+
+// A batch with --side both: NAME.left.tsv and NAME.right.tsv, a summary line for each.
+TEST_F(CliPose, SideBothInABatchWritesAndSummarisesEachArm) {
+  const std::string out = dir_->file("batch-both");
+  const test::CliResult r =
+      test::RunCli({"analyze", dir_->file("scene.avi"), "--output-dir", out, "--engine", "pose",
+                    "--side", "both", "--start", "110", "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  AngleFile left, right;
+  ASSERT_TRUE(ReadAngleFile(out + "/scene.left.tsv", &left).ok());
+  ASSERT_TRUE(ReadAngleFile(out + "/scene.right.tsv", &right).ok());
+  EXPECT_EQ(left.rows.size(), 7u);
+  EXPECT_EQ(right.rows.size(), 7u);
+  std::istringstream summary(test::ReadFile(out + "/summary.tsv"));
+  std::string line;
+  std::vector<std::string> angles;
+  std::getline(summary, line);  // the header
+  while (std::getline(summary, line)) {
+    std::istringstream cells(line);
+    std::string video, file, frames;
+    std::getline(cells, video, '\t');
+    std::getline(cells, file, '\t');
+    std::getline(cells, frames, '\t');
+    angles.push_back(file);
+    EXPECT_EQ(frames, "7") << line;
+  }
+  EXPECT_EQ(angles, (std::vector<std::string>{out + "/scene.left.tsv", out + "/scene.right.tsv"}));
 }
 
 TEST_F(CliPose, AutoCalibrateGivesLkItsJointsAndPrintsThem) {

@@ -71,14 +71,21 @@ struct AnalysisCallbacks {
 };
 
 struct AnalysisSummary {
-  int frames = 0;  // rows produced (ok + lost)
+  int frames = 0;  // rows produced (ok + lost), over every angle file
   int ok = 0;
   int lost = 0;
+  // Each angle file's rows, in ArmOutputPaths' order: one, or with the pose engine's side both
+  // the person's left arm and then the right (each file then has `frames / 2` rows).
+  struct ArmRows {
+    PoseSide side = PoseSide::kAuto;  // the arm (as set for engines without one)
+    int frames = 0, ok = 0, lost = 0;
+  };
+  std::vector<ArmRows> arms;
   double seconds = 0;  // wall time of the whole run
   bool cancelled = false;
   VideoInfo video;      // as opened (frame_count: what the file announces)
   int last_frame = -1;  // index of the last frame read, -1 if none
-  AngleMeta meta;       // the angle file's meta line for this run
+  AngleMeta meta;       // the (first) angle file's meta line for this run
 
   // Why the rows stop before the input's end (a read failed, or a video stopped clearly short of
   // the frame count it announces: see ShortOfAnnounced); empty when the input was read whole.
@@ -101,6 +108,15 @@ struct AnalysisSummary {
   }
 };
 
+// The arms an analysis reports, in the order of its angle files: the person's left and right arm
+// for the pose engine with side both (one pass of the network gives both); one otherwise, with
+// the side as set.
+std::vector<PoseSide> AnalysedArms(const AnalysisOptions& options);
+// The angle files an analysis writes for the output `path`: `path` itself for one arm; with side
+// both one per arm, the arm's name before the last extension (A.tsv: A.left.tsv and A.right.tsv;
+// a name without an extension gets .left and .right appended).
+std::vector<std::string> ArmOutputPaths(const AnalysisOptions& options, const std::string& path);
+
 // Averages frames [start, start+count) of `inputs` (thesis 5.2.1) into a CV_8UC3 image.
 Status EstimateBackground(const std::vector<std::string>& inputs, int start, int count,
                           cv::Mat* background, const AnalysisCallbacks& callbacks = {});
@@ -114,8 +130,9 @@ Status RunAnalysis(const AnalysisOptions& options, const AnalysisCallbacks& call
 // a file, that at least one frame is analysed. A live run calls it before it opens the port.
 Status CheckAnalysisInputs(const AnalysisOptions& options);
 
-// RunAnalysis writing the angle file at `output_path` (atomically). On cancel the rows so far
-// are kept in a complete file whose header says complete=no.
+// RunAnalysis writing the angle file at `output_path` (atomically; with side both, the files of
+// ArmOutputPaths, each with its arm's pose.side in the header). On cancel the rows so far are
+// kept in a complete file whose header says complete=no.
 Status AnalyzeToFile(const AnalysisOptions& options, const std::string& output_path,
                      const AnalysisCallbacks& callbacks, AnalysisSummary* summary);
 

@@ -2,6 +2,7 @@
 // and the overlay data the GUI draws (segments, elbow, shoulder, centres, markers, features).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -65,6 +66,15 @@ struct ArmMeasurement {
   // pose with BlazePose: the arm's shoulder, elbow and wrist in metres (camera axes, origin
   // between the hips), for a 3-D view.
   std::vector<cv::Vec3d> arm_world_m;
+
+  // The pose engine with side both: the person's right arm, measured from the same inferences;
+  // this measurement is then the left arm's. Null for one arm.
+  std::shared_ptr<const ArmMeasurement> right_arm;
+  // This measurement, and right_arm when set: one per angle file, in ArmOutputPaths' order
+  // (analysis.h).
+  std::vector<const ArmMeasurement*> Arms() const;
+  // Arms()[arm], or this measurement when there is no such arm (one arm measured).
+  const ArmMeasurement& Arm(std::size_t arm) const;
 
   bool row() const { return phase != MeasurementPhase::kSetup; }
   AngleRow ToRow() const;

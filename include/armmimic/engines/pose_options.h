@@ -8,7 +8,9 @@
 namespace armmimic {
 
 // The person's own arm (their left arm is on the image's right when they face the camera).
-enum class PoseSide { kAuto, kLeft, kRight };  // kAuto: the arm better seen over the first second
+// kAuto: the arm better seen over the first second. kBoth (the pose engine only): both arms from
+// the same inferences, each into its own angle file (ArmOutputPaths, analysis.h).
+enum class PoseSide { kAuto, kLeft, kRight, kBoth };
 
 // The network: MoveNet SinglePose Lightning (2-D keypoints), or BlazePose GHUM full (2-D and
 // 3-D world landmarks, in a crop placed by its own auxiliary points; docs/pose.md).
@@ -45,7 +47,7 @@ struct PoseOptions {
   Status Check() const;  // the table's ranges, arm_crop 0 or >= 1; errors carry "pose.KEY"
 };
 
-const char* PoseSideName(PoseSide side);  // "auto", "left", "right"
+const char* PoseSideName(PoseSide side);  // "auto", "left", "right", "both"
 bool ParsePoseSide(const std::string& name, PoseSide* out);
 
 }  // namespace armmimic

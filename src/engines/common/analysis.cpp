@@ -1,8 +1,8 @@
 // The analysis pipeline behind `armmimic-cli analyze` and the GUI's Analyze task: engine
 // agnostic, streaming (one frame in memory at a time).
 // Length: the pipeline's run is one loop from open to commit; Run's checks, engine start and frame
-// loop share its state, and every input error it reports is keyed by its setting here, beside
-// AnalysisOptions::Check().
+// loop share its state, and every input error it reports is keyed by its setting here (the
+// options' own rules, AnalysisOptions::Check(), are in analysis_options.cpp).
 
 #include "armmimic/engines/analysis.h"
 
@@ -44,9 +44,6 @@ std::string ShortNumber(double v) {
   }
   return s;
 }
-
-// Shorter clicked segments give no usable direction or length.
-constexpr double kMinClickedSegmentPx = 4;
 
 bool Cancelled(const AnalysisCallbacks& cb) {
   return cb.cancel != nullptr && cb.cancel->load(std::memory_order_relaxed);
@@ -118,8 +115,48 @@ Status PreparePose(const AnalysisOptions& options, const VideoInfo& info,
   return Status::Ok();
 }
 
+// The angle file's meta line for a run with `options` (one arm's, with side both).
+AngleMeta MetaOf(const AnalysisOptions& options, const VideoInfo& info, const Engine& engine) {
+  const bool arm_engine = options.engine.kind != EngineKind::kMarker;
+  AngleMeta meta = {{"engine", EngineName(options.engine.kind)},
+                    {"source", BaseName(info.path.empty() ? options.inputs.front() : info.path)},
+                    {"fps", ShortNumber(info.fps)},
+                    {"width", std::to_string(info.size.width)},
+                    {"height", std::to_string(info.size.height)}};
+  if (arm_engine) meta.emplace_back("start", std::to_string(options.start));
+  for (auto& kv : engine.Describe()) meta.push_back(std::move(kv));
+  // The inputs besides the video and every engine parameter, under the name `analyze --param`
+  // takes, so the file says how to make it again (`analyze --params-from`).
+  for (auto& kv : RunRecordMeta(options)) meta.push_back(std::move(kv));
+  std::set<std::string> keys;
+  for (const auto& kv : meta) {
+    // Each key once: --params-from refuses a header that names one twice.
+    if (!keys.insert(kv.first).second) {
+      throw std::logic_error("the angle file's header would name " + kv.first + " twice");
+    }
+  }
+  return meta;
+}
+
+// Counts the rows of `m`, one per arm, into `summary` (whose arms are set).
+void CountRows(const ArmMeasurement& m, AnalysisSummary* summary) {
+  const std::vector<const ArmMeasurement*> arms = m.Arms();
+  if (arms.size() != summary->arms.size()) {
+    throw std::logic_error("the engine measured " + std::to_string(arms.size()) +
+                           " arms, the analysis reports " + std::to_string(summary->arms.size()));
+  }
+  for (std::size_t i = 0; i < arms.size(); ++i) {
+    const bool ok = arms[i]->phase == MeasurementPhase::kOk;
+    AnalysisSummary::ArmRows& rows = summary->arms[i];
+    ++rows.frames;
+    ++summary->frames;
+    (ok ? rows.ok : rows.lost)++;
+    (ok ? summary->ok : summary->lost)++;
+  }
+}
+
 using RowSink = std::function<Status(const ArmMeasurement&)>;
-using ReadySink = std::function<Status(const AngleMeta&)>;
+using ReadySink = std::function<Status(const std::vector<AngleMeta>&)>;
 
 Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
            const ReadySink& on_ready, const RowSink& on_row, AnalysisSummary* summary) {
@@ -219,27 +256,20 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
   std::unique_ptr<Engine> engine = Engine::Create(options.engine);
   st = engine->Begin(context);
   if (!st) return finish(st);
+  std::vector<AngleMeta> metas;  // one per angle file
 
-  AngleMeta meta = {{"engine", EngineName(kind)},
-                    {"source", BaseName(info.path.empty() ? options.inputs.front() : info.path)},
-                    {"fps", ShortNumber(info.fps)},
-                    {"width", std::to_string(info.size.width)},
-                    {"height", std::to_string(info.size.height)}};
-  if (arm_engine) meta.emplace_back("start", std::to_string(options.start));
-  for (auto& kv : engine->Describe()) meta.push_back(std::move(kv));
-  // The inputs besides the video and every engine parameter, under the name `analyze --param`
-  // takes, so the file says how to make it again (`analyze --params-from`).
-  for (auto& kv : RunRecordMeta(options)) meta.push_back(std::move(kv));
-  std::set<std::string> keys;
-  for (const auto& kv : meta) {
-    // Each key once: --params-from refuses a header that names one twice.
-    if (!keys.insert(kv.first).second) {
-      throw std::logic_error("the angle file's header would name " + kv.first + " twice");
+  for (PoseSide side : AnalysedArms(options)) {
+    AnalysisOptions arm = options;
+    if (kind == EngineKind::kPose) {  // each file names its arm, as a run of that side would
+      arm.engine.pose.side = side;
+      if (arm.calibrate_side == PoseSide::kBoth) arm.calibrate_side = side;
     }
+    metas.push_back(MetaOf(arm, info, *engine));
+    summary->arms.push_back({side});
   }
-  summary->meta = meta;
+  summary->meta = metas.front();
   if (on_ready) {
-    st = on_ready(meta);
+    st = on_ready(metas);
     if (!st) return finish(st);
   }
 
@@ -293,8 +323,7 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
     if (!m.estimate.empty() && callbacks.on_estimate) callbacks.on_estimate(m.estimate);
     if (callbacks.on_measurement) callbacks.on_measurement(frame, m);
     if (m.row()) {
-      ++summary->frames;
-      (m.phase == MeasurementPhase::kOk ? summary->ok : summary->lost)++;
+      CountRows(m, summary);
       if (on_row) {
         st = on_row(m);
         if (!st) return finish(st);
@@ -320,93 +349,6 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
 }
 
 }  // namespace
-
-Status AnalysisOptions::Check() const {
-  if (auto_calibrate) {
-    if (engine.kind == EngineKind::kBgsub || engine.kind == EngineKind::kMarker ||
-        engine.kind == EngineKind::kPose) {
-      return Status::Error("analysis.auto_calibrate",
-                           std::string("auto-calibration is for the tracking engines, not the ") +
-                               EngineName(engine.kind) + " engine");
-    }
-    if (shoulder_px || elbow_px || wrist_px) {
-      return Status::Error("analysis.auto_calibrate",
-                           "auto-calibration finds the joints itself: give it or the shoulder, "
-                           "elbow and wrist, not both");
-    }
-  }
-  if (engine.kind != EngineKind::kLk && (elbow_px || wrist_px)) {
-    return Status::Error(
-        elbow_px ? "analysis.elbow" : "analysis.wrist",
-        std::string(elbow_px ? "the elbow" : "the wrist") + " is used by the lk engine only");
-  }
-  if (inputs.empty()) return Status::Error("no INPUT given (a video, images or a folder)");
-  if (start < 0) {
-    return Status::Error("analysis.start",
-                         "the start frame must be 0 or more (got " + std::to_string(start) + ")");
-  }
-  if (background_frames < 0) {
-    return Status::Error("analysis.background_frames",
-                         "the number of background frames must be at least 1 (got " +
-                             std::to_string(background_frames) + ")");
-  }
-  if (roi && (roi->x < 0 || roi->y < 0 || roi->width <= 0 || roi->height <= 0)) {
-    return Status::Error("analysis.roi", "the region of interest needs X,Y >= 0 and W,H > 0");
-  }
-  const bool has_bg = !background_path.empty();
-  const bool has_frames = background_frames > 0;
-  switch (engine.kind) {
-    case EngineKind::kBgsub:
-      if (arm_length_path.empty()) {
-        return Status::Error("analysis.arm_length",
-                             "the bgsub engine needs an arm-length image (thesis 5.2.3)");
-      }
-      if (has_bg == has_frames) {
-        return Status::Error("analysis.background_frames",
-                             "the bgsub engine needs exactly one of a background image and a "
-                             "number of background frames");
-      }
-      break;
-    case EngineKind::kLk:
-      if ((elbow_px || wrist_px) && !(shoulder_px && elbow_px && wrist_px)) {
-        return Status::Error(
-            shoulder_px ? (elbow_px ? "analysis.wrist" : "analysis.elbow") : "analysis.shoulder",
-            "the elbow and wrist go together with the shoulder: the arm's three "
-            "joints in the start frame");
-      }
-      if (elbow_px && wrist_px && shoulder_px) {
-        const double upper = cv::norm(*elbow_px - *shoulder_px);
-        const double fore = cv::norm(*wrist_px - *elbow_px);
-        if (upper < kMinClickedSegmentPx || fore < kMinClickedSegmentPx) {
-          return Status::Error(
-              upper < kMinClickedSegmentPx ? "analysis.elbow" : "analysis.wrist",
-              std::string(upper < kMinClickedSegmentPx ? "the elbow" : "the wrist") +
-                  " is less than " + std::to_string(int(kMinClickedSegmentPx)) +
-                  " pixels from the " + (upper < kMinClickedSegmentPx ? "shoulder" : "elbow") +
-                  ": the segment has no direction");
-        }
-      }
-      if (!has_bg && !has_frames && !shoulder_px && !auto_calibrate) {
-        return Status::Error("analysis.shoulder",
-                             "the lk engine needs a background image, background frames, a fixed "
-                             "shoulder or auto-calibration");
-      }
-      if (has_bg && has_frames) {
-        return Status::Error("analysis.background",
-                             "a background image and background frames cannot both be given");
-      }
-      break;
-    case EngineKind::kMarker:
-      if (reference_path.empty()) {
-        return Status::Error("analysis.reference", "the marker engine needs a reference image");
-      }
-
-      break;
-    case EngineKind::kPose:
-      break;  // needs nothing but the model
-  }
-  return engine.Check();
-}
 
 Status EstimateBackground(const std::vector<std::string>& inputs, int start, int count,
                           cv::Mat* background, const AnalysisCallbacks& callbacks) {
@@ -459,6 +401,25 @@ Status EstimateBackgroundOf(std::unique_ptr<VideoSource> source, const Status& o
 
 }  // namespace
 
+std::vector<PoseSide> AnalysedArms(const AnalysisOptions& options) {
+  if (options.engine.kind != EngineKind::kPose) return {options.engine.pose.side};
+  return internal::FollowedSides(options.engine.pose.side);
+}
+
+std::vector<std::string> ArmOutputPaths(const AnalysisOptions& options, const std::string& path) {
+  const std::vector<PoseSide> arms = AnalysedArms(options);
+  if (arms.size() == 1) return {path};
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t name = slash == std::string::npos ? 0 : slash + 1;
+  std::size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || dot <= name) dot = path.size();  // no extension (or ".tsv")
+  std::vector<std::string> paths;
+  for (PoseSide side : arms) {
+    paths.push_back(path.substr(0, dot) + "." + PoseSideName(side) + path.substr(dot));
+  }
+  return paths;
+}
+
 Status RunAnalysis(const AnalysisOptions& options, const AnalysisCallbacks& callbacks,
                    AnalysisSummary* summary) {
   return Run(options, callbacks, nullptr, nullptr, summary);
@@ -466,7 +427,8 @@ Status RunAnalysis(const AnalysisOptions& options, const AnalysisCallbacks& call
 
 Status AnalyzeToFile(const AnalysisOptions& options, const std::string& output_path,
                      const AnalysisCallbacks& callbacks, AnalysisSummary* summary) {
-  AngleFileWriter writer;
+  const std::vector<std::string> paths = ArmOutputPaths(options, output_path);
+  std::vector<AngleFileWriter> writers(paths.size());
   const bool file_column = options.engine.kind == EngineKind::kMarker;
   // The engines that rate their own rows (pose, lk, and bgsub's two-segment fit, not its thesis
   // path) write the optional confidence column.
@@ -478,14 +440,30 @@ Status AnalyzeToFile(const AnalysisOptions& options, const std::string& output_p
                           options.engine.pose.network == PoseNetworkKind::kBlazePose;
   Status st = Run(
       options, callbacks,
-      [&](const AngleMeta& meta) {
-        return writer.Open(output_path, meta, file_column, confidence_column,
-                           /*signed_yaw_column=*/file_column, columns_3d);
+      [&](const std::vector<AngleMeta>& metas) {
+        for (std::size_t i = 0; i < writers.size(); ++i) {
+          Status opened = writers[i].Open(paths[i], metas.at(i), file_column, confidence_column,
+                                          /*signed_yaw_column=*/file_column, columns_3d);
+          if (!opened) return opened;
+        }
+        return Status::Ok();
       },
-      [&](const ArmMeasurement& m) { return writer.Write(m.ToRow()); }, summary);
+      [&](const ArmMeasurement& m) {
+        const std::vector<const ArmMeasurement*> arms = m.Arms();
+        for (std::size_t i = 0; i < writers.size(); ++i) {
+          Status written = writers[i].Write(arms.at(i)->ToRow());
+          if (!written) return written;
+        }
+        return Status::Ok();
+      },
+      summary);
   if (!st) return st;
   if (summary->meta.empty()) return Status::Ok();  // cancelled before the file was opened
-  return writer.Commit(!summary->cancelled && summary->incomplete.empty(), summary->incomplete);
+  for (AngleFileWriter& writer : writers) {
+    st = writer.Commit(!summary->cancelled && summary->incomplete.empty(), summary->incomplete);
+    if (!st) return st;
+  }
+  return Status::Ok();
 }
 
 }  // namespace armmimic

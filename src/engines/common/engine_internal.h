@@ -27,6 +27,10 @@ std::unique_ptr<Engine> CreateMarkerEngine(const MarkerOptions& options);
 std::unique_ptr<Engine> CreatePoseEngine(const PoseOptions& options);  // either network
 std::unique_ptr<Engine> CreateBlazePoseEngine(const PoseOptions& options);
 
+// The arms the pose engine follows for `side` (pose/arms.h): {kLeft, kRight} for kBoth, {side}
+// otherwise (kAuto is decided on the first frame). The analysis writes an angle file for each.
+std::vector<PoseSide> FollowedSides(PoseSide side);
+
 // The pose engine's steps before a run (pose/calibrate.cpp).
 // Opens the analysed input for one pass (AnalysisOptions::open_source or its files).
 using SourceOpener = std::function<std::unique_ptr<VideoSource>(Status*)>;

@@ -2,6 +2,16 @@
 
 namespace armmimic {
 
+std::vector<const ArmMeasurement*> ArmMeasurement::Arms() const {
+  std::vector<const ArmMeasurement*> arms = {this};
+  if (right_arm) arms.push_back(right_arm.get());
+  return arms;
+}
+
+const ArmMeasurement& ArmMeasurement::Arm(std::size_t arm) const {
+  return arm == 1 && right_arm ? *right_arm : *this;
+}
+
 AngleRow ArmMeasurement::ToRow() const {
   AngleRow row;
   row.frame = frame;

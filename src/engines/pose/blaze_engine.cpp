@@ -2,9 +2,10 @@
 // in a crop placed by the previous frame's auxiliary landmarks, smoothed (MediaPipe's tracking).
 // The first frame, and any frame after the person was lost, places the crop from MoveNet's
 // keypoints on the whole image and refines it once with BlazePose's own auxiliary landmarks.
-// pose/blaze_gate.h decides each row.
+// pose/blaze_gate.h decides each row; with side both, each arm's from the same landmarks.
 #include "armmimic/engines/pose.h"
 #include "common/engine_internal.h"
+#include "pose/arms.h"
 #include "pose/blaze_gate.h"
 #include "pose/blazepose.h"
 #include "pose/first_frame.h"
@@ -16,7 +17,10 @@ namespace {
 
 class BlazePoseEngine : public Engine {
  public:
-  explicit BlazePoseEngine(const PoseOptions& options) : o_(options), gate_(options) {}
+  explicit BlazePoseEngine(const PoseOptions& options)
+      : o_(options),
+        sides_(internal::FollowedSides(options.side)),
+        gates_(sides_.size(), internal::BlazeArmGate(options)) {}
 
   EngineKind kind() const override { return EngineKind::kPose; }
 
@@ -39,7 +43,7 @@ class BlazePoseEngine : public Engine {
     const cv::Mat image = frame.image(area_);
     if (!tracking_ && !Seed(image)) {
       m.note = "no person seen to place the crop";
-      return m;
+      return internal::JoinArms(std::vector<ArmMeasurement>(sides_.size(), m));
     }
     internal::BlazeLandmarks b = blaze_->Run(image, crop_);
     tracking_ = b.poseflag >= internal::kMinPoseFlag;
@@ -49,16 +53,15 @@ class BlazePoseEngine : public Engine {
     } else {
       for (internal::OneEuroFilter& f : auxiliary_) f.Reset();
     }
-    if (o_.side == PoseSide::kAuto) {
-      o_.side = internal::BetterSeenSide(internal::AsMoveNetKeypoints(b), &m.estimate);
+    if (sides_.front() == PoseSide::kAuto) {
+      sides_.front() = internal::BetterSeenSide(internal::AsMoveNetKeypoints(b), &m.estimate);
     }
-    movenet_track_->BodyLook(image, o_.side);
-    internal::PoseLooks movenet = movenet_track_->Looks(image, o_.side);
+    movenet_track_->BodyLook(image, sides_);
+    internal::PoseLooks movenet = movenet_track_->Looks(image, sides_);
     const cv::Point2d offset(area_.tl());
     for (cv::Point2d& p : b.px) p += offset;
     movenet.Shift(offset);
-    gate_.Decide(b, movenet, o_.side, &m);
-    return m;
+    return internal::DecideArms(gates_, sides_, m, b, movenet);
   }
 
   AngleMeta Describe() const override { return {{"model", internal::kBlazePoseModelName}}; }
@@ -78,7 +81,8 @@ class BlazePoseEngine : public Engine {
   }
 
   PoseOptions o_;
-  internal::BlazeArmGate gate_;
+  std::vector<PoseSide> sides_;                // the arms followed (pose/arms.h)
+  std::vector<internal::BlazeArmGate> gates_;  // one per side
   cv::Rect area_;
   std::unique_ptr<internal::BlazePoseNetwork> blaze_;
   std::unique_ptr<PoseNetwork> movenet_;

@@ -67,7 +67,7 @@ Status DetectArmJointsFrom(const SourceOpener& open, int frame, PoseSide side,
                                                                                : PoseSide::kRight;
   }
   const internal::PoseLooks looks =
-      internal::TakeLooks(net.get(), f.image, k, take_closer ? near : whole, side, options);
+      internal::TakeLooks(net.get(), f.image, k, take_closer ? near : whole, {side}, options);
   *arm = ArmOf(looks.Combined(), side);
   *chosen = side;
   if (arm->score < options.min_score) {

@@ -3,9 +3,11 @@
 // the body look, tracked as in MoveNet's demo, then a closer look at the upper body
 // (pose/looks.h), which places the joints. A row is lost when a joint's score is low,
 // a segment is much shorter than its usual length (pointing at the camera) or the looks disagree
-// on its direction (pose/gate.h): never `ok` on a guess.
+// on its direction (pose/gate.h): never `ok` on a guess. With side both, the same looks give
+// both arms (pose/arms.h): the crop is searched again when either arm drops in it.
 #include "armmimic/engines/pose.h"
 #include "common/engine_internal.h"
+#include "pose/arms.h"
 #include "pose/first_frame.h"
 #include "pose/gate.h"
 #include "pose/looks.h"
@@ -16,7 +18,10 @@ namespace {
 
 class PoseEngine : public Engine {
  public:
-  explicit PoseEngine(const PoseOptions& options) : o_(options), gate_(options) {}
+  explicit PoseEngine(const PoseOptions& options)
+      : o_(options),
+        sides_(internal::FollowedSides(options.side)),
+        gates_(sides_.size(), internal::PoseArmGate(options)) {}
 
   EngineKind kind() const override { return EngineKind::kPose; }
 
@@ -34,19 +39,21 @@ class PoseEngine : public Engine {
     m.frame = frame.index;
     m.time_s = frame.time_s;
     const cv::Mat image = frame.image(area_);
-    const PoseKeypoints body = track_->BodyLook(image, o_.side);
-    if (o_.side == PoseSide::kAuto) o_.side = internal::BetterSeenSide(body, &m.estimate);
-    internal::PoseLooks looks = track_->Looks(image, o_.side);
+    const PoseKeypoints body = track_->BodyLook(image, sides_);
+    if (sides_.front() == PoseSide::kAuto) {
+      sides_.front() = internal::BetterSeenSide(body, &m.estimate);
+    }
+    internal::PoseLooks looks = track_->Looks(image, sides_);
     looks.Shift(cv::Point2d(area_.tl()));
-    gate_.Decide(looks, o_.side, &m);
-    return m;
+    return internal::DecideArms(gates_, sides_, m, looks);
   }
 
   AngleMeta Describe() const override { return {{"model", internal::kPoseModelName}}; }
 
  private:
   PoseOptions o_;
-  internal::PoseArmGate gate_;
+  std::vector<PoseSide> sides_;               // the arms followed (pose/arms.h)
+  std::vector<internal::PoseArmGate> gates_;  // one per side
   cv::Rect area_;
   std::unique_ptr<PoseNetwork> net_;
   std::unique_ptr<internal::MoveNetTracker> track_;

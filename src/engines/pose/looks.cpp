@@ -38,10 +38,14 @@ void PoseLooks::Shift(const cv::Point2d& offset) {
 }
 
 PoseLooks TakeLooks(PoseNetwork* net, const cv::Mat& image, const PoseKeypoints& body,
-                    const PoseCrop& body_crop, PoseSide side, const PoseOptions& options) {
+                    const PoseCrop& body_crop, const std::vector<PoseSide>& sides,
+                    const PoseOptions& options) {
   PoseLooks looks;
   looks.body = body;
-  if (ArmOf(body, side).score < options.min_score) return looks;
+  const bool seen = std::any_of(sides.begin(), sides.end(), [&](PoseSide side) {
+    return ArmOf(body, side).score >= options.min_score;
+  });
+  if (!seen) return looks;
   PoseCrop crop = body_crop;
   if (options.arm_crop > 0 && ArmLookCrop(body, options.arm_crop, options.crop_score, &crop)) {
     looks.closer.push_back(net->Run(image, crop));

@@ -30,8 +30,10 @@ struct PoseLooks {
 };
 
 // Takes the closer looks at `image` after the body look `body`, seen through `body_crop`; none
-// when the body look does not see `side`'s arm (the row is lost whatever they would show).
+// when the body look sees none of the arms of `sides` (their rows are lost whatever the looks
+// would show). The arm look's square holds the whole upper body, so it serves both arms.
 PoseLooks TakeLooks(PoseNetwork* net, const cv::Mat& image, const PoseKeypoints& body,
-                    const PoseCrop& body_crop, PoseSide side, const PoseOptions& options);
+                    const PoseCrop& body_crop, const std::vector<PoseSide>& sides,
+                    const PoseOptions& options);
 
 }  // namespace armmimic::internal

@@ -4,6 +4,8 @@
 // when the arm's scores drop inside the crop), then the closer looks (pose/looks.h).
 #pragma once
 
+#include <vector>
+
 #include <opencv2/core.hpp>
 
 #include "armmimic/engines/pose.h"
@@ -16,13 +18,13 @@ class MoveNetTracker {
  public:
   // `net` is not owned and outlives the tracker.
   MoveNetTracker(PoseNetwork* net, const PoseOptions& options) : net_(net), o_(options) {}
-  // The body look, in `image`'s pixels. With `side` named, a crop whose arm scores dropped is
-  // searched again whole; with kAuto (the first frame, always seen whole) the caller picks the
-  // side from the keypoints returned.
-  PoseKeypoints BodyLook(const cv::Mat& image, PoseSide side);
-  // The looks at `image` for `side`'s arm, after BodyLook on the same image; positions in
+  // The body look, in `image`'s pixels. A crop in which an arm of `sides` dropped below
+  // min_score is searched again whole; with a side still kAuto (the first frame, always seen
+  // whole) the caller picks it from the keypoints returned.
+  PoseKeypoints BodyLook(const cv::Mat& image, const std::vector<PoseSide>& sides);
+  // The looks at `image` for the arms of `sides`, after BodyLook on the same image; positions in
   // `image`'s pixels.
-  PoseLooks Looks(const cv::Mat& image, PoseSide side);
+  PoseLooks Looks(const cv::Mat& image, const std::vector<PoseSide>& sides);
   // Forgets the track: the next frame is seen whole.
   void Reset() { tracking_ = false; }
 

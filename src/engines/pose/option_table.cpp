@@ -20,8 +20,9 @@ const std::vector<OptionField<PoseOptions>>& PoseOptionFields() {
               "landmarks")
           .Flag("--network")
           .Main(),
-      Enum<P>("side", &P::side, PoseSide::kAuto, {"auto", "left", "right"}, "Arm",
-              "the person's own arm (auto: the better seen over the first second)")
+      Enum<P>("side", &P::side, PoseSide::kAuto, {"auto", "left", "right", "both"}, "Arm",
+              "the person's own arm (auto: the better seen over the first second; both: each "
+              "arm into its own angle file, from the same inferences)")
           .Flag("--side")
           .Main(),
       Real<P>("min_score", &P::min_score, 0.4, 0, 1, 2, "Minimum keypoint score",

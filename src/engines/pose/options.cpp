@@ -15,12 +15,15 @@ const char* PoseSideName(PoseSide side) {
       return "left";
     case PoseSide::kRight:
       return "right";
+    case PoseSide::kBoth:
+      return "both";
   }
   return "?";
 }
 
 bool ParsePoseSide(const std::string& name, PoseSide* out) {
-  return ParseByName(name, {PoseSide::kAuto, PoseSide::kLeft, PoseSide::kRight}, PoseSideName, out);
+  return ParseByName(name, {PoseSide::kAuto, PoseSide::kLeft, PoseSide::kRight, PoseSide::kBoth},
+                     PoseSideName, out);
 }
 
 Status PoseOptions::Check() const {
