@@ -98,6 +98,19 @@ TEST(MarkerRigAccuracy, MediumRigs) {
   EXPECT_EQ(t.signed_off, 0) << t.log;
 }
 
+// Tuning rigs of the hard set where wall blobs once calibrated the engine (seed 207: a
+// symmetric triple of blobs beside the joint put its "markers" 0.7 radii from the pivot) and where
+// a single lower marker's side rests on the upper part's silhouette (211, 212: only one side's
+// bend puts the upper part where the image shows it).
+TEST(MarkerRigAccuracy, WallBlobsAndOneMarker) {
+  RigTally t;
+  for (uint64_t seed : {207, 211, 212}) RunRig("hard", seed, 4, &t);
+  EXPECT_GE(t.ok, t.views - 1) << t.log;
+  EXPECT_LE(t.yaw_mae(), 1.5) << t.log;
+  EXPECT_LE(t.bend_mae(), 1.5) << t.log;
+  EXPECT_EQ(t.signed_off, 0) << t.log;
+}
+
 TEST(MarkerRigAccuracy, HardRigs) {
   RigTally t;
   for (uint64_t seed : {601, 602, 603}) RunRig("hard", seed, 5, &t);
