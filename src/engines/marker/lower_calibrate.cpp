@@ -36,7 +36,7 @@ std::vector<int> RowRange(double from, double to, int rows) {
 // edges need not be symmetric about it.
 bool SilhouetteEdges(const std::vector<std::vector<double>>& profiles, int x0, double mid,
                      double lo, double hi, int* left, int* right) {
-  constexpr double kShare = 0.25;
+  constexpr double kShare = 0.25, kRamp = 0.5;
   const int width = profiles.empty() ? 0 : static_cast<int>(profiles[0].size());
   std::vector<double> g(width, 0.0);
   for (int i = 1; i + 1 < width; ++i) {
@@ -59,6 +59,13 @@ bool SilhouetteEdges(const std::vector<std::vector<double>>& profiles, int x0, d
         // The step's own peak, a column or two further out.
         int peak = x;
         while (inside(peak + step) && g[peak + step - x0] > g[peak - x0]) peak += step;
+        // A silhouette is a step with the background flat beyond it; a gradient as steep three
+        // pixels either side is the middle of the surface's shading ramp (side light).
+        if (inside(peak - 3 * step) && inside(peak + 3 * step) &&
+            std::min(g[peak - 3 * step - x0], g[peak + 3 * step - x0]) >= kRamp * g[peak - x0]) {
+          x = peak;
+          continue;
+        }
         *out[side] = peak;
         break;
       }
