@@ -423,7 +423,8 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
     scan->right_edge_px = cal->right_edge_px;
     scan->cylinder = CylinderView(camera, cal->left_edge_px, cal->right_edge_px);
     if (MeasureReferenceMarkers(gray, camera, g.x0, surface, attempt >= 2, cal, scan, message)) {
-      EqualDiscs(gray, camera, g.x0, surface, weak, cal, scan);
+      // A plain step that the bands agree on is the silhouette: only an unsure edge is moved.
+      if (unsure(weak)) EqualDiscs(gray, camera, g.x0, surface, weak, cal, scan);
       return true;
     }
     if (first_message.empty()) first_message = *message;
