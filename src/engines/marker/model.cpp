@@ -57,6 +57,9 @@ namespace {
 // A side whose upper part shows this many times the other side's silhouette support wins.
 constexpr double kSupportMargin = 1.5;
 
+// An upper marker turned at most this far from the camera shows plainly when it is there.
+constexpr double kSquareDeg = 45;
+
 // Past this the upper marker cannot be seen (a marker is unreadable past 75 degrees).
 constexpr double kHiddenDeg = 80;
 
@@ -126,6 +129,12 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
     for (int i = 0; i < 2; ++i) {
       const bool hidden = UpperTurn(cal, yaw.hypotheses[i].yaw) > RadFromDeg(kHiddenDeg);
       alive[i] = !yaw.hypotheses[i].other_missing && !(hidden && telling[1 - i]);
+      // This side turns the upper marker squarely to the camera, the other turns it away, and
+      // no dark spot fits where this side puts it: the marker would show, and does not.
+      const bool square = UpperTurn(cal, yaw.hypotheses[i].yaw) <= RadFromDeg(kSquareDeg);
+      const bool away =
+          UpperTurn(cal, yaw.hypotheses[1 - i].yaw) > RadFromDeg(options.max_upper_turn_deg);
+      if (square && away && !uppers[i]->found) alive[i] = false;
     }
     if (alive[0] && alive[1]) {  // the side whose upper marker shows plainly, if only one does
       if (telling[0] && !plain[1]) {
