@@ -391,7 +391,7 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
     // The markers' symmetry places an edge no step shows. It is only approximate (under side
     // light, seen from aside or by a tilted camera a marker's centroid is not its centre's
     // image, and the upper marker lies at another height): a faint step's own edge is tried
-    // after it, and EqualDiscs refines whichever shows both lower markers whole.
+    // before it, and EqualDiscs refines whichever shows both lower markers whole.
     if (!std::isnan(edge)) {
       if (steepest(weak) == 0) {
         fitted = edge;
@@ -406,12 +406,12 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   cal->search_px = std::max(3, static_cast<int>(std::lround(0.1 * (right - left))));
   cal->marker_height_px = g.h;
   // At zero yaw both lower markers show whole, near a limb as they may be: a silhouette that
-  // cuts one is wrong. The faint edge placed by the markers' symmetry is tried first,
-  // then the steps' own; a marker cut by the limb is accepted only when neither shows both whole.
+  // cuts one is wrong. The steps' own edges are tried first, then the faint edge placed by the
+  // markers' symmetry; a marker cut by the limb is accepted only when neither shows both whole.
   const double fitted_edges[2] = {cal->left_edge_px, cal->right_edge_px};
   std::string first_message;
   for (int attempt = 0; attempt < 4; ++attempt) {
-    const bool moved = attempt % 2 == 0;
+    const bool moved = attempt % 2 == 1;
     if (moved && std::isnan(symmetric_edge)) continue;
     cal->left_edge_px = fitted_edges[0];
     cal->right_edge_px = fitted_edges[1];
