@@ -130,11 +130,13 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
       const bool hidden = UpperTurn(cal, yaw.hypotheses[i].yaw) > RadFromDeg(kHiddenDeg);
       alive[i] = !yaw.hypotheses[i].other_missing && !(hidden && telling[1 - i]);
       // This side turns the upper marker squarely to the camera, the other turns it away, and
-      // no dark spot fits where this side puts it: the marker would show, and does not.
+      // there is no dark spot at all where this side puts it: the marker would show, and does
+      // not. (A spot weighed and turned down is not enough: a marker missed that way had made a
+      // side 50 degrees wrong.)
       const bool square = UpperTurn(cal, yaw.hypotheses[i].yaw) <= RadFromDeg(kSquareDeg);
       const bool away =
           UpperTurn(cal, yaw.hypotheses[1 - i].yaw) > RadFromDeg(options.max_upper_turn_deg);
-      if (square && away && !uppers[i]->found) alive[i] = false;
+      if (square && away && uppers[i]->spots.empty()) alive[i] = false;
     }
     if (alive[0] && alive[1]) {  // the side whose upper marker shows plainly, if only one does
       if (telling[0] && !plain[1]) {
