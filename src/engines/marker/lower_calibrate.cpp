@@ -16,6 +16,9 @@ namespace {
 constexpr double kTrackable = 5;
 // ... and one fainter than this is placed better by the markers' symmetry.
 constexpr double kPlain = 15;
+// The lower markers' angular radii count as equal within this share of their sum (twice the
+// 3 % EqualDiscs starts at).
+constexpr double kEqualDiscs = 0.06;
 
 std::vector<int> RowRange(double from, double to, int rows) {
   std::vector<int> out;
@@ -425,6 +428,10 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
     if (MeasureReferenceMarkers(gray, camera, g.x0, surface, attempt >= 2, cal, scan, message)) {
       // A plain step that the bands agree on is the silhouette: only an unsure edge is moved.
       if (unsure(weak)) EqualDiscs(gray, camera, g.x0, surface, weak, cal, scan);
+      const LowerMarker& l = scan->markers[0];
+      const LowerMarker& r = scan->markers[1];
+      cal->single_sized =
+          !l.cut && !r.cut && std::abs(l.radius - r.radius) <= kEqualDiscs * (l.radius + r.radius);
       return true;
     }
     if (first_message.empty()) first_message = *message;

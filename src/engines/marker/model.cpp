@@ -174,6 +174,11 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
         yaw.hypotheses[other_side].other_missing || (a.yaw > 0) == (b.yaw > 0) || upper_decides;
   }
   const YawHypothesis& h = yaw.hypotheses[pick];
+  if (!(h.left && h.right) && !cal.lower.single_sized) {
+    out.note =
+        "one lower marker shows, and the reference's silhouette is too unsure to size it alone";
+    return out;
+  }
   out.ok = true;
   out.yaw = h.yaw;
   // Two lower markers measure the signed yaw through zero (near zero its sign is as good as its
