@@ -107,6 +107,16 @@ TEST_F(CliPose, SideBothIsThePoseEnginesAndMimicFollowsOneArm) {
   EXPECT_FALSE(std::ifstream(dir_->file("sb.right.tsv")).good());
 }
 
+TEST_F(CliPose, SideBothRefusesAnOutputThatIsNotAFile) {
+  const test::CliResult r = test::RunCli({"analyze", dir_->file("scene.avi"), "-o", "/dev/null",
+                                          "--engine", "pose", "--side", "both"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("-o /dev/null is not a file: --side both writes a file per arm"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::ifstream("/dev/null.left").good());
+}
+
 TEST_F(CliPose, SideBothRefusesAnArmsFileThatIsAnInput) {
   // -o o.avi with side both would write o.left.avi: the input itself.
   const std::string input = dir_->file("o.left.avi");
