@@ -13,7 +13,9 @@
 # --standstill-frames M; an engine that does not take --arm-length runs without it), and
 # ENGINE+joints gives the shoulder, elbow and wrist of the truth at frame K instead (as clicked
 # at the start frame). `pose` runs the pose engine as an operator would: the moving arm named
-# (--side: the person's own, so the image's right arm is their left) and --start K. K and M are the scene's own (45 and 60 in capsule scenes).
+# (--side: the person's own, so the image's right arm is their left) and --start K; `blazepose`
+# runs it the same way with --network blazepose. K and M are the scene's own (45 and 60 in
+# capsule scenes).
 # Seeds: the set's range of each generator (held out unless --set tuning): random 100000-,
 # capsule 300000-; tuning 1000- and 3000-. Held-out scenes are for measuring only: nothing may
 # be tuned on them. Scenes and angle files already in the work folder are reused.
@@ -125,9 +127,13 @@ for gen in "${GENS[@]}"; do
       for run in "${RUN_LIST[@]}"; do
         engine="${run%+joints}"
         out="$dir/$run.tsv"
-        if [[ "$run" == pose ]]; then
+        if [[ "$run" == pose || "$run" == blazepose ]]; then
           [[ "$(meta "$dir/truth.tsv" side)" == right ]] && pside=left || pside=right
           flags=(--side "$pside" --start "$k")
+          if [[ "$run" == blazepose ]]; then
+            engine=pose
+            flags+=(--network blazepose)
+          fi
         elif [[ "$run" == *+joints ]]; then
           flags=(--shoulder "$sx,$sy" --elbow "$ex,$ey" --wrist "$wx,$wy" --start "$k")
         else

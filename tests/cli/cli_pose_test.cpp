@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -128,26 +129,6 @@ TEST_F(CliPose, SideBothRefusesAnArmsFileThatIsAnInput) {
 }
 
 #if defined(ARMMIMIC_HAVE_POSE_MODEL) && defined(ARMMIMIC_HAVE_BLAZEPOSE_MODEL)
-// BlazePose's crop does not depend on the arm: each arm's file is the one-arm run's, byte for
-// byte.
-TEST_F(CliPose, SideBothWithBlazePoseWritesTheOneArmRunsFiles) {
-  const std::string video = dir_->file("scene.avi");
-  const std::vector<std::string> pose = {"--engine", "pose", "--network", "blazepose",
-                                         "--start",  "105",  "-q"};
-  auto run = [&](const std::string& out, const std::string& side) {
-    std::vector<std::string> args = {"analyze", video, "-o", out, "--side", side};
-    args.insert(args.end(), pose.begin(), pose.end());
-    const test::CliResult r = test::RunCli(args);
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-  };
-  run(dir_->file("bb.tsv"), "both");
-  run(dir_->file("bl.tsv"), "left");
-  run(dir_->file("br.tsv"), "right");
-  EXPECT_EQ(test::ReadFile(dir_->file("bb.left.tsv")), test::ReadFile(dir_->file("bl.tsv")));
-  EXPECT_EQ(test::ReadFile(dir_->file("bb.right.tsv")), test::ReadFile(dir_->file("br.tsv")));
-  EXPECT_FALSE(std::ifstream(dir_->file("bb.tsv")).good());
-}
-
 TEST_F(CliPose, BlazePoseWritesThe3dColumnsAndNamesItsNetwork) {
   const std::string out = dir_->file("blazepose.tsv");
   const test::CliResult r =
@@ -195,25 +176,27 @@ TEST_F(CliPose, PoseWritesEveryFrameFromTheStartWithAConfidence) {
   }
 }
 
-// --side both: one file per arm, each a whole angle file whose header is the one-arm run's of
-// that side, and whose rows are close to it (the crop is searched again when either arm drops).
-TEST_F(CliPose, SideBothWritesOneFilePerArmLikeTheOneArmRuns) {
-  const std::string video = dir_->file("scene.avi");
+// --side both with `network` (and `--start 105`): one file per arm, each a whole angle file whose
+// header is the one-arm run's of that side, and whose rows are close to it (MoveNet's crop, also
+// BlazePose's second opinion, is searched again when either arm drops in it).
+void ExpectEachArmLikeItsOneArmRun(const std::string& video, const std::string& dir,
+                                   const std::string& network) {
   auto run = [&](const std::string& out, const std::string& side) {
-    return test::RunCli(
-        {"analyze", video, "-o", out, "--engine", "pose", "--side", side, "--start", "105"});
+    return test::RunCli({"analyze", video, "-o", out, "--engine", "pose", "--network", network,
+                         "--side", side, "--start", "105"});
   };
-  const test::CliResult r = run(dir_->file("arms.tsv"), "both");
+  const test::CliResult r = run(dir + "/arms.tsv", "both");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("12 rows per arm from scene.avi"), std::string::npos) << r.err;
-  EXPECT_FALSE(std::ifstream(dir_->file("arms.tsv")).good());
+  EXPECT_FALSE(std::ifstream(dir + "/arms.tsv").good());
   for (const std::string side : {"left", "right"}) {
-    ASSERT_EQ(run(dir_->file("one." + side + ".tsv"), side).exit_code, 0);
+    ASSERT_EQ(run(dir + "/one." + side + ".tsv", side).exit_code, 0);
     AngleFile both, one;
-    ASSERT_TRUE(ReadAngleFile(dir_->file("arms." + side + ".tsv"), &both).ok()) << side;
-    ASSERT_TRUE(ReadAngleFile(dir_->file("one." + side + ".tsv"), &one).ok()) << side;
+    ASSERT_TRUE(ReadAngleFile(dir + "/arms." + side + ".tsv", &both).ok()) << side;
+    ASSERT_TRUE(ReadAngleFile(dir + "/one." + side + ".tsv", &one).ok()) << side;
     EXPECT_EQ(both.meta, one.meta) << side;
     EXPECT_EQ(both.Meta("pose.side"), side);
+    EXPECT_EQ(both.Meta("pose.network"), network);
     EXPECT_TRUE(both.has_confidence_column);
     ASSERT_EQ(both.rows.size(), 12u) << side;
     ASSERT_EQ(one.rows.size(), 12u) << side;
@@ -229,6 +212,20 @@ TEST_F(CliPose, SideBothWritesOneFilePerArmLikeTheOneArmRuns) {
     EXPECT_GE(same_status, 11) << side;
   }
 }
+
+TEST_F(CliPose, SideBothWritesOneFilePerArmLikeTheOneArmRuns) {
+  const std::string dir = dir_->file("movenet-arms");
+  std::filesystem::create_directories(dir);
+  ExpectEachArmLikeItsOneArmRun(dir_->file("scene.avi"), dir, "movenet");
+}
+
+#ifdef ARMMIMIC_HAVE_BLAZEPOSE_MODEL
+TEST_F(CliPose, SideBothWithBlazePoseWritesOneFilePerArmLikeTheOneArmRuns) {
+  const std::string dir = dir_->file("blazepose-arms");
+  std::filesystem::create_directories(dir);
+  ExpectEachArmLikeItsOneArmRun(dir_->file("scene.avi"), dir, "blazepose");
+}
+#endif
 
 // A batch with --side both: NAME.left.tsv and NAME.right.tsv, a summary line for each.
 TEST_F(CliPose, SideBothInABatchWritesAndSummarisesEachArm) {

@@ -35,6 +35,12 @@ struct PoseOptions {
   // A segment whose direction differs by more than this between the looks (degrees) is lost:
   // the network itself is unsure where it points.
   double max_disagreement_deg = 15;
+  // BlazePose only: a row is lost where MoveNet's looks, the second opinion, place the arm's
+  // joints or segments farther from BlazePose's than a turn of this many degrees would, or where
+  // BlazePose's 3-D direction turns this far from MoveNet's segment in the image plane
+  // (pose/second_opinion.h). Wider than the looks' bound: the two networks were trained on
+  // different joint conventions and differ by several degrees on real people.
+  double max_network_disagreement_deg = 25;
   // Also look at the mirror image of the closer look's crop: the two are averaged, and their
   // disagreement counts like the others'. One more inference per frame.
   bool flip = false;

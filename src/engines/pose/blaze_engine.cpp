@@ -1,14 +1,17 @@
 // The pose engine with BlazePose (--network blazepose): BlazePose's landmark network every frame
-// in a crop placed by the previous frame's auxiliary landmarks (MediaPipe's tracking). The
-// first frame, and any frame after the person was lost, places the crop from MoveNet's
+// in a crop placed by the previous frame's auxiliary landmarks, smoothed (MediaPipe's tracking).
+// The first frame, and any frame after the person was lost, places the crop from MoveNet's
 // keypoints on the whole image and refines it once with BlazePose's own auxiliary landmarks.
-// pose/blaze_gate.h decides each row; with side both, each arm's from the same landmarks.
+// pose/blaze_gate.h decides each row; with side both, each arm's from the same landmarks and
+// MoveNet looks (pose/arms.h).
 #include "armmimic/engines/pose.h"
 #include "common/engine_internal.h"
 #include "pose/arms.h"
 #include "pose/blaze_gate.h"
 #include "pose/blazepose.h"
 #include "pose/first_frame.h"
+#include "pose/movenet_track.h"
+#include "pose/one_euro.h"
 
 namespace armmimic {
 namespace {
@@ -29,6 +32,7 @@ class BlazePoseEngine : public Engine {
     if (!blaze_) return st;
     movenet_ = PoseNetwork::Load(context.model_dir, &st);
     if (!movenet_) return st;
+    movenet_track_ = std::make_unique<internal::MoveNetTracker>(movenet_.get(), o_);
     tracking_ = false;
     return Status::Ok();
   }
@@ -45,19 +49,35 @@ class BlazePoseEngine : public Engine {
     internal::BlazeLandmarks b = blaze_->Run(image, crop_);
     tracking_ = b.poseflag >= internal::kMinPoseFlag;
     if (tracking_) {
-      crop_ = internal::CropFromAuxiliary(b.px[internal::kBlazeCentre], b.px[internal::kBlazeTop]);
+      crop_ = internal::CropFromAuxiliary(SmoothAuxiliary(b.px[internal::kBlazeCentre], 0, frame),
+                                          SmoothAuxiliary(b.px[internal::kBlazeTop], 2, frame));
+    } else {
+      for (internal::OneEuroFilter& f : auxiliary_) f.Reset();
     }
     if (sides_.front() == PoseSide::kAuto) {
       sides_.front() = internal::BetterSeenSide(internal::AsMoveNetKeypoints(b), &m.estimate);
     }
+    movenet_track_->BodyLook(image, sides_);
+    internal::PoseLooks movenet = movenet_track_->Looks(image, sides_);
     const cv::Point2d offset(area_.tl());
     for (cv::Point2d& p : b.px) p += offset;
-    return internal::DecideArms(gates_, sides_, b, m);
+    movenet.Shift(offset);
+    return internal::DecideArms(sides_, m, [&](std::size_t i, ArmMeasurement* arm) {
+      gates_[i].Decide(b, movenet, sides_[i], arm);
+    });
   }
 
   AngleMeta Describe() const override { return {{"model", internal::kBlazePoseModelName}}; }
 
  private:
+  // An auxiliary landmark smoothed as MediaPipe smooths them before placing the next crop: a
+  // cut-off of 0.01 Hz for a still point that rises by 10 Hz per crop size per second of speed.
+  cv::Point2d SmoothAuxiliary(const cv::Point2d& p, int first_filter, const Frame& frame) {
+    const double per_size = 1 / crop_.size;
+    return {auxiliary_[first_filter].Apply(frame.time_s, p.x, per_size),
+            auxiliary_[first_filter + 1].Apply(frame.time_s, p.y, per_size)};
+  }
+
   // The first crop (SeedCrop). False when nobody is seen.
   bool Seed(const cv::Mat& image) {
     return internal::SeedCrop(movenet_.get(), blaze_.get(), image, o_.crop_score, &crop_);
@@ -69,8 +89,12 @@ class BlazePoseEngine : public Engine {
   cv::Rect area_;
   std::unique_ptr<internal::BlazePoseNetwork> blaze_;
   std::unique_ptr<PoseNetwork> movenet_;
+  std::unique_ptr<internal::MoveNetTracker> movenet_track_;  // the second opinion's looks
   bool tracking_ = false;
   internal::BlazeCrop crop_;
+  // x and y of the centre, then of the top (SmoothAuxiliary).
+  std::vector<internal::OneEuroFilter> auxiliary_ =
+      std::vector<internal::OneEuroFilter>(4, internal::OneEuroFilter(0.01, 10, 1));
 };
 
 }  // namespace

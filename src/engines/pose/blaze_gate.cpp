@@ -6,6 +6,8 @@
 
 #include "armmimic/core/angle_file.h"
 #include "armmimic/core/angles.h"
+#include "pose/gate.h"
+#include "pose/second_opinion.h"
 
 namespace armmimic::internal {
 
@@ -24,8 +26,31 @@ bool BoneLengthGate::Accept(double length_m) {
   return ok;
 }
 
-void BlazeArmGate::Decide(const BlazeLandmarks& b, PoseSide side, ArmMeasurement* m) {
+// MediaPipe's filter of the world landmarks (its pose landmark filtering): a cut-off of 0.1 Hz for
+// a still joint that rises by 40 Hz per metre per second of speed, and the speed itself
+// filtered at 1 Hz. MediaPipe's own world landmarks, which the real-clip check compares with,
+// are filtered so.
+std::array<cv::Vec3d, 3> BlazeArmGate::Smooth(double time_s,
+                                              const std::array<cv::Vec3d, 3>& joints) {
+  if (world_filters_.empty()) world_filters_.assign(9, OneEuroFilter(0.1, 40, 1));
+  std::array<cv::Vec3d, 3> out;
+  for (int j = 0; j < 3; ++j) {
+    for (int c = 0; c < 3; ++c) out[j][c] = world_filters_[3 * j + c].Apply(time_s, joints[j][c]);
+  }
+  return out;
+}
+
+void BlazeArmGate::Decide(const BlazeLandmarks& b, const PoseLooks& movenet, PoseSide side,
+                          ArmMeasurement* m) {
   const PoseKeypoints k = AsMoveNetKeypoints(b);
+  // Where MoveNet's upper arm turns is learnt from every frame in which MoveNet sees the arm,
+  // whatever BlazePose's rules decide of the row.
+  const PoseKeypoints seen = movenet.Combined();
+  const PoseArm movenet_arm = ArmOf(seen, side);
+  cv::Point2d movenet_shoulder = movenet_arm.shoulder;
+  if (ArmOf(movenet.body, side).score >= o_.min_score && !Mirrored(seen, o_.min_score)) {
+    movenet_shoulder = PivotShoulder(seen, movenet_arm, o_.crop_score, &pivot_);
+  }
   m->pose_keypoints.assign(k.px.begin(), k.px.end());
   m->pose_scores.assign(k.score.begin(), k.score.end());
   const bool left = side == PoseSide::kLeft;
@@ -37,9 +62,13 @@ void BlazeArmGate::Decide(const BlazeLandmarks& b, PoseSide side, ArmMeasurement
   m->shoulder_px = b.px[s];
   m->elbow_px = b.px[e];
   m->wrist_px = b.px[w];
-  m->arm_world_m = {b.world[s], b.world[e], b.world[w]};
+  std::array<cv::Vec3d, 3> world = {b.world[s], b.world[e], b.world[w]};
+  if (b.poseflag >= kMinPoseFlag) world = Smooth(m->time_s, world);
+  m->arm_world_m = {world[0], world[1], world[2]};
   m->phase = MeasurementPhase::kLost;
   if (b.poseflag < kMinPoseFlag) {
+    // The person is placed afresh: nothing of the lost track is carried over.
+    for (OneEuroFilter& f : world_filters_) f.Reset();
     m->note = "no person in the crop (person flag " + FormatNumber(b.poseflag, 2) + ")";
     return;
   }
@@ -52,8 +81,12 @@ void BlazeArmGate::Decide(const BlazeLandmarks& b, PoseSide side, ArmMeasurement
     m->note = "arm not seen (visibility " + FormatNumber(visibility, 2) + ")";
     return;
   }
-  const double upper_m = cv::norm(b.world[e] - b.world[s]);
-  const double fore_m = cv::norm(b.world[w] - b.world[e]);
+  if (Mirrored(k, o_.min_score)) {
+    m->note = "the shoulders are mirrored: the person faces away, or the network swapped the arms";
+    return;
+  }
+  const double upper_m = cv::norm(world[1] - world[0]);
+  const double fore_m = cv::norm(world[2] - world[1]);
   const bool upper_ok = upper_.Accept(upper_m);
   const bool fore_ok = fore_.Accept(fore_m);
   if (!upper_ok || !fore_ok) {
@@ -63,16 +96,19 @@ void BlazeArmGate::Decide(const BlazeLandmarks& b, PoseSide side, ArmMeasurement
               FormatNumber(gate.running_m(), 3) + " m";
     return;
   }
+  const std::string doubt = SecondOpinion(movenet, k, world, side, o_);
+  if (!doubt.empty()) {
+    m->note = doubt;
+    return;
+  }
   m->phase = MeasurementPhase::kOk;
-  m->upper_deg = DirectionDeg(b.px[s], b.px[e]);
-  m->fore_deg = DirectionDeg(b.px[e], b.px[w]);
-  m->bend_deg = Wrap180(m->fore_deg - m->upper_deg);
-  m->upper_com_px = (b.px[s] + b.px[e]) * 0.5;
-  m->fore_com_px = (b.px[e] + b.px[w]) * 0.5;
-  m->bent = std::abs(m->bend_deg) > 20;
-  AzimuthElevationDeg(b.world[s], b.world[e], &m->upper_az_deg, &m->upper_el_deg);
-  AzimuthElevationDeg(b.world[e], b.world[w], &m->fore_az_deg, &m->fore_el_deg);
-  m->elbow_deg = JointAngleDeg(b.world[s], b.world[e], b.world[w]);
+  // The 2-D columns, and the joints drawn, are MoveNet's: its closer looks place the joints at
+  // about twice BlazePose's resolution in the image. The 3-D columns are BlazePose's. The two
+  // agree within max_network_disagreement_deg (SecondOpinion).
+  SetArmDirections(movenet_arm, movenet_shoulder, m);
+  AzimuthElevationDeg(world[0], world[1], &m->upper_az_deg, &m->upper_el_deg);
+  AzimuthElevationDeg(world[1], world[2], &m->fore_az_deg, &m->fore_el_deg);
+  m->elbow_deg = JointAngleDeg(world[0], world[1], world[2]);
 }
 
 }  // namespace armmimic::internal

@@ -1,14 +1,20 @@
-// When a BlazePose row is lost (docs/pose.md, "BlazePose: when a row is lost"): the person flag
-// is low, a joint of the arm is outside the crop or not visible, or a bone's 3-D length jumps far
-// from its running value (the network has mistaken a joint). Otherwise the row carries both the 2-D
-// directions (the image landmarks) and the 3-D ones (the world landmarks).
+// When a BlazePose row is lost (docs/pose.md, "BlazePose: when a row is lost"), and the arm's
+// world landmarks smoothed over time as MediaPipe smooths them. A row is lost when the person flag
+// is low, a joint of the arm is outside the crop or not visible, the shoulders are mirrored, a
+// bone's 3-D length jumps far from its running value (the network has mistaken a joint), or
+// MoveNet, the second opinion, does not bear the arm out. Otherwise the row carries the 2-D
+// directions of MoveNet's looks and the 3-D ones of BlazePose's world landmarks.
 #pragma once
 
+#include <array>
 #include <deque>
 
 #include "armmimic/engines/measurement.h"
 #include "armmimic/engines/pose_options.h"
 #include "pose/blazepose.h"
+#include "pose/looks.h"
+#include "pose/one_euro.h"
+#include "pose/shoulder_pivot.h"
 
 namespace armmimic::internal {
 
@@ -35,13 +41,19 @@ class BlazeArmGate {
   explicit BlazeArmGate(const PoseOptions& options) : o_(options) {}
   // Fills m from the landmarks of one frame for `side`'s arm (image pixels already in the full
   // frame): keypoints, joints and confidence always; then the angles (phase ok) or phase lost
-  // with a note saying which rule decided.
-  void Decide(const BlazeLandmarks& b, PoseSide side, ArmMeasurement* m);
+  // with a note saying which rule decided. `movenet`: MoveNet's looks at the same frame, in the
+  // same pixels (pose/second_opinion.h).
+  void Decide(const BlazeLandmarks& b, const PoseLooks& movenet, PoseSide side, ArmMeasurement* m);
 
  private:
+  // The arm's world landmarks smoothed over time (MediaPipe's filter: see blaze_gate.cpp).
+  std::array<cv::Vec3d, 3> Smooth(double time_s, const std::array<cv::Vec3d, 3>& joints);
+
   PoseOptions o_;
+  std::vector<OneEuroFilter> world_filters_;
   BoneLengthGate upper_;
   BoneLengthGate fore_;
+  ShoulderPivot pivot_;  // where MoveNet's upper arm turns
 };
 
 }  // namespace armmimic::internal

@@ -1,9 +1,7 @@
 // The pose-network engine: MoveNet keypoints every frame, one arm's shoulder, elbow and wrist
-// turned into the angle file's directions. Crop tracking as in MoveNet's demo: the first frame
-// (and any frame after the person was lost) runs on the whole image padded to a square, later
-// frames on a square around the previous keypoints; when the arm's scores drop in a crop, the
-// whole image is searched again at once. That body look is followed by a closer look at the
-// upper body (pose/looks.h), which places the joints. A row is lost when a joint's score is low,
+// turned into the angle file's directions. MoveNet's looks at each frame (pose/movenet_track.h):
+// the body look, tracked as in MoveNet's demo, then a closer look at the upper body
+// (pose/looks.h), which places the joints. A row is lost when a joint's score is low,
 // a segment is much shorter than its usual length (pointing at the camera) or the looks disagree
 // on its direction (pose/gate.h): never `ok` on a guess. With side both, the same looks give
 // both arms (pose/arms.h): the crop is searched again when either arm drops in it.
@@ -13,6 +11,7 @@
 #include "pose/first_frame.h"
 #include "pose/gate.h"
 #include "pose/looks.h"
+#include "pose/movenet_track.h"
 
 namespace armmimic {
 namespace {
@@ -31,7 +30,7 @@ class PoseEngine : public Engine {
     if (!st) return st;
     net_ = PoseNetwork::Load(context.model_dir, &st);
     if (!net_) return st;
-    tracking_ = false;
+    track_ = std::make_unique<internal::MoveNetTracker>(net_.get(), o_);
     return Status::Ok();
   }
 
@@ -40,27 +39,15 @@ class PoseEngine : public Engine {
     m.frame = frame.index;
     m.time_s = frame.time_s;
     const cv::Mat image = frame.image(area_);
-    const PoseCrop whole = WholeImageCrop(image.size());
-    const bool cropped =
-        tracking_ && (crop_.x != whole.x || crop_.y != whole.y || crop_.size != whole.size);
-    PoseCrop used = cropped ? crop_ : whole;
-    PoseKeypoints k = net_->Run(image, used);
+    const PoseKeypoints body = track_->BodyLook(image, sides_);
     if (sides_.front() == PoseSide::kAuto) {
-      sides_.front() = internal::BetterSeenSide(k, &m.estimate);
+      sides_.front() = internal::BetterSeenSide(body, &m.estimate);
     }
-    if (cropped && internal::WeakestArmScore(k, sides_) < o_.min_score) {
-      // The scores dropped inside the crop: search the whole image again.
-      const PoseKeypoints again = net_->Run(image, whole);
-      if (internal::WeakestArmScore(again, sides_) > internal::WeakestArmScore(k, sides_)) {
-        k = again;
-        used = whole;
-      }
-    }
-    crop_ = NextCrop(k, image.size(), o_.crop_score);
-    tracking_ = crop_.size > 0;
-    internal::PoseLooks looks = internal::TakeLooks(net_.get(), image, k, used, sides_, o_);
+    internal::PoseLooks looks = track_->Looks(image, sides_);
     looks.Shift(cv::Point2d(area_.tl()));
-    return internal::DecideArms(gates_, sides_, looks, m);
+    return internal::DecideArms(sides_, m, [&](std::size_t i, ArmMeasurement* arm) {
+      gates_[i].Decide(looks, sides_[i], arm);
+    });
   }
 
   AngleMeta Describe() const override { return {{"model", internal::kPoseModelName}}; }
@@ -71,8 +58,7 @@ class PoseEngine : public Engine {
   std::vector<internal::PoseArmGate> gates_;  // one per side
   cv::Rect area_;
   std::unique_ptr<PoseNetwork> net_;
-  bool tracking_ = false;
-  PoseCrop crop_;
+  std::unique_ptr<internal::MoveNetTracker> track_;
 };
 
 }  // namespace

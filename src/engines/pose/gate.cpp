@@ -7,12 +7,6 @@
 #include "armmimic/core/angles.h"
 
 namespace armmimic::internal {
-namespace {
-
-// The smallest in-plane segment lengths, in torso lengths (anthropometric tables put the upper
-// arm near 0.6 and the forearm near 0.5 of the shoulder-to-hip distance).
-constexpr double kUpperFloor = 0.45;
-constexpr double kForeFloor = 0.4;
 
 double TorsoPx(const PoseKeypoints& k, double min_score) {
   for (int j : {kLeftShoulder, kRightShoulder, kLeftHip, kRightHip}) {
@@ -22,16 +16,10 @@ double TorsoPx(const PoseKeypoints& k, double min_score) {
                   (k.px[kLeftHip] + k.px[kRightHip]) * 0.5);
 }
 
-// A person facing the camera, as the operator does, has their left shoulder on the image's right.
-// Both shoulders seen the other way round say that the network's left and right are not the
-// person's: they face away, or (on figures the network reads badly) it put the named arm's
-// joints on the other arm. Either way the row would name the wrong arm.
 bool Mirrored(const PoseKeypoints& k, double min_score) {
   return k.score[kLeftShoulder] >= min_score && k.score[kRightShoulder] >= min_score &&
          k.px[kLeftShoulder].x <= k.px[kRightShoulder].x;
 }
-
-}  // namespace
 
 double PoseLengthGate::P90(std::vector<double> v) {
   const auto k = static_cast<std::ptrdiff_t>((v.size() - 1) * 9 / 10);
@@ -102,10 +90,24 @@ void PoseArmGate::Decide(const PoseLooks& looks, PoseSide side, ArmMeasurement* 
     return;
   }
   m->phase = MeasurementPhase::kOk;
-  m->upper_deg = DirectionDeg(arm.shoulder, arm.elbow);
+  SetArmDirections(arm, PivotShoulder(k, arm, o_.crop_score, &pivot_), m);
+}
+
+cv::Point2d PivotShoulder(const PoseKeypoints& k, const PoseArm& arm, double torso_score,
+                          ShoulderPivot* pivot) {
+  if (TorsoPx(k, torso_score) <= 0) return arm.shoulder;
+  return pivot->Add(arm.shoulder, arm.elbow, (k.px[kLeftHip] + k.px[kRightHip]) * 0.5,
+                    (k.px[kLeftShoulder] + k.px[kRightShoulder]) * 0.5);
+}
+
+void SetArmDirections(const PoseArm& arm, const cv::Point2d& shoulder, ArmMeasurement* m) {
+  m->shoulder_px = shoulder;
+  m->elbow_px = arm.elbow;
+  m->wrist_px = arm.wrist;
+  m->upper_deg = DirectionDeg(shoulder, arm.elbow);
   m->fore_deg = DirectionDeg(arm.elbow, arm.wrist);
   m->bend_deg = Wrap180(m->fore_deg - m->upper_deg);
-  m->upper_com_px = (arm.shoulder + arm.elbow) * 0.5;
+  m->upper_com_px = (shoulder + arm.elbow) * 0.5;
   m->fore_com_px = (arm.elbow + arm.wrist) * 0.5;
   m->bent = std::abs(m->bend_deg) > 20;
 }

@@ -6,7 +6,8 @@
 //    the lengths seen so far (the last kWindow frames), never less than an anthropometric floor.
 //  - PoseArmGate: one arm's row from a frame's looks: lost when a joint is not seen, the
 //    shoulders are mirrored (the network's left is not the person's), a segment points at the
-//    camera, or the looks disagree on a segment's direction.
+//    camera, or the looks disagree on a segment's direction; an ok row's upper arm is measured
+//    from the shoulder's pivot once it is known (pose/shoulder_pivot.h).
 #pragma once
 
 #include <vector>
@@ -14,8 +15,32 @@
 #include "armmimic/engines/measurement.h"
 #include "armmimic/engines/pose_options.h"
 #include "pose/looks.h"
+#include "pose/shoulder_pivot.h"
 
 namespace armmimic::internal {
+
+// The smallest in-plane segment lengths, in torso lengths (anthropometric tables put the upper
+// arm near 0.6 and the forearm near 0.5 of the shoulder-to-hip distance).
+inline constexpr double kUpperFloor = 0.45;
+inline constexpr double kForeFloor = 0.4;
+
+// The distance from the shoulders' centre to the hips' centre in `k`, pixels; 0 when one of the
+// four is scored below `min_score`.
+double TorsoPx(const PoseKeypoints& k, double min_score);
+
+// A person facing the camera, as the operator does, has their left shoulder on the image's right.
+// Both shoulders seen the other way round say that the network's left and right are not the
+// person's: they face away, or (on figures the network reads badly) it put the named arm's
+// joints on the other arm. Either way the row would name the wrong arm.
+bool Mirrored(const PoseKeypoints& k, double min_score);
+
+// Adds a frame's `arm` (joints of `k`) to `pivot` and returns the point to measure the upper
+// arm from: the shoulder's pivot where `pivot` knows it (pose/shoulder_pivot.h), the shoulder
+// keypoint otherwise, and always when `k`'s torso is not scored at least `torso_score`.
+cv::Point2d PivotShoulder(const PoseKeypoints& k, const PoseArm& arm, double torso_score,
+                          ShoulderPivot* pivot);
+// An ok row's joints and 2-D columns from `arm`, its upper arm measured from `shoulder`.
+void SetArmDirections(const PoseArm& arm, const cv::Point2d& shoulder, ArmMeasurement* m);
 
 class PoseLengthGate {
  public:
@@ -47,6 +72,7 @@ class PoseArmGate {
   PoseOptions o_;
   PoseLengthGate upper_;
   PoseLengthGate fore_;
+  ShoulderPivot pivot_;
 };
 
 }  // namespace armmimic::internal

@@ -40,6 +40,10 @@ const std::vector<OptionField<PoseOptions>>& PoseOptionFields() {
               "Maximum disagreement",
               "a segment whose direction differs more between the looks "
               "(degrees) is lost"),
+      Real<P>("max_network_disagreement_deg", &P::max_network_disagreement_deg, 25, 1, 180, 1,
+              "Maximum network disagreement",
+              "blazepose: a segment farther from MoveNet's, the second opinion, than a turn of "
+              "this many degrees is lost"),
       Bool<P>("flip", &P::flip, false, "Mirrored look",
               "also look at the mirrored crop and average (one more inference per frame)"),
   };

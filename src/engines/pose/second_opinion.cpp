@@ -1,0 +1,73 @@
+#include "pose/second_opinion.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "armmimic/core/angle_file.h"
+#include "pose/gate.h"
+
+namespace armmimic::internal {
+namespace {
+
+constexpr double kDegToRad = M_PI / 180;
+
+// How far BlazePose's `blaze_to` is from MoveNet's `movenet_to` once both segments start at
+// MoveNet's `from`, over what is allowed for a segment of that length; > 1 disagrees.
+double Misfit(const cv::Point2d& movenet_from, const cv::Point2d& movenet_to,
+              const cv::Point2d& blaze_from, const cv::Point2d& blaze_to, double floor_px,
+              double sin_max) {
+  const cv::Point2d vm = movenet_to - movenet_from;
+  const cv::Point2d vb = blaze_to - blaze_from;
+  const double length = std::max({cv::norm(vm), cv::norm(vb), floor_px});
+  return length > 0 ? cv::norm(vb - vm) / (sin_max * length) : 0;
+}
+
+// How far the 3-D segment `world` (x right, y down, z away from the camera) turns from the image
+// segment `image` in the image plane, over what is allowed: the chord between their in-plane
+// unit directions, weighted by the share of the 3-D segment that lies in the image plane (a
+// segment pointing at the camera has no in-plane direction to disagree with), over the chord of
+// max_deg. > 1 disagrees.
+double PlaneMisfit(const cv::Vec3d& world, const cv::Point2d& image, double chord_max) {
+  const cv::Point2d in_plane(world[0], world[1]);
+  const double length = cv::norm(world), plane = cv::norm(in_plane), seen = cv::norm(image);
+  if (length <= 0 || plane <= 0 || seen <= 0) return 0;
+  return (plane / length) * cv::norm(in_plane / plane - image / seen) / chord_max;
+}
+
+}  // namespace
+
+std::string SecondOpinion(const PoseLooks& movenet, const PoseKeypoints& blaze,
+                          const std::array<cv::Vec3d, 3>& world, PoseSide side,
+                          const PoseOptions& options) {
+  const PoseArm seen = ArmOf(movenet.body, side);
+  if (seen.score < options.min_score) {
+    return "MoveNet, the second opinion, does not see the arm (score " +
+           FormatNumber(seen.score, 2) + ")";
+  }
+  const PoseKeypoints k = movenet.Combined();
+  const PoseArm m = ArmOf(k, side);
+  const PoseArm b = ArmOf(blaze, side);
+  const double torso = TorsoPx(k, options.crop_score);
+  const double max_deg = options.max_network_disagreement_deg;
+  const double sin_max = std::sin(max_deg * kDegToRad);
+  const double upper =
+      Misfit(m.shoulder, m.elbow, b.shoulder, b.elbow, kUpperFloor * torso, sin_max);
+  const double fore = Misfit(m.elbow, m.wrist, b.elbow, b.wrist, kForeFloor * torso, sin_max);
+  // The shoulder against the upper arm's length: the same arm, not its twin on the other side.
+  const double shoulder = cv::norm(b.shoulder - m.shoulder) /
+                          (sin_max * std::max(cv::norm(m.elbow - m.shoulder), kUpperFloor * torso));
+  const double chord_max = 2 * std::sin(max_deg * kDegToRad / 2);
+  const double upper_3d = PlaneMisfit(world[1] - world[0], m.elbow - m.shoulder, chord_max);
+  const double fore_3d = PlaneMisfit(world[2] - world[1], m.wrist - m.elbow, chord_max);
+  const double worst = std::max({upper, fore, shoulder, upper_3d, fore_3d});
+  if (worst <= 1) return std::string();
+  const char* part = worst == shoulder   ? "shoulder"
+                     : worst == upper    ? "upper arm"
+                     : worst == fore     ? "forearm"
+                     : worst == upper_3d ? "upper arm's 3-D direction"
+                                         : "forearm's 3-D direction";
+  return std::string("BlazePose and MoveNet, the second opinion, disagree on the ") + part + " (" +
+         FormatNumber(worst, 1) + " times what " + FormatNumber(max_deg, 0) + " degrees allow)";
+}
+
+}  // namespace armmimic::internal
