@@ -320,6 +320,21 @@ SurfaceStretch SampleStretch(const cv::Mat& filtered, cv::Point2d a, cv::Point2d
   return out;
 }
 
+namespace {
+
+// The point just outside `blob`'s box from its centre towards `direction`.
+cv::Point2d Beyond(const MarkerBlob& blob, cv::Point2d direction) {
+  const double len = std::hypot(direction.x, direction.y);
+  if (!(len > 0)) return blob.centre;
+  const cv::Point2d u = direction / len;
+  const double reach =
+      std::min(std::abs(u.x) > 1e-9 ? (0.5 * blob.box.width + 1) / std::abs(u.x) : 1e9,
+               std::abs(u.y) > 1e-9 ? (0.5 * blob.box.height + 1) / std::abs(u.y) : 1e9);
+  return blob.centre + u * std::min(reach, 0.45 * len);
+}
+
+}  // namespace
+
 std::vector<MarkerTriple> RankReferenceTriples(const std::vector<MarkerBlob>& blobs,
                                                const cv::Mat& filtered, int limit) {
   const int count = std::min<int>(static_cast<int>(blobs.size()), 16);
@@ -340,8 +355,11 @@ std::vector<MarkerTriple> RankReferenceTriples(const std::vector<MarkerBlob>& bl
         if (c.centre.y > mid.y - 0.3 * n) continue;
         const double off = std::abs(c.centre.x - mid.x);
         if (off > 0.2 * n + 2) continue;
-        const SurfaceStretch pair = SampleStretch(filtered, a.centre, b.centre);
-        const SurfaceStretch up = SampleStretch(filtered, mid, c.centre);
+        // The stretches between the blobs, the blobs themselves left out (large markers close
+        // together leave little between them).
+        const SurfaceStretch pair =
+            SampleStretch(filtered, Beyond(a, b.centre - a.centre), Beyond(b, a.centre - b.centre));
+        const SurfaceStretch up = SampleStretch(filtered, mid, Beyond(c, mid - c.centre));
         if (pair.uneven > 0.25 || up.uneven > 0.25) continue;
         const double score = off / n + dy / n + 0.5 * size_diff + pair.uneven + up.uneven;
         ranked.emplace_back(score, Ordered(c, a, b));

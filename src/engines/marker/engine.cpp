@@ -19,6 +19,8 @@ namespace {
 
 std::string Fixed(double v, int decimals) { return FormatNumber(v, decimals); }
 
+constexpr int kNarrowMedian = 3;
+
 class MarkerEngine : public Engine {
  public:
   explicit MarkerEngine(const MarkerOptions& options) : requested_(options), options_(options) {}
@@ -204,6 +206,19 @@ class MarkerEngine : public Engine {
           if (o.low < 0 || o.high > 255) continue;
           out.push_back(o);
         }
+      }
+    }
+    // A marker seen nearly edge-on (near a limb) is a stripe narrower than the median's window,
+    // which wipes it out: last, the same windows with the narrowest median that still removes
+    // single-pixel noise.
+    if (requested_.median_size > kNarrowMedian) {
+      const std::size_t n = out.size();
+      MarkerOptions o = requested_;
+      o.median_size = kNarrowMedian;
+      out.push_back(o);
+      for (std::size_t i = 0; i < n; ++i) {
+        out.push_back(out[i]);
+        out.back().median_size = kNarrowMedian;
       }
     }
     return out;

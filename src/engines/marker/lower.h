@@ -35,6 +35,12 @@ struct LowerCalibration {
   double delta = 0;                            // the markers' angular radius (radians)
   double theta_left0 = 0, theta_right0 = 0;    // the lower markers' angles at zero yaw
   double height = 0;  // the lower markers' height in the camera frame (radii, y up)
+  // Whether one lower marker alone can be sized: both reference markers whole and of equal
+  // angular radius (within kEqualDiscs). A single marker's yaw rests on its reference angle
+  // alone, which a silhouette edge misplaced in the reference shifts by degrees (most near a
+  // limb, where a cut marker lies; unequal discs show an edge misplaced); two markers' yaws
+  // check each other.
+  bool single_sized = true;
 };
 
 // One lower marker found across the cylinder.

@@ -16,6 +16,9 @@ namespace {
 constexpr double kTrackable = 5;
 // ... and one fainter than this is placed better by the markers' symmetry.
 constexpr double kPlain = 15;
+// The lower markers' angular radii count as equal within this share of their sum (twice the
+// 3 % EqualDiscs starts at).
+constexpr double kEqualDiscs = 0.06;
 
 std::vector<int> RowRange(double from, double to, int rows) {
   std::vector<int> out;
@@ -36,7 +39,7 @@ std::vector<int> RowRange(double from, double to, int rows) {
 // edges need not be symmetric about it.
 bool SilhouetteEdges(const std::vector<std::vector<double>>& profiles, int x0, double mid,
                      double lo, double hi, int* left, int* right) {
-  constexpr double kShare = 0.25;
+  constexpr double kShare = 0.25, kRamp = 0.5;
   const int width = profiles.empty() ? 0 : static_cast<int>(profiles[0].size());
   std::vector<double> g(width, 0.0);
   for (int i = 1; i + 1 < width; ++i) {
@@ -59,6 +62,13 @@ bool SilhouetteEdges(const std::vector<std::vector<double>>& profiles, int x0, d
         // The step's own peak, a column or two further out.
         int peak = x;
         while (inside(peak + step) && g[peak + step - x0] > g[peak - x0]) peak += step;
+        // A silhouette is a step with the background flat beyond it; a gradient as steep three
+        // pixels either side is the middle of the surface's shading ramp (side light).
+        if (inside(peak - 3 * step) && inside(peak + 3 * step) &&
+            std::min(g[peak - 3 * step - x0], g[peak + 3 * step - x0]) >= kRamp * g[peak - x0]) {
+          x = peak;
+          continue;
+        }
         *out[side] = peak;
         break;
       }
@@ -384,7 +394,7 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
     // The markers' symmetry places an edge no step shows. It is only approximate (under side
     // light, seen from aside or by a tilted camera a marker's centroid is not its centre's
     // image, and the upper marker lies at another height): a faint step's own edge is tried
-    // after it, and EqualDiscs refines whichever shows both lower markers whole.
+    // before it, and EqualDiscs refines whichever shows both lower markers whole.
     if (!std::isnan(edge)) {
       if (steepest(weak) == 0) {
         fitted = edge;
@@ -399,12 +409,12 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   cal->search_px = std::max(3, static_cast<int>(std::lround(0.1 * (right - left))));
   cal->marker_height_px = g.h;
   // At zero yaw both lower markers show whole, near a limb as they may be: a silhouette that
-  // cuts one is wrong. The faint edge placed by the markers' symmetry is tried first,
-  // then the steps' own; a marker cut by the limb is accepted only when neither shows both whole.
+  // cuts one is wrong. The steps' own edges are tried first, then the faint edge placed by the
+  // markers' symmetry; a marker cut by the limb is accepted only when neither shows both whole.
   const double fitted_edges[2] = {cal->left_edge_px, cal->right_edge_px};
   std::string first_message;
   for (int attempt = 0; attempt < 4; ++attempt) {
-    const bool moved = attempt % 2 == 0;
+    const bool moved = attempt % 2 == 1;
     if (moved && std::isnan(symmetric_edge)) continue;
     cal->left_edge_px = fitted_edges[0];
     cal->right_edge_px = fitted_edges[1];
@@ -416,7 +426,12 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
     scan->right_edge_px = cal->right_edge_px;
     scan->cylinder = CylinderView(camera, cal->left_edge_px, cal->right_edge_px);
     if (MeasureReferenceMarkers(gray, camera, g.x0, surface, attempt >= 2, cal, scan, message)) {
-      EqualDiscs(gray, camera, g.x0, surface, weak, cal, scan);
+      // A plain step that the bands agree on is the silhouette: only an unsure edge is moved.
+      if (unsure(weak)) EqualDiscs(gray, camera, g.x0, surface, weak, cal, scan);
+      const LowerMarker& l = scan->markers[0];
+      const LowerMarker& r = scan->markers[1];
+      cal->single_sized =
+          !l.cut && !r.cut && std::abs(l.radius - r.radius) <= kEqualDiscs * (l.radius + r.radius);
       return true;
     }
     if (first_message.empty()) first_message = *message;

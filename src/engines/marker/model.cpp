@@ -33,8 +33,14 @@ bool CalibrateMarkerJoint(const cv::Mat& gray, const MarkerTriple& t, const Mark
       (cal->camera.principal_px.y - t.upper.centre.y) * cyl.Depth(u.theta0) / f;
   u.pivot_height = 0.5 * (upper_height + cal->lower.height);
   u.e = 0.5 * (upper_height - cal->lower.height);
-  if (!(u.e > 0.3)) {
-    *message = "the upper marker is not above the lower ones";
+  // The two parts meet at the pivot and, bent by beta, overlap within tan(beta / 2) of it along
+  // their axes: a radius at a right-angle bend. Markers nearer the pivot than that would be
+  // folded into the other part, so a triple that puts them there is not the joint's.
+  if (!(u.e > 1)) {
+    *message =
+        u.e > 0 ? "the markers lie less than a radius from the pivot (e = " + FormatNumber(u.e, 2) +
+                      " radii): not the joint's markers"
+                : "the upper marker is not above the lower ones";
     return false;
   }
   u.marker_ratio = cal->lower.marker_ratio;
@@ -47,6 +53,12 @@ bool CalibrateMarkerJoint(const cv::Mat& gray, const MarkerTriple& t, const Mark
 }
 
 namespace {
+
+// A side whose upper part shows this many times the other side's silhouette support wins.
+constexpr double kSupportMargin = 1.5;
+
+// An upper marker turned at most this far from the camera shows plainly when it is there.
+constexpr double kSquareDeg = 45;
 
 // Past this the upper marker cannot be seen (a marker is unreadable past 75 degrees).
 constexpr double kHiddenDeg = 80;
@@ -117,12 +129,27 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
     for (int i = 0; i < 2; ++i) {
       const bool hidden = UpperTurn(cal, yaw.hypotheses[i].yaw) > RadFromDeg(kHiddenDeg);
       alive[i] = !yaw.hypotheses[i].other_missing && !(hidden && telling[1 - i]);
+      // This side turns the upper marker squarely to the camera, the other turns it away, and
+      // there is no dark spot at all where this side puts it: the marker would show, and does
+      // not. (A spot weighed and turned down is not enough: a marker missed that way had made a
+      // side 50 degrees wrong.)
+      const bool square = UpperTurn(cal, yaw.hypotheses[i].yaw) <= RadFromDeg(kSquareDeg);
+      const bool away =
+          UpperTurn(cal, yaw.hypotheses[1 - i].yaw) > RadFromDeg(options.max_upper_turn_deg);
+      if (square && away && uppers[i]->spots.empty()) alive[i] = false;
     }
     if (alive[0] && alive[1]) {  // the side whose upper marker shows plainly, if only one does
       if (telling[0] && !plain[1]) {
         alive[1] = false;
       } else if (telling[1] && !plain[0]) {
         alive[0] = false;
+      } else if (telling[0] != telling[1]) {
+        // Both find a spot, but only one side finds the upper part's silhouette round it: the
+        // other side's bend puts the upper part where the image shows at most half the
+        // reference's edges. The upper marker lies a radius to one side of its part's axis, the
+        // side the yaw turns it to, so the wrong side's part is displaced by about two radii.
+        const int t = telling[0] ? 0 : 1;
+        if (uppers[t]->support >= kSupportMargin * uppers[1 - t]->support) alive[1 - t] = false;
       }
     }
     if (alive[0] == alive[1]) {
@@ -147,6 +174,11 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
         yaw.hypotheses[other_side].other_missing || (a.yaw > 0) == (b.yaw > 0) || upper_decides;
   }
   const YawHypothesis& h = yaw.hypotheses[pick];
+  if (!(h.left && h.right) && !cal.lower.single_sized) {
+    out.note =
+        "one lower marker shows, and the reference's silhouette is too unsure to size it alone";
+    return out;
+  }
   out.ok = true;
   out.yaw = h.yaw;
   // Two lower markers measure the signed yaw through zero (near zero its sign is as good as its

@@ -22,13 +22,14 @@ double WeakestArmScore(const PoseKeypoints& k, const std::vector<PoseSide>& side
 // with the second as its right_arm.
 ArmMeasurement JoinArms(std::vector<ArmMeasurement> arms);
 
-// One measurement per side of `sides`, each a copy of `frame` (the frame's index, time and notes)
-// that decide(i, &arm) completes: side i's gate deciding its arm's row.
-template <typename Decide>
-ArmMeasurement DecideArms(const std::vector<PoseSide>& sides, const ArmMeasurement& frame,
-                          Decide decide) {
+// Each side's gate decides its arm's row from the frame's `inputs` (the looks; or the landmarks
+// and MoveNet's looks); `frame` carries the frame's index, time and notes into every arm's
+// measurement.
+template <typename Gate, typename... Inputs>
+ArmMeasurement DecideArms(std::vector<Gate>& gates, const std::vector<PoseSide>& sides,
+                          const ArmMeasurement& frame, const Inputs&... inputs) {
   std::vector<ArmMeasurement> arms(sides.size(), frame);
-  for (std::size_t i = 0; i < sides.size(); ++i) decide(i, &arms[i]);
+  for (std::size_t i = 0; i < sides.size(); ++i) gates[i].Decide(inputs..., sides[i], &arms[i]);
   return JoinArms(std::move(arms));
 }
 

@@ -2,8 +2,7 @@
 // in a crop placed by the previous frame's auxiliary landmarks, smoothed (MediaPipe's tracking).
 // The first frame, and any frame after the person was lost, places the crop from MoveNet's
 // keypoints on the whole image and refines it once with BlazePose's own auxiliary landmarks.
-// pose/blaze_gate.h decides each row; with side both, each arm's from the same landmarks and
-// MoveNet looks (pose/arms.h).
+// pose/blaze_gate.h decides each row; with side both, each arm's from the same landmarks.
 #include "armmimic/engines/pose.h"
 #include "common/engine_internal.h"
 #include "pose/arms.h"
@@ -62,9 +61,7 @@ class BlazePoseEngine : public Engine {
     const cv::Point2d offset(area_.tl());
     for (cv::Point2d& p : b.px) p += offset;
     movenet.Shift(offset);
-    return internal::DecideArms(sides_, m, [&](std::size_t i, ArmMeasurement* arm) {
-      gates_[i].Decide(b, movenet, sides_[i], arm);
-    });
+    return internal::DecideArms(gates_, sides_, m, b, movenet);
   }
 
   AngleMeta Describe() const override { return {{"model", internal::kBlazePoseModelName}}; }

@@ -45,9 +45,7 @@ class PoseEngine : public Engine {
     }
     internal::PoseLooks looks = track_->Looks(image, sides_);
     looks.Shift(cv::Point2d(area_.tl()));
-    return internal::DecideArms(sides_, m, [&](std::size_t i, ArmMeasurement* arm) {
-      gates_[i].Decide(looks, sides_[i], arm);
-    });
+    return internal::DecideArms(gates_, sides_, m, looks);
   }
 
   AngleMeta Describe() const override { return {{"model", internal::kPoseModelName}}; }

@@ -1,5 +1,7 @@
 #include "pose/movenet_track.h"
 
+#include <algorithm>
+
 #include "pose/arms.h"
 
 namespace armmimic::internal {
@@ -10,7 +12,8 @@ PoseKeypoints MoveNetTracker::BodyLook(const cv::Mat& image, const std::vector<P
       tracking_ && (crop_.x != whole.x || crop_.y != whole.y || crop_.size != whole.size);
   used_ = cropped ? crop_ : whole;
   body_ = net_->Run(image, used_);
-  if (cropped && sides.front() != PoseSide::kAuto && WeakestArmScore(body_, sides) < o_.min_score) {
+  const bool named = std::find(sides.begin(), sides.end(), PoseSide::kAuto) == sides.end();
+  if (cropped && named && WeakestArmScore(body_, sides) < o_.min_score) {
     // The scores dropped inside the crop: search the whole image again.
     const PoseKeypoints again = net_->Run(image, whole);
     if (WeakestArmScore(again, sides) > WeakestArmScore(body_, sides)) {

@@ -18,10 +18,9 @@ class MoveNetTracker {
  public:
   // `net` is not owned and outlives the tracker.
   MoveNetTracker(PoseNetwork* net, const PoseOptions& options) : net_(net), o_(options) {}
-  // The body look, in `image`'s pixels. With the arms followed named (`sides`: one, or the left
-  // and right with side both), a crop where any of them scores low is searched again whole, and
-  // the look whose weakest arm scores higher is kept; with kAuto (the first frame, always seen
-  // whole) the caller picks the side from the keypoints returned.
+  // The body look, in `image`'s pixels. A crop in which an arm of `sides` dropped below
+  // min_score is searched again whole; with a side still kAuto (the first frame, always seen
+  // whole) the caller picks it from the keypoints returned.
   PoseKeypoints BodyLook(const cv::Mat& image, const std::vector<PoseSide>& sides);
   // The looks at `image` for the arms of `sides`, after BodyLook on the same image; positions in
   // `image`'s pixels.

@@ -48,6 +48,21 @@ std::string SecondOpinion(const PoseLooks& movenet, const PoseKeypoints& blaze,
   const PoseArm m = ArmOf(k, side);
   const PoseArm b = ArmOf(blaze, side);
   const double torso = TorsoPx(k, options.crop_score);
+  // MoveNet's own looks must agree first (its looks' bound, the same measure): an opinion that
+  // is itself unsure bears nothing out.
+  const double sin_looks = std::sin(options.max_disagreement_deg * kDegToRad);
+  for (const PoseKeypoints& look : movenet.closer) {
+    const PoseArm c = ArmOf(look, side);
+    const PoseArm body = ArmOf(movenet.body, side);
+    const double unsure = std::max(
+        Misfit(body.shoulder, body.elbow, c.shoulder, c.elbow, kUpperFloor * torso, sin_looks),
+        Misfit(body.elbow, body.wrist, c.elbow, c.wrist, kForeFloor * torso, sin_looks));
+    if (unsure > 1) {
+      return "MoveNet, the second opinion, is unsure: its looks disagree (" +
+             FormatNumber(unsure, 1) + " times what " +
+             FormatNumber(options.max_disagreement_deg, 0) + " degrees allow)";
+    }
+  }
   const double max_deg = options.max_network_disagreement_deg;
   const double sin_max = std::sin(max_deg * kDegToRad);
   const double upper =

@@ -19,6 +19,8 @@ namespace armmimic::internal {
 // Empty when MoveNet's looks bear out BlazePose's `side` arm `blaze` (keypoints in MoveNet's
 // order, the same pixels as the looks'); otherwise why not, for the row's note:
 //  - MoveNet does not see one of the arm's joints (body look score below min_score);
+//  - MoveNet's own looks disagree (each closer look against the body look, by the measure below
+//    with max_disagreement_deg): the second opinion is itself unsure;
 //  - the shoulder, or the far end of a segment, is farther from MoveNet's than
 //    sin(max_network_disagreement_deg) times the segment's length: for a segment seen at full
 //    length, directions that differ by more than about that bound. The length is at least the

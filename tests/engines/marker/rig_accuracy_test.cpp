@@ -6,9 +6,10 @@
 // (<= 1.5 for the hard set's yaw), and no answered signed yaw more than 5 degrees off: a sign
 // the engine cannot tell is nan. scripts/marker-eval.sh (MARKER_EVAL_MODE=renderers) measures
 // the same on the held-out seeds. The answered share asserted here is what the engine reaches
-// today on these rigs (docs/marker.md, "Two renderers"); rig seeds 502 (a signed yaw 99 degrees
-// off: a single lower marker read as the wrong one after a calibration 7 degrees off in alpha)
-// and 504 (a reference refused) are the known failures of the medium set.
+// today on these rigs (docs/marker.md, "Two renderers"): a view read from one lower marker is
+// lost when the reference cuts a marker at a limb or shows its two lower markers unequal (the
+// calibration's alpha may then be degrees off), as on seeds 502, 505, 602 and 207.
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -24,7 +25,7 @@ namespace {
 
 struct RigTally {
   int views = 0, ok = 0, bends = 0, signed_off = 0, unsigned_rows = 0;
-  double yaw_sum = 0, bend_sum = 0;
+  double yaw_sum = 0, bend_sum = 0, yaw_max = 0;
   std::string log;
   double yaw_mae() const { return ok ? yaw_sum / ok : kNaN; }
   double bend_mae() const { return bends ? bend_sum / bends : kNaN; }
@@ -64,6 +65,7 @@ void RunRig(const std::string& set, uint64_t seed, int views, RigTally* t) {
     }
     ++t->ok;
     t->yaw_sum += std::abs(m.yaw_deg - std::abs(truth.pose.yaw_deg));
+    t->yaw_max = std::max(t->yaw_max, std::abs(m.yaw_deg - std::abs(truth.pose.yaw_deg)));
     if (std::isnan(m.yaw_signed_deg)) {
       ++t->unsigned_rows;
     } else {
@@ -92,16 +94,44 @@ TEST(MarkerRigAccuracy, EasyRigs) {
 TEST(MarkerRigAccuracy, MediumRigs) {
   RigTally t;
   for (uint64_t seed : {501, 503, 505}) RunRig("medium", seed, 5, &t);
-  EXPECT_GE(t.ok, 0.8 * t.views) << t.log;  // the issue asks 27 of 28 (docs/marker.md: not yet)
+  // 27 of 28 are asked for (docs/marker.md: not yet); 505's reference cuts a lower marker.
+  EXPECT_GE(t.ok, t.views - 4) << t.log;
   EXPECT_LE(t.yaw_mae(), 1.0) << t.log;
   EXPECT_LE(t.bend_mae(), 1.0) << t.log;
+  EXPECT_EQ(t.signed_off, 0) << t.log;
+}
+
+// Tuning rigs of the hard set where wall blobs once calibrated the engine (seed 207: a
+// symmetric triple of blobs beside the joint put its "markers" 0.7 radii from the pivot, and
+// every view was lost or 20-100 degrees off; its reference cuts a lower marker, so only its view
+// with both lower markers is read now) and where a single lower marker's side rests on the upper
+// part's silhouette (211, 212: only one side's bend puts the upper part where the image shows
+// it).
+TEST(MarkerRigAccuracy, WallBlobsAndOneMarker) {
+  RigTally t;
+  for (uint64_t seed : {207, 211, 212}) RunRig("hard", seed, 4, &t);
+  EXPECT_GE(t.ok, t.views - 4) << t.log;
+  EXPECT_LE(t.yaw_max, 5) << t.log;
+  EXPECT_LE(t.yaw_mae(), 1.5) << t.log;
+  EXPECT_LE(t.bend_mae(), 1.5) << t.log;
+  EXPECT_EQ(t.signed_off, 0) << t.log;
+}
+
+// A rig whose reference misleads the calibration (seed 502: a faint limb beside one lower marker
+// while the other sits at the far limb; alpha 11 degrees off). Its views read from one lower
+// marker were 10-13 degrees off; they are lost now, and no answer is more than 5 degrees off.
+TEST(MarkerRigAccuracy, UnsureReferenceLosesSingleMarkerViews) {
+  RigTally t;
+  RunRig("medium", 502, 5, &t);
+  EXPECT_GE(t.ok, 2) << t.log;
+  EXPECT_LE(t.yaw_max, 5) << t.log;
   EXPECT_EQ(t.signed_off, 0) << t.log;
 }
 
 TEST(MarkerRigAccuracy, HardRigs) {
   RigTally t;
   for (uint64_t seed : {601, 602, 603}) RunRig("hard", seed, 5, &t);
-  EXPECT_GE(t.ok, t.views - 2) << t.log;
+  EXPECT_GE(t.ok, t.views - 4) << t.log;
   EXPECT_LE(t.yaw_mae(), 1.5) << t.log;
   EXPECT_LE(t.bend_mae(), 1.0) << t.log;
   EXPECT_EQ(t.signed_off, 0) << t.log;

@@ -1,7 +1,7 @@
 // The pose engine with side both: both arms from the same inferences. On generated scenes with
 // known angles (the moving arm on either side of the person), each arm's rows against the truth;
 // on the real clip, each arm against its reference keypoints and against the one-arm runs; with
-// BlazePose, each arm's rows against the one-arm runs'. Compiled in only when the model is there.
+// BlazePose, each arm's rows equal the one-arm runs'. Compiled in only when the model is there.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -106,9 +106,10 @@ struct Agreement {
 };
 
 #if defined(ARMMIMIC_HAVE_BLAZEPOSE_MODEL)
-// BlazePose's own crop does not depend on the arm, but its second opinion, MoveNet's looks, is
-// tracked for the arms followed: each arm's rows are close to the one-arm run's.
-TEST(PoseBothArmsTest, BlazePoseGivesEachArmRowsCloseToTheOneArmRuns) {
+// With BlazePose the crop does not depend on the arm, so the 3-D columns and every row's verdict
+// are the one-arm run's. The 2-D columns are MoveNet's looks (the second opinion), whose arm look
+// holds both arms with side both: within a few degrees of the one-arm run's.
+TEST(PoseBothArmsTest, BlazePoseGivesEachArmTheOneArmRunsRows) {
   synth::ArmSceneOptions o;
   synth::ArmSceneRenderer scene(o);
   PoseOptions pose;
@@ -116,29 +117,26 @@ TEST(PoseBothArmsTest, BlazePoseGivesEachArmRowsCloseToTheOneArmRuns) {
   auto both = test::StartPose(o.size, PoseSide::kBoth, pose);
   auto left = test::StartPose(o.size, PoseSide::kLeft, pose);
   auto right = test::StartPose(o.size, PoseSide::kRight, pose);
-  std::map<PoseSide, Agreement> agreement;
-  for (int i = o.first_motion_frame(); i < o.frame_count(); i += 5) {
+  int ok = 0;
+  for (int i = o.first_motion_frame(); i < o.frame_count(); i += 6) {
     Frame f;
     f.index = i;
-    f.time_s = i / o.fps;
     f.image = scene.Render(i);
     const ArmMeasurement m = both->Process(f);
     for (auto& [side, one] :
          {std::pair{PoseSide::kLeft, left.get()}, {PoseSide::kRight, right.get()}}) {
-      agreement[side].Add(ArmOfBoth(m, side), one->Process(f));
+      const ArmMeasurement& a = ArmOfBoth(m, side);
+      const ArmMeasurement b = one->Process(f);
+      EXPECT_EQ(a.phase, b.phase) << i << " " << PoseSideName(side);
+      if (a.phase != MeasurementPhase::kOk) continue;
+      ++ok;
+      EXPECT_LE(std::abs(AngleDiff(a.upper_deg, b.upper_deg)), 5.0) << i;
+      EXPECT_LE(std::abs(AngleDiff(a.fore_deg, b.fore_deg)), 5.0) << i;
+      EXPECT_EQ(a.elbow_deg, b.elbow_deg) << i;
+      EXPECT_EQ(a.upper_az_deg, b.upper_az_deg) << i;
     }
   }
-  for (PoseSide side : {PoseSide::kLeft, PoseSide::kRight}) {
-    const Agreement& a = agreement[side];
-    ASSERT_FALSE(a.differences.empty()) << PoseSideName(side);
-    std::printf(
-        "BlazePose, side both, %s arm against the one-arm run: %d of %d rows same status, "
-        "differences median %.2f, p90 %.2f, max %.1f\n",
-        PoseSideName(side), a.same_phase, a.rows, Quantile(a.differences, 0.5),
-        Quantile(a.differences, 0.9), Quantile(a.differences, 1.0));
-    EXPECT_GE(a.same_phase, a.rows * 9 / 10) << PoseSideName(side);
-    EXPECT_LE(Quantile(a.differences, 0.5), 1.0) << PoseSideName(side);
-  }
+  EXPECT_GT(ok, 0);
 }
 #endif
 
