@@ -414,6 +414,7 @@ std::vector<std::string> ArmOutputPaths(const AnalysisOptions& options, const st
   std::size_t dot = path.find_last_of('.');
   if (dot == std::string::npos || dot <= name) dot = path.size();  // no extension (or ".tsv")
   std::vector<std::string> paths;
+  paths.reserve(arms.size());
   for (PoseSide side : arms) {
     paths.push_back(path.substr(0, dot) + "." + PoseSideName(side) + path.substr(dot));
   }
