@@ -8,6 +8,9 @@
 //                          (the default), /3: with the mirrored look too (pose.flip=true).
 //   BM_BlazePoseAnalyzeEndToEnd  the same with --network blazepose (one BlazePose inference a
 //                          frame in its tracked crop; the first frame seeds it from MoveNet).
+//   BM_PoseArmsEndToEnd    --side left (/1) against --side both (/2), both arms from the same
+//                          inferences; network/0 MoveNet, network/1 BlazePose (docs/pose.md,
+//                          "Both arms": at most 1.2 times one arm).
 #include <string>
 
 #include <benchmark/benchmark.h>
@@ -67,6 +70,22 @@ void BM_BlazePoseAnalyzeEndToEnd(benchmark::State& state) {
   bench::AnalyzeFile(state, o);
 }
 BENCHMARK(BM_BlazePoseAnalyzeEndToEnd)->Unit(benchmark::kMillisecond);
+
+void BM_PoseArmsEndToEnd(benchmark::State& state) {
+  const synth::ArmSceneOptions so = SceneOptions();
+  AnalysisOptions o;
+  o.inputs = {bench::SceneDir(so) + "/scene.avi"};
+  o.engine.kind = EngineKind::kPose;
+  o.engine.pose.network =
+      state.range(0) == 1 ? PoseNetworkKind::kBlazePose : PoseNetworkKind::kMoveNet;
+  o.engine.pose.side = state.range(1) == 2 ? PoseSide::kBoth : PoseSide::kLeft;
+  o.start = so.first_motion_frame();
+  bench::AnalyzeFile(state, o);
+}
+BENCHMARK(BM_PoseArmsEndToEnd)
+    ->ArgNames({"network", "arms"})
+    ->ArgsProduct({{0, 1}, {1, 2}})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -194,6 +194,13 @@ int RunAnalyze(const std::vector<std::string>& args, const GlobalOptions& global
   }
   if (Status st = o.Check(); !st) return p.UsageError(Worded(st));
   BatchPlan plan;
+  if (!batch && AnalysedArms(o).size() > 1 && std::filesystem::exists(a.output) &&
+      !std::filesystem::is_regular_file(a.output)) {
+    // A device or a pipe holds one stream; the arms' files are named after a file's name.
+    return p.UsageError("-o " + a.output +
+                        " is not a file: --side both writes a file per arm beside a file name "
+                        "(A.tsv gives A.left.tsv and A.right.tsv)");
+  }
   if (!batch) {
     outputs.clear();  // with --side both: A.left.tsv and A.right.tsv
     for (const std::string& path : ArmOutputPaths(o, a.output)) outputs.push_back({"-o", path});

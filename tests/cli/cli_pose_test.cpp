@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -107,6 +108,16 @@ TEST_F(CliPose, SideBothIsThePoseEnginesAndMimicFollowsOneArm) {
   EXPECT_FALSE(std::ifstream(dir_->file("sb.right.tsv")).good());
 }
 
+TEST_F(CliPose, SideBothRefusesAnOutputThatIsNotAFile) {
+  const test::CliResult r = test::RunCli({"analyze", dir_->file("scene.avi"), "-o", "/dev/null",
+                                          "--engine", "pose", "--side", "both"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("-o /dev/null is not a file: --side both writes a file per arm"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::ifstream("/dev/null.left").good());
+}
+
 TEST_F(CliPose, SideBothRefusesAnArmsFileThatIsAnInput) {
   // -o o.avi with side both would write o.left.avi: the input itself.
   const std::string input = dir_->file("o.left.avi");
@@ -186,25 +197,27 @@ TEST_F(CliPose, PoseWritesEveryFrameFromTheStartWithAConfidence) {
   }
 }
 
-// --side both: one file per arm, each a whole angle file whose header is the one-arm run's of
-// that side, and whose rows are close to it (the crop is searched again when either arm drops).
-TEST_F(CliPose, SideBothWritesOneFilePerArmLikeTheOneArmRuns) {
-  const std::string video = dir_->file("scene.avi");
+// --side both with `network` (and `--start 105`): one file per arm, each a whole angle file whose
+// header is the one-arm run's of that side, and whose rows are close to it (MoveNet's crop, also
+// BlazePose's second opinion, is searched again when either arm drops in it).
+void ExpectEachArmLikeItsOneArmRun(const std::string& video, const std::string& dir,
+                                   const std::string& network) {
   auto run = [&](const std::string& out, const std::string& side) {
-    return test::RunCli(
-        {"analyze", video, "-o", out, "--engine", "pose", "--side", side, "--start", "105"});
+    return test::RunCli({"analyze", video, "-o", out, "--engine", "pose", "--network", network,
+                         "--side", side, "--start", "105"});
   };
-  const test::CliResult r = run(dir_->file("arms.tsv"), "both");
+  const test::CliResult r = run(dir + "/arms.tsv", "both");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("12 rows per arm from scene.avi"), std::string::npos) << r.err;
-  EXPECT_FALSE(std::ifstream(dir_->file("arms.tsv")).good());
+  EXPECT_FALSE(std::ifstream(dir + "/arms.tsv").good());
   for (const std::string side : {"left", "right"}) {
-    ASSERT_EQ(run(dir_->file("one." + side + ".tsv"), side).exit_code, 0);
+    ASSERT_EQ(run(dir + "/one." + side + ".tsv", side).exit_code, 0);
     AngleFile both, one;
-    ASSERT_TRUE(ReadAngleFile(dir_->file("arms." + side + ".tsv"), &both).ok()) << side;
-    ASSERT_TRUE(ReadAngleFile(dir_->file("one." + side + ".tsv"), &one).ok()) << side;
+    ASSERT_TRUE(ReadAngleFile(dir + "/arms." + side + ".tsv", &both).ok()) << side;
+    ASSERT_TRUE(ReadAngleFile(dir + "/one." + side + ".tsv", &one).ok()) << side;
     EXPECT_EQ(both.meta, one.meta) << side;
     EXPECT_EQ(both.Meta("pose.side"), side);
+    EXPECT_EQ(both.Meta("pose.network"), network);
     EXPECT_TRUE(both.has_confidence_column);
     ASSERT_EQ(both.rows.size(), 12u) << side;
     ASSERT_EQ(one.rows.size(), 12u) << side;
@@ -219,6 +232,12 @@ TEST_F(CliPose, SideBothWritesOneFilePerArmLikeTheOneArmRuns) {
     }
     EXPECT_GE(same_status, 11) << side;
   }
+}
+
+TEST_F(CliPose, SideBothWritesOneFilePerArmLikeTheOneArmRuns) {
+  const std::string dir = dir_->file("movenet-arms");
+  std::filesystem::create_directories(dir);
+  ExpectEachArmLikeItsOneArmRun(dir_->file("scene.avi"), dir, "movenet");
 }
 
 // A batch with --side both: NAME.left.tsv and NAME.right.tsv, a summary line for each.
