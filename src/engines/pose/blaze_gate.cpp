@@ -43,14 +43,7 @@ std::array<cv::Vec3d, 3> BlazeArmGate::Smooth(double time_s,
 void BlazeArmGate::Decide(const BlazeLandmarks& b, const PoseLooks& movenet, PoseSide side,
                           ArmMeasurement* m) {
   const PoseKeypoints k = AsMoveNetKeypoints(b);
-  // Where MoveNet's upper arm turns is learnt from every frame in which MoveNet sees the arm,
-  // whatever BlazePose's rules decide of the row.
-  const PoseKeypoints seen = movenet.Combined();
-  const PoseArm movenet_arm = ArmOf(seen, side);
-  cv::Point2d movenet_shoulder = movenet_arm.shoulder;
-  if (ArmOf(movenet.body, side).score >= o_.min_score && !Mirrored(seen, o_.min_score)) {
-    movenet_shoulder = PivotShoulder(seen, movenet_arm, o_.crop_score, &pivot_);
-  }
+  const PoseArm movenet_arm = ArmOf(movenet.Combined(), side);
   m->pose_keypoints.assign(k.px.begin(), k.px.end());
   m->pose_scores.assign(k.score.begin(), k.score.end());
   const bool left = side == PoseSide::kLeft;
@@ -105,7 +98,7 @@ void BlazeArmGate::Decide(const BlazeLandmarks& b, const PoseLooks& movenet, Pos
   // The 2-D columns, and the joints drawn, are MoveNet's: its closer looks place the joints at
   // about twice BlazePose's resolution in the image. The 3-D columns are BlazePose's. The two
   // agree within max_network_disagreement_deg (SecondOpinion).
-  SetArmDirections(movenet_arm, movenet_shoulder, m);
+  SetArmDirections(movenet_arm, m);
   AzimuthElevationDeg(world[0], world[1], &m->upper_az_deg, &m->upper_el_deg);
   AzimuthElevationDeg(world[1], world[2], &m->fore_az_deg, &m->fore_el_deg);
   m->elbow_deg = JointAngleDeg(world[0], world[1], world[2]);

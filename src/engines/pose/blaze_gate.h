@@ -14,7 +14,6 @@
 #include "pose/blazepose.h"
 #include "pose/looks.h"
 #include "pose/one_euro.h"
-#include "pose/shoulder_pivot.h"
 
 namespace armmimic::internal {
 
@@ -53,7 +52,6 @@ class BlazeArmGate {
   std::vector<OneEuroFilter> world_filters_;
   BoneLengthGate upper_;
   BoneLengthGate fore_;
-  ShoulderPivot pivot_;  // where MoveNet's upper arm turns
 };
 
 }  // namespace armmimic::internal

@@ -90,17 +90,11 @@ void PoseArmGate::Decide(const PoseLooks& looks, PoseSide side, ArmMeasurement* 
     return;
   }
   m->phase = MeasurementPhase::kOk;
-  SetArmDirections(arm, PivotShoulder(k, arm, o_.crop_score, &pivot_), m);
+  SetArmDirections(arm, m);
 }
 
-cv::Point2d PivotShoulder(const PoseKeypoints& k, const PoseArm& arm, double torso_score,
-                          ShoulderPivot* pivot) {
-  if (TorsoPx(k, torso_score) <= 0) return arm.shoulder;
-  return pivot->Add(arm.shoulder, arm.elbow, (k.px[kLeftHip] + k.px[kRightHip]) * 0.5,
-                    (k.px[kLeftShoulder] + k.px[kRightShoulder]) * 0.5);
-}
-
-void SetArmDirections(const PoseArm& arm, const cv::Point2d& shoulder, ArmMeasurement* m) {
+void SetArmDirections(const PoseArm& arm, ArmMeasurement* m) {
+  const cv::Point2d& shoulder = arm.shoulder;
   m->shoulder_px = shoulder;
   m->elbow_px = arm.elbow;
   m->wrist_px = arm.wrist;

@@ -6,8 +6,7 @@
 //    the lengths seen so far (the last kWindow frames), never less than an anthropometric floor.
 //  - PoseArmGate: one arm's row from a frame's looks: lost when a joint is not seen, the
 //    shoulders are mirrored (the network's left is not the person's), a segment points at the
-//    camera, or the looks disagree on a segment's direction; an ok row's upper arm is measured
-//    from the shoulder's pivot once it is known (pose/shoulder_pivot.h).
+//    camera, or the looks disagree on a segment's direction.
 #pragma once
 
 #include <vector>
@@ -15,7 +14,6 @@
 #include "armmimic/engines/measurement.h"
 #include "armmimic/engines/pose_options.h"
 #include "pose/looks.h"
-#include "pose/shoulder_pivot.h"
 
 namespace armmimic::internal {
 
@@ -34,13 +32,8 @@ double TorsoPx(const PoseKeypoints& k, double min_score);
 // joints on the other arm. Either way the row would name the wrong arm.
 bool Mirrored(const PoseKeypoints& k, double min_score);
 
-// Adds a frame's `arm` (joints of `k`) to `pivot` and returns the point to measure the upper
-// arm from: the shoulder's pivot where `pivot` knows it (pose/shoulder_pivot.h), the shoulder
-// keypoint otherwise, and always when `k`'s torso is not scored at least `torso_score`.
-cv::Point2d PivotShoulder(const PoseKeypoints& k, const PoseArm& arm, double torso_score,
-                          ShoulderPivot* pivot);
-// An ok row's joints and 2-D columns from `arm`, its upper arm measured from `shoulder`.
-void SetArmDirections(const PoseArm& arm, const cv::Point2d& shoulder, ArmMeasurement* m);
+// An ok row's joints and 2-D columns from `arm`.
+void SetArmDirections(const PoseArm& arm, ArmMeasurement* m);
 
 class PoseLengthGate {
  public:
@@ -72,7 +65,6 @@ class PoseArmGate {
   PoseOptions o_;
   PoseLengthGate upper_;
   PoseLengthGate fore_;
-  ShoulderPivot pivot_;
 };
 
 }  // namespace armmimic::internal
