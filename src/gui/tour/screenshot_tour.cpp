@@ -402,6 +402,18 @@ int main(int argc, char** argv) {
     Wait([&] { return w.view()->frameIndex() == 30; });
     Shot("20-real-blazepose-3d");
     robot_dock_3d->setFloating(false);
+    // Both arms from one pass of the network: the overlay draws both, and the arm picked on the
+    // angle panel (here the right) is the one the plot, the overlay's angles and the robot follow.
+    p.engine.pose.network = armmimic::PoseNetworkKind::kMoveNet;
+    p.engine.pose.side = armmimic::PoseSide::kBoth;
+    w.settingsPanel()->setOptions(p);
+    w.startAnalysis();
+    if (!Wait([&] { return !w.job()->isRunning(); }, 300000)) return 1;
+    w.findChild<QDockWidget*>("plotDock")->raise();
+    w.findChild<QComboBox*>("armPick")->setCurrentIndex(1);
+    w.player()->seek(30);
+    Wait([&] { return w.view()->frameIndex() == 30; });
+    Shot("21-real-both-arms");
   }
   // Closing with results in no exported file asks first.
   ShotOfDialog<QMessageBox>(
