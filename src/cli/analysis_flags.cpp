@@ -71,7 +71,7 @@ RowFlagWords For(const char* engines, const char* metavar = "") {
 
 }  // namespace
 
-void AnalysisFlags::Register(ArgParser& p) {
+void AnalysisFlags::Register(ArgParser& p, bool both_arms) {
   AnalysisOptions& f = f_;
   EngineOptions& e = f.engine;
   p.String("--engine", &engine_name_, "NAME", "bgsub, lk, marker or pose (required)");
@@ -126,8 +126,11 @@ void AnalysisFlags::Register(ArgParser& p) {
   {
     // Read after the engine is known (CheckFor): lk takes it only with --auto-calibrate.
     const auto& side = Row(PoseOptionFields(), "side");
-    p.String(side.flag, &side_name_, "left|right|both",
-             RowHelp(side, For("pose, lk --auto-calibrate (left or right)")));
+    RowFlagWords words = For("pose, lk --auto-calibrate (left or right)");
+    if (!both_arms)
+      words.help = "the person's own arm (auto: the better seen over the first second)";
+    p.String(side.flag, &side_name_, both_arms ? "left|right|both" : "left|right",
+             RowHelp(side, words));
   }
   AddRowFlag(p, Row(PoseOptionFields(), "network"), &e.pose, For("pose"));
   p.String("--model", &f.model_dir, "DIR",

@@ -18,8 +18,10 @@ namespace armmimic::cli {
 
 class AnalysisFlags {
  public:
-  // Adds --engine and every engine flag to `p` (not the inputs or -o).
-  void Register(ArgParser& p);
+  // Adds --engine and every engine flag to `p` (not the inputs or -o). `both_arms`: --side
+  // offers both (analyze); mimic, where one robot follows one arm, names left or right only in
+  // its help (it refuses both with a message).
+  void Register(ArgParser& p, bool both_arms = true);
 
   const std::string& engine_name() const { return engine_name_; }
   // The values of the flags (the inputs they name: --background, --model, ...).

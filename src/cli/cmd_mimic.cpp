@@ -120,7 +120,7 @@ std::optional<int> ParseMimic(const std::vector<std::string>& args, MimicSetup* 
   p.String("--stream", &stream_url, "URL", "analyse a network stream (rtsp://, http://)");
   p.String("-o,--output", &m->output, "ANGLES.tsv",
            "the angle file to write (default mimic-DATE-TIME.tsv)");
-  analysis_flags.Register(p);
+  analysis_flags.Register(p, /*both_arms=*/false);
   AddPortFlags(p, &m->port);
   p.Flag("--dry-run", &m->dry_run, "print the commands with their times; open no port");
   AddRowFlag(p, *FindOptionField(robot::SendOptionFields(), "profile_path"), &send,
