@@ -43,7 +43,6 @@ std::array<cv::Vec3d, 3> BlazeArmGate::Smooth(double time_s,
 void BlazeArmGate::Decide(const BlazeLandmarks& b, const PoseLooks& movenet, PoseSide side,
                           ArmMeasurement* m) {
   const PoseKeypoints k = AsMoveNetKeypoints(b);
-  const PoseArm movenet_arm = ArmOf(movenet.Combined(), side);
   m->pose_keypoints.assign(k.px.begin(), k.px.end());
   m->pose_scores.assign(k.score.begin(), k.score.end());
   const bool left = side == PoseSide::kLeft;
@@ -98,7 +97,7 @@ void BlazeArmGate::Decide(const BlazeLandmarks& b, const PoseLooks& movenet, Pos
   // The 2-D columns, and the joints drawn, are MoveNet's: its closer looks place the joints at
   // about twice BlazePose's resolution in the image. The 3-D columns are BlazePose's. The two
   // agree within max_network_disagreement_deg (SecondOpinion).
-  SetArmDirections(movenet_arm, m);
+  SetArmDirections(ArmOf(movenet.Combined(), side), m);
   AzimuthElevationDeg(world[0], world[1], &m->upper_az_deg, &m->upper_el_deg);
   AzimuthElevationDeg(world[1], world[2], &m->fore_az_deg, &m->fore_el_deg);
   m->elbow_deg = JointAngleDeg(world[0], world[1], world[2]);

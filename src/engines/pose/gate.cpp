@@ -94,14 +94,13 @@ void PoseArmGate::Decide(const PoseLooks& looks, PoseSide side, ArmMeasurement* 
 }
 
 void SetArmDirections(const PoseArm& arm, ArmMeasurement* m) {
-  const cv::Point2d& shoulder = arm.shoulder;
-  m->shoulder_px = shoulder;
+  m->shoulder_px = arm.shoulder;
   m->elbow_px = arm.elbow;
   m->wrist_px = arm.wrist;
-  m->upper_deg = DirectionDeg(shoulder, arm.elbow);
+  m->upper_deg = DirectionDeg(arm.shoulder, arm.elbow);
   m->fore_deg = DirectionDeg(arm.elbow, arm.wrist);
   m->bend_deg = Wrap180(m->fore_deg - m->upper_deg);
-  m->upper_com_px = (shoulder + arm.elbow) * 0.5;
+  m->upper_com_px = (arm.shoulder + arm.elbow) * 0.5;
   m->fore_com_px = (arm.elbow + arm.wrist) * 0.5;
   m->bent = std::abs(m->bend_deg) > 20;
 }

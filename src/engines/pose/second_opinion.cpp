@@ -11,15 +11,14 @@ namespace {
 
 constexpr double kDegToRad = M_PI / 180;
 
-// How far BlazePose's `blaze_to` is from MoveNet's `movenet_to` once both segments start at
-// MoveNet's `from`, over what is allowed for a segment of that length; > 1 disagrees.
-double Misfit(const cv::Point2d& movenet_from, const cv::Point2d& movenet_to,
-              const cv::Point2d& blaze_from, const cv::Point2d& blaze_to, double floor_px,
-              double sin_max) {
-  const cv::Point2d vm = movenet_to - movenet_from;
-  const cv::Point2d vb = blaze_to - blaze_from;
-  const double length = std::max({cv::norm(vm), cv::norm(vb), floor_px});
-  return length > 0 ? cv::norm(vb - vm) / (sin_max * length) : 0;
+// How far segment b's far end is from segment a's once both start at a's near end, over what is
+// allowed for a segment of that length (at least `floor_px`): sin_max times it; > 1 disagrees.
+double Misfit(const cv::Point2d& a_from, const cv::Point2d& a_to, const cv::Point2d& b_from,
+              const cv::Point2d& b_to, double floor_px, double sin_max) {
+  const cv::Point2d va = a_to - a_from;
+  const cv::Point2d vb = b_to - b_from;
+  const double length = std::max({cv::norm(va), cv::norm(vb), floor_px});
+  return length > 0 ? cv::norm(vb - va) / (sin_max * length) : 0;
 }
 
 // How far the 3-D segment `world` (x right, y down, z away from the camera) turns from the image
@@ -53,10 +52,9 @@ std::string SecondOpinion(const PoseLooks& movenet, const PoseKeypoints& blaze,
   const double sin_looks = std::sin(options.max_disagreement_deg * kDegToRad);
   for (const PoseKeypoints& look : movenet.closer) {
     const PoseArm c = ArmOf(look, side);
-    const PoseArm body = ArmOf(movenet.body, side);
     const double unsure = std::max(
-        Misfit(body.shoulder, body.elbow, c.shoulder, c.elbow, kUpperFloor * torso, sin_looks),
-        Misfit(body.elbow, body.wrist, c.elbow, c.wrist, kForeFloor * torso, sin_looks));
+        Misfit(seen.shoulder, seen.elbow, c.shoulder, c.elbow, kUpperFloor * torso, sin_looks),
+        Misfit(seen.elbow, seen.wrist, c.elbow, c.wrist, kForeFloor * torso, sin_looks));
     if (unsure > 1) {
       return "MoveNet, the second opinion, is unsure: its looks disagree (" +
              FormatNumber(unsure, 1) + " times what " +
