@@ -15,6 +15,7 @@
 #include "armmimic/engines/engine.h"
 #include "armmimic/engines/pose.h"
 #include "armmimic/synth/arm_scene.h"
+#include "reference_directions.h"
 #include "start_pose.h"
 
 #ifdef ARMMIMIC_HAVE_POSE_MODEL
@@ -141,26 +142,6 @@ TEST(PoseBothArmsTest, BlazePoseGivesEachArmTheOneArmRunsRows) {
 #endif
 
 #ifdef ARMMIMIC_REAL_DIR
-// Per frame: left upper and fore, right upper and fore (pose_squats.keypoints.tsv columns 14-17).
-std::map<int, std::array<double, 4>> ReadReferenceDirections(const std::string& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in) << path;
-  std::map<int, std::array<double, 4>> ref;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line.rfind("frame", 0) == 0) continue;
-    std::istringstream fields(line);
-    int frame;
-    double v;
-    fields >> frame;
-    for (int i = 0; i < 12; ++i) fields >> v;  // the joints' pixels
-    std::array<double, 4> deg{};
-    for (double& d : deg) fields >> d;
-    ref[frame] = deg;
-  }
-  return ref;
-}
-
 // The real clip, both arms in one pass: the accuracy goal of the one-arm runs over both arms
 // (median <= 5, p90 <= 12, coverage >= 80 %, at most 2 % of ok segments more than 30 off)
 // against the reference keypoints, and each arm's rows close to its one-arm run's (the crop is
@@ -168,7 +149,7 @@ std::map<int, std::array<double, 4>> ReadReferenceDirections(const std::string& 
 // one-arm run's).
 TEST(PoseBothArmsTest, MeetsTheAccuracyGoalOnTheRealClipAndAgreesWithOneArmRuns) {
   const std::string dir = ARMMIMIC_REAL_DIR;
-  const auto ref = ReadReferenceDirections(dir + "/pose_squats.keypoints.tsv");
+  const auto ref = test::ReadReferenceDirections(dir + "/pose_squats.keypoints.tsv");
   Status st;
   auto video = VideoSource::Open(dir + "/pose_squats.mp4", &st);
   ASSERT_TRUE(video) << st.message();

@@ -16,6 +16,7 @@
 #include "armmimic/engines/engine.h"
 #include "armmimic/engines/pose.h"
 #include "armmimic/synth/arm_scene.h"
+#include "reference_directions.h"
 #include "start_pose.h"
 #include "test_util.h"
 
@@ -219,34 +220,12 @@ TEST(PoseEngineTest, TheMirroredLookKeepsTheGeneratedArmsDirections) {
 }
 
 #ifdef ARMMIMIC_REAL_DIR
-// The reference directions of pose_squats.keypoints.tsv: per frame, left upper and fore, right
-// upper and fore (its columns 14-17).
-std::map<int, std::array<double, 4>> ReadReferenceDirections(const std::string& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in) << path;
-  std::map<int, std::array<double, 4>> ref;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line.rfind("frame", 0) == 0) continue;
-    std::istringstream fields(line);
-    int frame;
-    double v;
-    fields >> frame;
-    for (int i = 0; i < 12; ++i) fields >> v;  // the joints' pixels
-    std::array<double, 4> deg{};
-    for (double& d : deg) fields >> d;
-    EXPECT_TRUE(fields) << path << ": frame " << frame;
-    ref[frame] = deg;
-  }
-  return ref;
-}
-
 // The accuracy goal on the real clip, both arms, against the other network's keypoints
 // (which disagree with any network by 4-7 degrees on ordinary frames): median <= 5, p90 <= 12
 // over ok segments, coverage >= 80 %, at most 2 % of ok segments more than 30 degrees off.
 TEST(PoseEngineTest, MeetsTheAccuracyGoalOnTheRealClip) {
   const std::string dir = ARMMIMIC_REAL_DIR;
-  const auto ref = ReadReferenceDirections(dir + "/pose_squats.keypoints.tsv");
+  const auto ref = test::ReadReferenceDirections(dir + "/pose_squats.keypoints.tsv");
   std::vector<double> errors;
   int segments = 0;
   for (PoseSide side : {PoseSide::kLeft, PoseSide::kRight}) {
