@@ -35,11 +35,8 @@ class ArmPickTest : public GuiTest {
  protected:
   // Opens the arm scene and analyses its motion with the pose engine, side both.
   void AnalyzeBothArms(MainWindow& w) {
-    w.resize(1200, 800);
-    w.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
-    w.openInputs({QString::fromStdString(scenes().video())});
-    ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen() && !w.view()->image().isNull(); }));
+    ShowAndOpen(w);
+    if (HasFatalFailure()) return;
     AnalysisOptions o;
     o.engine.kind = EngineKind::kPose;
     o.engine.pose.side = PoseSide::kBoth;

@@ -26,20 +26,11 @@ namespace {
 
 using gui::MainWindow;
 
-class FieldErrorTest : public GuiTest {
- protected:
-  void Open(MainWindow& w) {
-    w.resize(1200, 800);
-    w.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
-    w.openInputs({QString::fromStdString(scenes().video())});
-    ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen() && !w.view()->image().isNull(); }));
-  }
-};
+class FieldErrorTest : public GuiTest {};
 
 TEST_F(FieldErrorTest, ABgsubRunWithoutAnArmLengthImageFramesThatField) {
   MainWindow w;
-  Open(w);
+  ShowAndOpen(w);
   AnalysisOptions o = scenes().BgsubProtocol();
   o.arm_length_path.clear();
   w.settingsPanel()->setOptions(o);
@@ -70,7 +61,7 @@ TEST_F(FieldErrorTest, ABgsubRunWithoutAnArmLengthImageFramesThatField) {
 
 TEST_F(FieldErrorTest, AnLkRunWithNeitherBackgroundNorShoulderFramesTheShoulderBox) {
   MainWindow w;
-  Open(w);
+  ShowAndOpen(w);
   AnalysisOptions o;
   o.engine.kind = EngineKind::kLk;
   w.settingsPanel()->setOptions(o);  // no background, no shoulder
@@ -89,7 +80,7 @@ TEST_F(FieldErrorTest, AnLkRunWithNeitherBackgroundNorShoulderFramesTheShoulderB
 
 TEST_F(FieldErrorTest, AnArmLengthImageOfTheWrongSizeFramesThatFieldAfterTheRun) {
   MainWindow w;
-  Open(w);
+  ShowAndOpen(w);
   const std::string small = tmp_.file("small.png");
   ASSERT_TRUE(WriteImageAtomically(small, cv::Mat(10, 10, CV_8UC3, cv::Scalar::all(0))).ok());
   AnalysisOptions o = scenes().BgsubProtocol();

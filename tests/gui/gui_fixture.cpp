@@ -129,14 +129,19 @@ void GuiTest::Wheel(QWidget* w, int delta) {
   }
 }
 
-void GuiTest::ShowAndAnalyze(gui::MainWindow& w) {
+void GuiTest::ShowAndOpen(gui::MainWindow& w) {
   w.resize(1200, 800);
   w.show();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
-  const GuiScenes& s = scenes();
-  w.openInputs({QString::fromStdString(s.video())});
-  ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen() && !w.view()->image().isNull(); }));
-  w.settingsPanel()->setOptions(s.BgsubProtocol());
+  w.openInputs({QString::fromStdString(scenes().video())});
+  ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen() && !w.view()->image().isNull(); }))
+      << w.log()->text().toStdString();
+}
+
+void GuiTest::ShowAndAnalyze(gui::MainWindow& w) {
+  ShowAndOpen(w);
+  if (HasFatalFailure()) return;
+  w.settingsPanel()->setOptions(scenes().BgsubProtocol());
   ASSERT_TRUE(w.startAnalysis()) << w.log()->text().toStdString();
   ASSERT_TRUE(WaitUntil([&] { return !w.job()->isRunning(); }, 60000));
   ASSERT_FALSE(w.job()->resultPath().isEmpty()) << w.log()->text().toStdString();

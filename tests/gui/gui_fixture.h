@@ -53,8 +53,11 @@ class GuiTest : public ::testing::Test {
   // One notch of the mouse wheel (down for negative `delta`) over the middle of `w`, delivered
   // as the window system does: to `w`, and on to its parents when `w` ignores it.
   static void Wheel(QWidget* w, int delta = 120);
-  // Shows `w` (1200 x 800), opens the arm scene and analyses it with bgsub in the thesis
-  // protocol; fails the test when any step does not happen.
+  // Shows `w` (1200 x 800) and opens the arm scene, waiting for its first frame; fails the test
+  // when either does not happen.
+  static void ShowAndOpen(gui::MainWindow& w);
+  // ShowAndOpen, then analyses the scene with bgsub in the thesis protocol; fails the test when
+  // any step does not happen.
   static void ShowAndAnalyze(gui::MainWindow& w);
   // Runs `action` while a modal dialog of class `D` it opens is answered by `answer` (called
   // with the dialog once it shows). Returns whether the dialog showed.

@@ -39,14 +39,6 @@ using gui::MainWindow;
 
 class WindowTest : public GuiTest {
  protected:
-  void Open(MainWindow& w) {
-    w.resize(1200, 800);
-    w.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
-    w.openInputs({QString::fromStdString(scenes().video())});
-    ASSERT_TRUE(WaitUntil([&] { return w.player()->isOpen() && !w.view()->image().isNull(); }))
-        << w.log()->text().toStdString();
-  }
   int total() const {
     return scenes().background_frames + scenes().standstill_frames + scenes().motion_frames;
   }
@@ -54,7 +46,7 @@ class WindowTest : public GuiTest {
 
 TEST_F(WindowTest, KeysStepSeekAndPlay) {
   MainWindow w;
-  Open(w);
+  ShowAndOpen(w);
   EXPECT_EQ(w.player()->frameCount(), total());
   EXPECT_EQ(w.view()->frameIndex(), 0);
   w.view()->setFocus();
@@ -82,7 +74,7 @@ TEST_F(WindowTest, KeysStepSeekAndPlay) {
 
 TEST_F(WindowTest, RoiAndShoulderToolsFillTheAnalysisOptions) {
   MainWindow w;
-  Open(w);
+  ShowAndOpen(w);
   gui::VideoView* v = w.view();
   w.actions()->toolRoi->trigger();
   const QPoint a = v->toWidget(QPointF(100, 50)).toPoint();
@@ -131,7 +123,7 @@ TEST_F(WindowTest, RoiAndShoulderToolsFillTheAnalysisOptions) {
 // that --shoulder/--elbow/--wrist give the tracking engine.
 TEST_F(WindowTest, TheJointsToolClicksShoulderElbowAndWrist) {
   MainWindow w;
-  Open(w);
+  ShowAndOpen(w);
   auto* engine = w.settingsPanel()->findChild<QComboBox*>("engineCombo");
   engine->setCurrentIndex(engine->findData(int(EngineKind::kLk)));
   gui::VideoView* v = w.view();
@@ -159,7 +151,7 @@ TEST_F(WindowTest, TheJointsToolClicksShoulderElbowAndWrist) {
 // the generated person, near the truth.
 TEST_F(WindowTest, AutoCalibrateFillsTheJointsFromThePoseNetwork) {
   MainWindow w;
-  Open(w);
+  ShowAndOpen(w);
   auto* engine = w.settingsPanel()->findChild<QComboBox*>("engineCombo");
   engine->setCurrentIndex(engine->findData(int(EngineKind::kLk)));
   const int start = scenes().background_frames + scenes().standstill_frames;
@@ -181,7 +173,7 @@ TEST_F(WindowTest, AutoCalibrateFillsTheJointsFromThePoseNetwork) {
 
 TEST_F(WindowTest, SaveFrameWritesTheOverlayAtVideoResolution) {
   MainWindow w;
-  Open(w);
+  ShowAndOpen(w);
   const QString path = QString::fromStdString(tmp_.file("frame.png"));
   ASSERT_TRUE(w.saveFrame(path)) << w.log()->text().toStdString();
   const QImage saved(path);
@@ -221,7 +213,7 @@ TEST_F(WindowTest, EveryActionHasAMenuEntryAndShortcutsAreUnique) {
 TEST_F(WindowTest, SettingsAndRecentFilesAreRemembered) {
   {
     MainWindow w;
-    Open(w);
+    ShowAndOpen(w);
     AnalysisOptions o = w.settingsPanel()->options();
     o.engine.kind = EngineKind::kLk;
     o.engine.bgsub.threshold = 61;
