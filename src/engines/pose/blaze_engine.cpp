@@ -61,7 +61,7 @@ class BlazePoseEngine : public Engine {
     const cv::Point2d offset(area_.tl());
     for (cv::Point2d& p : b.px) p += offset;
     movenet.Shift(offset);
-    return internal::DecideArms(gates_, sides_, m, b, movenet);
+    return internal::DecideArms(gates_, sides_, m, b, movenet, frame.image.size());
   }
 
   AngleMeta Describe() const override { return {{"model", internal::kBlazePoseModelName}}; }

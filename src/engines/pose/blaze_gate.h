@@ -41,8 +41,9 @@ class BlazeArmGate {
   // Fills m from the landmarks of one frame for `side`'s arm (image pixels already in the full
   // frame): keypoints, joints and confidence always; then the angles (phase ok) or phase lost
   // with a note saying which rule decided. `movenet`: MoveNet's looks at the same frame, in the
-  // same pixels (pose/second_opinion.h).
-  void Decide(const BlazeLandmarks& b, const PoseLooks& movenet, PoseSide side, ArmMeasurement* m);
+  // same pixels (pose/second_opinion.h); `frame`: the whole frame's size.
+  void Decide(const BlazeLandmarks& b, const PoseLooks& movenet, const cv::Size& frame,
+              PoseSide side, ArmMeasurement* m);
 
  private:
   // The arm's world landmarks smoothed over time (MediaPipe's filter: see blaze_gate.cpp).

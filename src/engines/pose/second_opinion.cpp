@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "armmimic/core/angle_file.h"
 #include "pose/gate.h"
@@ -10,6 +11,10 @@ namespace armmimic::internal {
 namespace {
 
 constexpr double kDegToRad = M_PI / 180;
+// The widest camera the 3-D check allows for (across the frame's long side), and how many focal
+// lengths it tries between that and an orthographic camera.
+constexpr double kMaxFieldOfViewDeg = 90;
+constexpr int kFocalSteps = 8;
 
 // How far segment b's far end is from segment a's once both start at a's near end, over what is
 // allowed for a segment of that length (at least `floor_px`): sin_max times it; > 1 disagrees.
@@ -21,23 +26,41 @@ double Misfit(const cv::Point2d& a_from, const cv::Point2d& a_to, const cv::Poin
   return length > 0 ? cv::norm(vb - va) / (sin_max * length) : 0;
 }
 
-// How far the 3-D segment `world` (x right, y down, z away from the camera) turns from the image
-// segment `image` in the image plane, over what is allowed: the chord between their in-plane
-// unit directions, weighted by the share of the 3-D segment that lies in the image plane (a
-// segment pointing at the camera has no in-plane direction to disagree with), over the chord of
-// max_deg. > 1 disagrees.
-double PlaneMisfit(const cv::Vec3d& world, const cv::Point2d& image, double chord_max) {
-  const cv::Point2d in_plane(world[0], world[1]);
-  const double length = cv::norm(world), plane = cv::norm(in_plane), seen = cv::norm(image);
-  if (length <= 0 || plane <= 0 || seen <= 0) return 0;
-  return (plane / length) * cv::norm(in_plane / plane - image / seen) / chord_max;
+// How far the 3-D segment `world` (x right, y down, z away from the camera, metres), starting at
+// image pixel `start`, turns from the image segment `image` in the image plane, over what is
+// allowed. A camera projects a segment d that starts where the ray (a, 1) meets it along
+// d_xy - a * d_z (a: the start's image offset from the principal point over the focal length),
+// so a segment that leaves the optical axis towards or away from the camera turns in the image.
+// BlazePose's world frame is the camera's turned to its axes but drawn without perspective, and
+// the camera's focal length is unknown: the misfit is the least over focal lengths from a
+// field of view of kMaxFieldOfViewDeg across the frame's long side to none (orthographic). It is
+// the chord between the in-plane unit directions, weighted by the share of the segment that
+// lies in the image plane (a segment pointing at the camera has no in-plane direction to disagree
+// with), over the chord of max_deg. > 1 disagrees.
+double PlaneMisfit(const cv::Vec3d& world, const cv::Point2d& start, const cv::Point2d& image,
+                   const cv::Size& frame, double chord_max) {
+  const double length = cv::norm(world), seen = cv::norm(image);
+  if (length <= 0 || seen <= 0) return 0;
+  const cv::Point2d centre(frame.width / 2.0, frame.height / 2.0);
+  const double max_inverse_focal =
+      2 * std::tan(kMaxFieldOfViewDeg * kDegToRad / 2) / std::max(frame.width, frame.height);
+  double least = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= kFocalSteps; ++i) {
+    const cv::Point2d a = (start - centre) * (max_inverse_focal * i / kFocalSteps);
+    const cv::Point2d in_plane(world[0] - a.x * world[2], world[1] - a.y * world[2]);
+    const double plane = cv::norm(in_plane);
+    if (plane <= 0) return 0;
+    least = std::min(least, std::min(plane / length, 1.0) *
+                                cv::norm(in_plane / plane - image / seen) / chord_max);
+  }
+  return least;
 }
 
 }  // namespace
 
 std::string SecondOpinion(const PoseLooks& movenet, const PoseKeypoints& blaze,
-                          const std::array<cv::Vec3d, 3>& world, PoseSide side,
-                          const PoseOptions& options) {
+                          const std::array<cv::Vec3d, 3>& world, const cv::Size& frame,
+                          PoseSide side, const PoseOptions& options) {
   const PoseArm seen = ArmOf(movenet.body, side);
   if (seen.score < options.min_score) {
     return "MoveNet, the second opinion, does not see the arm (score " +
@@ -70,8 +93,8 @@ std::string SecondOpinion(const PoseLooks& movenet, const PoseKeypoints& blaze,
   const double shoulder = cv::norm(b.shoulder - m.shoulder) /
                           (sin_max * std::max(cv::norm(m.elbow - m.shoulder), kUpperFloor * torso));
   const double chord_max = 2 * std::sin(max_deg * kDegToRad / 2);
-  const double upper_3d = PlaneMisfit(world[1] - world[0], m.elbow - m.shoulder, chord_max);
-  const double fore_3d = PlaneMisfit(world[2] - world[1], m.wrist - m.elbow, chord_max);
+  const double upper_3d = PlaneMisfit(world[1] - world[0], m.shoulder, m.elbow - m.shoulder, frame, chord_max);
+  const double fore_3d = PlaneMisfit(world[2] - world[1], m.elbow, m.wrist - m.elbow, frame, chord_max);
   const double worst = std::max({upper, fore, shoulder, upper_3d, fore_3d});
   if (worst <= 1) return std::string();
   const char* part = worst == shoulder   ? "shoulder"

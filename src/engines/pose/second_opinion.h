@@ -30,8 +30,11 @@ namespace armmimic::internal {
 //    turns from MoveNet's segment in the image plane by more than that bound, weighted
 //    by how much of the segment lies in that plane: BlazePose's world landmarks come from another
 //    head of the network than its image landmarks, and can be wrong where those are right.
+//    BlazePose's world frame has no perspective; `frame` (the whole frame's size, the principal
+//    point at its centre) lets the check project the segment through any camera from a 90 degree
+//    field of view to an orthographic one, and take the one that turns it least far.
 std::string SecondOpinion(const PoseLooks& movenet, const PoseKeypoints& blaze,
-                          const std::array<cv::Vec3d, 3>& world, PoseSide side,
-                          const PoseOptions& options);
+                          const std::array<cv::Vec3d, 3>& world, const cv::Size& frame,
+                          PoseSide side, const PoseOptions& options);
 
 }  // namespace armmimic::internal

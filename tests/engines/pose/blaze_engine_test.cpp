@@ -148,8 +148,9 @@ TEST(BlazePoseParityTest, TheRealClipAgreesWithTensorFlowJs) {
 // Both arms over the whole clip: the 3-D direction errors of the ok rows' segments against
 // MediaPipe's world landmarks, the coverage, the elbow angle's error and how steady the
 // forearm-to-upper-arm length ratio is. The bounds are the goals (docs/pose.md; measured: median
-// 7.8, p90 13.3 degrees, coverage 76.9 %, elbow median 6.7 degrees, ratio cv 9.4 %), but for the
-// coverage: the goal is 80 %, and the rows MoveNet's looks are unsure of are lost (0.75 here).
+// 7.9, p90 13.5 degrees, coverage 80.0 % (104 of 130 rows), elbow median 6.4 degrees, ratio cv
+// 9.4 %), but for the coverage: the goal of 80 % is met by no more than a row, so the test allows
+// two rows fewer (0.78) for floating-point differences between builds (the sanitizer build).
 TEST(BlazePoseEngineTest, MeasuresTheRealClipsArmsIn3dAgainstMediaPipe) {
   const std::string dir = ARMMIMIC_REAL_DIR;
   const auto ref = ReadWorldReference(dir + "/pose_squats.world.tsv");
@@ -193,7 +194,7 @@ TEST(BlazePoseEngineTest, MeasuresTheRealClipsArmsIn3dAgainstMediaPipe) {
       synth::Quantile(elbow_errors, 0.5), synth::Quantile(elbow_errors, 0.9), mean, 100 * ratio_cv);
   EXPECT_LE(synth::Quantile(errors, 0.5), 8.0);
   EXPECT_LE(synth::Quantile(errors, 0.9), 18.0);
-  EXPECT_GE(coverage, 0.75);
+  EXPECT_GE(coverage, 0.78);
   EXPECT_LE(synth::Quantile(elbow_errors, 0.5), 9.0);
   EXPECT_LE(ratio_cv, 0.15);
 }

@@ -2,7 +2,8 @@
 // hand-made keypoints (no network): an arm both place alike is borne out; a forearm turned 40
 // degrees, the other arm, or an arm MoveNet does not see are not; a segment foreshortened
 // towards the camera is compared by where its joints are; BlazePose's 3-D direction must turn the
-// same way as the image segment, unless it points at the camera.
+// same way as the image segment, unless it points at the camera or a camera's perspective turns
+// it so.
 #include "pose/second_opinion.h"
 
 #include <gtest/gtest.h>
@@ -33,8 +34,8 @@ std::array<cv::Vec3d, 3> World(double fore_deg, double toward_camera_deg = 0) {
 }
 
 std::string Opinion(const PoseKeypoints& movenet, const PoseKeypoints& blaze,
-                    const std::array<cv::Vec3d, 3>& world) {
-  return SecondOpinion(Looks(movenet), blaze, world, PoseSide::kLeft, PoseOptions());
+                    const std::array<cv::Vec3d, 3>& world, cv::Size frame = cv::Size(400, 300)) {
+  return SecondOpinion(Looks(movenet), blaze, world, frame, PoseSide::kLeft, PoseOptions());
 }
 
 TEST(SecondOpinionTest, AnArmBothNetworksPlaceAlikeIsBorneOut) {
@@ -78,6 +79,20 @@ TEST(SecondOpinionTest, A3dDirectionThatTurnsAnotherWayInTheImageIsNot) {
   EXPECT_NE(why.find("3-D"), std::string::npos) << why;
   // Turned 80 degrees towards the camera, that in-plane direction is a small part of it.
   EXPECT_EQ(Opinion(Person(-45), Person(-45), World(20, 80)), "");
+}
+
+TEST(SecondOpinionTest, PerspectiveTurnsASegmentThatReachesTowardsTheCameraOffTheAxis) {
+  // The forearm points right and 70 degrees towards the camera. Its elbow is 570 px left of the
+  // centre of a 1600 px wide frame; through a camera with a 60 degree field of view across it,
+  // the forearm's short image segment points left. BlazePose's world frame has no perspective,
+  // so its in-plane direction (right) is 180 degrees from the image's, and that is no
+  // disagreement.
+  const std::string off_axis =
+      Opinion(Person(180), Person(180), World(0, 70), cv::Size(1600, 300));
+  EXPECT_EQ(off_axis, "");
+  // With the elbow on the optical axis no camera turns it: the same two disagree.
+  const std::string on_axis = Opinion(Person(180), Person(180), World(0, 70), cv::Size(460, 320));
+  EXPECT_NE(on_axis.find("forearm's 3-D direction"), std::string::npos) << on_axis;
 }
 
 }  // namespace
