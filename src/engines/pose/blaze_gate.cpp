@@ -40,8 +40,8 @@ std::array<cv::Vec3d, 3> BlazeArmGate::Smooth(double time_s,
   return out;
 }
 
-void BlazeArmGate::Decide(const BlazeLandmarks& b, const PoseLooks& movenet,
-                          const cv::Size& frame, PoseSide side, ArmMeasurement* m) {
+void BlazeArmGate::Decide(const BlazeLandmarks& b, const PoseLooks& movenet, const cv::Size& frame,
+                          PoseSide side, ArmMeasurement* m) {
   const PoseKeypoints k = AsMoveNetKeypoints(b);
   m->pose_keypoints.assign(k.px.begin(), k.px.end());
   m->pose_scores.assign(k.score.begin(), k.score.end());

@@ -93,8 +93,10 @@ std::string SecondOpinion(const PoseLooks& movenet, const PoseKeypoints& blaze,
   const double shoulder = cv::norm(b.shoulder - m.shoulder) /
                           (sin_max * std::max(cv::norm(m.elbow - m.shoulder), kUpperFloor * torso));
   const double chord_max = 2 * std::sin(max_deg * kDegToRad / 2);
-  const double upper_3d = PlaneMisfit(world[1] - world[0], m.shoulder, m.elbow - m.shoulder, frame, chord_max);
-  const double fore_3d = PlaneMisfit(world[2] - world[1], m.elbow, m.wrist - m.elbow, frame, chord_max);
+  const double upper_3d =
+      PlaneMisfit(world[1] - world[0], m.shoulder, m.elbow - m.shoulder, frame, chord_max);
+  const double fore_3d =
+      PlaneMisfit(world[2] - world[1], m.elbow, m.wrist - m.elbow, frame, chord_max);
   const double worst = std::max({upper, fore, shoulder, upper_3d, fore_3d});
   if (worst <= 1) return std::string();
   const char* part = worst == shoulder   ? "shoulder"

@@ -87,8 +87,7 @@ TEST(SecondOpinionTest, PerspectiveTurnsASegmentThatReachesTowardsTheCameraOffTh
   // the forearm's short image segment points left. BlazePose's world frame has no perspective,
   // so its in-plane direction (right) is 180 degrees from the image's, and that is no
   // disagreement.
-  const std::string off_axis =
-      Opinion(Person(180), Person(180), World(0, 70), cv::Size(1600, 300));
+  const std::string off_axis = Opinion(Person(180), Person(180), World(0, 70), cv::Size(1600, 300));
   EXPECT_EQ(off_axis, "");
   // With the elbow on the optical axis no camera turns it: the same two disagree.
   const std::string on_axis = Opinion(Person(180), Person(180), World(0, 70), cv::Size(460, 320));
