@@ -14,22 +14,22 @@ namespace armmimic::cli {
 
 const std::map<std::string, std::set<EngineKind>>& AnalysisFlags::EngineFlags() {
   static const std::map<std::string, std::set<EngineKind>> flags = {
-      {"--background", {EngineKind::kBgsub, EngineKind::kLk}},
-      {"--background-frames", {EngineKind::kBgsub, EngineKind::kLk}},
-      {"--arm-length", {EngineKind::kBgsub, EngineKind::kLk}},
-      {"--start", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kPose}},
-      {"--standstill-frames", {EngineKind::kBgsub, EngineKind::kLk}},
-      {"--threshold", {EngineKind::kBgsub}},
-      {"--shoulder", {EngineKind::kBgsub, EngineKind::kLk}},
-      {"--elbow", {EngineKind::kLk}},
-      {"--wrist", {EngineKind::kLk}},
-      {"--roi", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kPose}},
-      {"--side", {EngineKind::kPose, EngineKind::kLk}},
+      {"--background", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kHybrid}},
+      {"--background-frames", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kHybrid}},
+      {"--arm-length", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kHybrid}},
+      {"--start", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kPose, EngineKind::kHybrid}},
+      {"--standstill-frames", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kHybrid}},
+      {"--threshold", {EngineKind::kBgsub, EngineKind::kHybrid}},
+      {"--shoulder", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kHybrid}},
+      {"--elbow", {EngineKind::kLk, EngineKind::kHybrid}},
+      {"--wrist", {EngineKind::kLk, EngineKind::kHybrid}},
+      {"--roi", {EngineKind::kBgsub, EngineKind::kLk, EngineKind::kPose, EngineKind::kHybrid}},
+      {"--side", {EngineKind::kPose, EngineKind::kLk, EngineKind::kHybrid}},
       {"--network", {EngineKind::kPose}},
-      {"--model", {EngineKind::kPose, EngineKind::kLk}},
-      {"--auto-calibrate", {EngineKind::kLk}},
-      {"--initial-upper", {EngineKind::kLk}},
-      {"--initial-fore", {EngineKind::kLk}},
+      {"--model", {EngineKind::kPose, EngineKind::kLk, EngineKind::kHybrid}},
+      {"--auto-calibrate", {EngineKind::kLk, EngineKind::kHybrid}},
+      {"--initial-upper", {EngineKind::kLk, EngineKind::kHybrid}},
+      {"--initial-fore", {EngineKind::kLk, EngineKind::kHybrid}},
       {"--reference", {EngineKind::kMarker}},
       {"--low", {EngineKind::kMarker}},
       {"--high", {EngineKind::kMarker}},
@@ -74,28 +74,28 @@ RowFlagWords For(const char* engines, const char* metavar = "") {
 void AnalysisFlags::Register(ArgParser& p, bool both_arms) {
   AnalysisOptions& f = f_;
   EngineOptions& e = f.engine;
-  p.String("--engine", &engine_name_, "NAME", "bgsub, lk, marker or pose (required)");
-  p.String("--background", &f.background_path, "BG.png", "bgsub/lk: the empty scene image");
+  p.String("--engine", &engine_name_, "NAME", "bgsub, lk, marker, pose or hybrid (required)");
+  p.String("--background", &f.background_path, "BG.png", "bgsub/lk/hybrid: the empty scene image");
   p.Int("--background-frames", &f.background_frames, "K",
-        "bgsub/lk: estimate the background from frames [0, K) of the video", 1, 1000000);
+        "bgsub/lk/hybrid: estimate the background from frames [0, K) of the video", 1, 1000000);
   p.String("--arm-length", &f.arm_length_path, "ARM.png",
-           "bgsub: straight horizontal arm at zero yaw (gives b); lk: with the standstill, "
-           "gives the joints");
+           "bgsub: straight horizontal arm at zero yaw (gives b); lk/hybrid: with the "
+           "standstill, gives the joints");
   p.Int("--start", &f.start, "F",
-        "bgsub/lk: first standstill frame; pose: first frame (default 0; a camera or stream "
+        "bgsub/lk/hybrid: first standstill frame; pose: first frame (default 0; a camera or stream "
         "drops F frames)",
         0);
   {
     // One flag for the standstill of both engines; their rows agree (OptionTablesTest).
     const auto& bgsub = Row(BgsubOptionFields(), "standstill_frames");
     const auto& lk = Row(LkOptionFields(), "standstill_frames");
-    p.Custom(bgsub.flag, RowMetavar(bgsub), RowHelp(bgsub, For("bgsub/lk")),
+    p.Custom(bgsub.flag, RowMetavar(bgsub), RowHelp(bgsub, For("bgsub/lk/hybrid")),
              [&bgsub, &lk, &e](const std::string& v) {
                const std::string error = ParseRowValue(bgsub, v, &e.bgsub);
                return error.empty() ? ParseRowValue(lk, v, &e.lk) : error;
              });
   }
-  AddRowFlag(p, Row(BgsubOptionFields(), "threshold"), &e.bgsub, For("bgsub"));
+  AddRowFlag(p, Row(BgsubOptionFields(), "threshold"), &e.bgsub, For("bgsub/hybrid"));
   auto point = [](std::optional<cv::Point2d>* out) {
     return [out](const std::string& v) {
       cv::Point2d pt;
@@ -104,20 +104,20 @@ void AnalysisFlags::Register(ArgParser& p, bool both_arms) {
       return e;
     };
   };
-  p.Custom("--shoulder", "X,Y", "bgsub/lk: fixed shoulder position in pixels",
+  p.Custom("--shoulder", "X,Y", "bgsub/lk/hybrid: fixed shoulder position in pixels",
            point(&f.shoulder_px));
-  p.Custom("--elbow", "X,Y", "lk: the elbow in frame F (with --shoulder and --wrist)",
+  p.Custom("--elbow", "X,Y", "lk/hybrid: the elbow in frame F (with --shoulder and --wrist)",
            point(&f.elbow_px));
-  p.Custom("--wrist", "X,Y", "lk: the wrist in frame F (with --shoulder and --elbow)",
+  p.Custom("--wrist", "X,Y", "lk/hybrid: the wrist in frame F (with --shoulder and --elbow)",
            point(&f.wrist_px));
-  p.Custom("--roi", "X,Y,W,H", "bgsub/lk: analyse only this rectangle", [&f](const std::string& v) {
+  p.Custom("--roi", "X,Y,W,H", "bgsub/lk/hybrid: analyse only this rectangle", [&f](const std::string& v) {
     cv::Rect roi;
     const std::string e = ParseRectArg(v, &roi);
     if (e.empty()) f.roi = roi;
     return e;
   });
-  AddRowFlag(p, Row(LkOptionFields(), "initial_upper_deg"), &e.lk, For("lk"));
-  AddRowFlag(p, Row(LkOptionFields(), "initial_fore_deg"), &e.lk, For("lk"));
+  AddRowFlag(p, Row(LkOptionFields(), "initial_upper_deg"), &e.lk, For("lk/hybrid"));
+  AddRowFlag(p, Row(LkOptionFields(), "initial_fore_deg"), &e.lk, For("lk/hybrid"));
   p.String("--reference", &f.reference_path, "REF.png",
            "marker: the joint at zero yaw and zero bend");
   AddRowFlag(p, Row(MarkerOptionFields(), "low"), &e.marker, For("marker"));
@@ -126,7 +126,7 @@ void AnalysisFlags::Register(ArgParser& p, bool both_arms) {
   {
     // Read after the engine is known (CheckFor): lk takes it only with --auto-calibrate.
     const auto& side = Row(PoseOptionFields(), "side");
-    RowFlagWords words = For("pose, lk --auto-calibrate (left or right)");
+    RowFlagWords words = For("pose, lk/hybrid --auto-calibrate (left or right)");
     if (!both_arms)
       words.help = "the person's own arm (auto: the better seen over the first second)";
     p.String(side.flag, &side_name_, both_arms ? "left|right|both" : "left|right",
@@ -134,11 +134,11 @@ void AnalysisFlags::Register(ArgParser& p, bool both_arms) {
   }
   AddRowFlag(p, Row(PoseOptionFields(), "network"), &e.pose, For("pose"));
   p.String("--model", &f.model_dir, "DIR",
-           "pose, lk --auto-calibrate: the folder holding the network's files "
+           "pose, lk/hybrid --auto-calibrate: the folder holding the network's files "
            "(movenet-lightning.json and .bin; blazepose-full.json and .bin as well for "
            "--network blazepose)");
   p.Flag("--auto-calibrate", &f.auto_calibrate,
-         "lk: the shoulder, elbow and wrist in frame F from the pose network");
+         "lk/hybrid: the shoulder, elbow and wrist in frame F from the pose network");
   p.Flag("--thesis", &thesis_, "run the thesis method only, without the improvements");
   p.Custom("--param", "ENGINE.KEY=VALUE",
            "any engine parameter listed above; repeatable, applied after the other flags",
@@ -153,7 +153,7 @@ void AnalysisFlags::Register(ArgParser& p, bool both_arms) {
 std::optional<int> AnalysisFlags::ParseEngine(const ArgParser& p, EngineKind* kind) const {
   if (!engine_name_.empty() && !ParseEngineKind(engine_name_, kind)) {
     return p.UsageError("--engine: unknown engine '" + engine_name_ +
-                        "' (bgsub, lk, marker or pose)");
+                        "' (bgsub, lk, marker, pose or hybrid)");
   }
   return std::nullopt;
 }
@@ -175,9 +175,13 @@ std::string AnalysisFlags::CheckFor(const ArgParser& p, const AnalysisOptions& o
     }
   }
   for (const std::string& assignment : params_) {
-    if (assignment.rfind(engine + ".", 0) != 0) {
-      return "--param " + assignment + " is not used by --engine " + engine;
-    }
+    const auto prefixed = [&](const char* name) {
+      return assignment.rfind(std::string(name) + ".", 0) == 0;
+    };
+    // The hybrid engine runs lk and bgsub, and takes their parameters too.
+    const bool used = prefixed(engine.c_str()) || (o.engine.kind == EngineKind::kHybrid &&
+                                                   (prefixed("lk") || prefixed("bgsub")));
+    if (!used) return "--param " + assignment + " is not used by --engine " + engine;
   }
   PoseSide side = PoseSide::kAuto;
   if (p.Given("--side") && !ParsePoseSide(side_name_, &side)) {
@@ -248,7 +252,7 @@ void AnalysisFlags::ApplyGiven(const ArgParser& p, AnalysisOptions* o) const {
 }
 
 std::optional<int> AnalysisFlags::Finish(const ArgParser& p, AnalysisOptions* o) const {
-  if (engine_name_.empty()) return p.UsageError("missing --engine (bgsub, lk, marker or pose)");
+  if (engine_name_.empty()) return p.UsageError("missing --engine (bgsub, lk, marker, pose or hybrid)");
   if (auto code = ParseEngine(p, &o->engine.kind)) return code;
   if (const std::string e = CheckFor(p, *o); !e.empty()) return p.UsageError(e);
   ApplyGiven(p, o);

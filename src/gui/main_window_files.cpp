@@ -150,6 +150,11 @@ bool MainWindow::openAngleFile(const QString& path) {
     case EngineKind::kPose:
       o.engine.pose = recorded.engine.pose;
       break;
+    case EngineKind::kHybrid:  // its own parameters and the two engines' it runs
+      o.engine.hybrid = recorded.engine.hybrid;
+      o.engine.lk = recorded.engine.lk;
+      o.engine.bgsub = recorded.engine.bgsub;
+      break;
   }
   o.start = recorded.start;
   settings_->setOptions(o);

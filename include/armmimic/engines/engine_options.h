@@ -7,15 +7,17 @@
 
 #include "armmimic/core/status.h"
 #include "armmimic/engines/bgsub_options.h"
+#include "armmimic/engines/hybrid_options.h"
 #include "armmimic/engines/lk_options.h"
 #include "armmimic/engines/marker_options.h"
 #include "armmimic/engines/pose_options.h"
 
 namespace armmimic {
 
-enum class EngineKind { kBgsub, kLk, kMarker, kPose };
+// New kinds go last: the GUI stores a kind as its number.
+enum class EngineKind { kBgsub, kLk, kMarker, kPose, kHybrid };
 
-const char* EngineName(EngineKind kind);  // "bgsub", "lk", "marker", "pose"
+const char* EngineName(EngineKind kind);  // "bgsub", "lk", "marker", "pose", "hybrid"
 bool ParseEngineKind(const std::string& name, EngineKind* out);
 // Every engine, in the order above. A new engine joins this list, and the parsers and the
 // robustness benchmark (bench/robustness.cpp) find it here.
@@ -29,6 +31,7 @@ struct EngineOptions {
   LkOptions lk;
   MarkerOptions marker;
   PoseOptions pose;
+  HybridOptions hybrid;  // the hybrid engine's own; it also takes lk's and bgsub's
   Status Check() const;  // checks the chosen engine's options
 };
 

@@ -12,6 +12,7 @@
 #include "armmimic/core/status.h"
 #include "armmimic/engines/bgsub_options.h"
 #include "armmimic/engines/engine_options.h"
+#include "armmimic/engines/hybrid_options.h"
 #include "armmimic/engines/lk_options.h"
 #include "armmimic/engines/marker_options.h"
 #include "armmimic/engines/pose_options.h"
@@ -22,6 +23,7 @@ const std::vector<OptionField<BgsubOptions>>& BgsubOptionFields();
 const std::vector<OptionField<LkOptions>>& LkOptionFields();
 const std::vector<OptionField<MarkerOptions>>& MarkerOptionFields();
 const std::vector<OptionField<PoseOptions>>& PoseOptionFields();
+const std::vector<OptionField<HybridOptions>>& HybridOptionFields();
 
 // Sets one field of `o` from "ENGINE.KEY=VALUE" ("lk.max_corners=200", the name the GUI's
 // editors carry). Ints take whole numbers, bools true/false/on/off/1/0, enums a choice name;

@@ -36,10 +36,11 @@ Status AnalysisOptions::Check() const {
                          "auto-calibration starts one arm: left, right or the better seen, not "
                          "both (both arms in one pass is the pose engine's)");
   }
-  if (engine.kind != EngineKind::kLk && (elbow_px || wrist_px)) {
+  const bool tracking = engine.kind == EngineKind::kLk || engine.kind == EngineKind::kHybrid;
+  if (!tracking && (elbow_px || wrist_px)) {
     return Status::Error(
         elbow_px ? "analysis.elbow" : "analysis.wrist",
-        std::string(elbow_px ? "the elbow" : "the wrist") + " is used by the lk engine only");
+        std::string(elbow_px ? "the elbow" : "the wrist") + " is used by the lk and hybrid engines only");
   }
   if (inputs.empty()) return Status::Error("no INPUT given (a video, images or a folder)");
   if (start < 0) {
@@ -69,6 +70,7 @@ Status AnalysisOptions::Check() const {
       }
       break;
     case EngineKind::kLk:
+    case EngineKind::kHybrid:
       if ((elbow_px || wrist_px) && !(shoulder_px && elbow_px && wrist_px)) {
         return Status::Error(
             shoulder_px ? (elbow_px ? "analysis.wrist" : "analysis.elbow") : "analysis.shoulder",
@@ -89,8 +91,9 @@ Status AnalysisOptions::Check() const {
       }
       if (!has_bg && !has_frames && !shoulder_px && !auto_calibrate) {
         return Status::Error("analysis.shoulder",
-                             "the lk engine needs a background image, background frames, a fixed "
-                             "shoulder or auto-calibration");
+                             std::string("the ") + EngineName(engine.kind) +
+                                 " engine needs a background image, background frames, a fixed "
+                                 "shoulder or auto-calibration");
       }
       if (has_bg && has_frames) {
         return Status::Error("analysis.background",

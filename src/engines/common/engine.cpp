@@ -18,6 +18,8 @@ std::unique_ptr<Engine> Engine::Create(const EngineOptions& options) {
       return internal::CreateMarkerEngine(options.marker);
     case EngineKind::kPose:
       return internal::CreatePoseEngine(options.pose);
+    case EngineKind::kHybrid:
+      return internal::CreateHybridEngine(options.hybrid, options.lk, options.bgsub);
   }
   throw std::invalid_argument("Engine::Create: unknown engine kind");
 }

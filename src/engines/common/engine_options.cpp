@@ -12,13 +12,16 @@ const char* EngineName(EngineKind kind) {
       return "marker";
     case EngineKind::kPose:
       return "pose";
+    case EngineKind::kHybrid:
+      return "hybrid";
   }
   return "?";
 }
 
 const std::vector<EngineKind>& AllEngineKinds() {
   static const std::vector<EngineKind> kinds = {EngineKind::kBgsub, EngineKind::kLk,
-                                                EngineKind::kMarker, EngineKind::kPose};
+                                                EngineKind::kMarker, EngineKind::kPose,
+                                                EngineKind::kHybrid};
   return kinds;
 }
 
@@ -44,6 +47,10 @@ Status EngineOptions::Check() const {
       return marker.Check();
     case EngineKind::kPose:
       return pose.Check();
+    case EngineKind::kHybrid:
+      if (Status st = hybrid.Check(); !st) return st;
+      if (Status st = lk.Check(); !st) return st;
+      return bgsub.Check();
   }
   return Status::Ok();
 }

@@ -66,6 +66,11 @@ std::vector<std::pair<std::string, std::string>> EngineValues(const EngineOption
     case EngineKind::kPose:
       AppendValues(PoseOptionFields(), "pose", o.pose, changed_only, &out);
       break;
+    case EngineKind::kHybrid:  // its own, then the two engines' it runs
+      AppendValues(HybridOptionFields(), "hybrid", o.hybrid, changed_only, &out);
+      AppendValues(LkOptionFields(), "lk", o.lk, changed_only, &out);
+      AppendValues(BgsubOptionFields(), "bgsub", o.bgsub, changed_only, &out);
+      break;
   }
   return out;
 }
@@ -89,8 +94,9 @@ Status SetEngineOption(const std::string& assignment, EngineOptions* o) {
   if (engine == "lk") return SetField(LkOptionFields(), engine, key, value, &o->lk);
   if (engine == "marker") return SetField(MarkerOptionFields(), engine, key, value, &o->marker);
   if (engine == "pose") return SetField(PoseOptionFields(), engine, key, value, &o->pose);
+  if (engine == "hybrid") return SetField(HybridOptionFields(), engine, key, value, &o->hybrid);
   return Status::Error("'" + assignment + "': unknown engine '" + engine +
-                       "' (bgsub, lk, marker or pose)");
+                       "' (bgsub, lk, marker, pose or hybrid)");
 }
 
 std::vector<std::pair<std::string, std::string>> ChangedEngineOptions(const EngineOptions& o) {
@@ -110,6 +116,8 @@ std::string DescribeEngineOptions(int width) {
   Describe(MarkerOptionFields(), "marker", width, &out);
   out += "\n";
   Describe(PoseOptionFields(), "pose", width, &out);
+  out += "\n";
+  Describe(HybridOptionFields(), "hybrid", width, &out);
   return out;
 }
 

@@ -1,0 +1,26 @@
+// When lk's and bgsub's rows of one frame bear each other out (docs/hybrid.md, "The second
+// opinion"). lk follows the arm from frame to frame (flow and a learnt appearance); bgsub
+// measures it afresh in every frame from where the frame differs from the empty room. The two
+// err for different reasons, so a pose both place alike is one the pixels show now, and one
+// they place apart is not trusted.
+#pragma once
+
+#include <string>
+
+#include "armmimic/engines/hybrid_options.h"
+#include "armmimic/engines/measurement.h"
+
+namespace armmimic::internal {
+
+// The largest direction difference allowed for a segment `length_px` long: max_disagreement_deg
+// plus the angle a joint's pixel uncertainty in each measurement can turn it by,
+// atan(2 * joint_px / length) (a short segment's direction is uncertain).
+double AllowedDisagreementDeg(double length_px, const HybridOptions& options);
+
+// Empty when the two ok rows agree: each segment's directions (upper_deg, fore_deg) within
+// AllowedDisagreementDeg of the segment's length in lk's row (its joints), or the fixed bound
+// where lk's row has no joints. Otherwise why not, for the row's note.
+std::string Disagreement(const ArmMeasurement& lk, const ArmMeasurement& bgsub,
+                         const HybridOptions& options);
+
+}  // namespace armmimic::internal

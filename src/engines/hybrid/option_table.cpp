@@ -1,0 +1,33 @@
+// The parameter table of the hybrid engine (its own options; it takes lk's and bgsub's too):
+// one row per option (option_table.h), and HybridOptions::Check(), which is the table's ranges.
+#include "armmimic/core/option_rows.h"
+#include "armmimic/engines/option_fields.h"
+
+namespace armmimic {
+namespace {
+
+using namespace option_rows;  // NOLINT(google-build-using-namespace): the row builders
+using H = HybridOptions;
+
+}  // namespace
+
+const std::vector<OptionField<HybridOptions>>& HybridOptionFields() {
+  static const std::vector<OptionField<H>> fields = {
+      Real<H>("max_disagreement_deg", &H::max_disagreement_deg, 12, 1, 90, 1,
+              "Max. disagreement",
+              "lk's and bgsub's directions of a segment further apart than this (plus the "
+              "joints' pixel uncertainty) make the frame lost, degrees")
+          .Unit("deg")
+          .Main(),
+      Real<H>("joint_px", &H::joint_px, 2, 0, 50, 1, "Joint uncertainty",
+              "how far each measurement may place a joint off, pixels: a short segment's "
+              "directions may differ by atan(2 x this / its length) more"),
+  };
+  return fields;
+}
+
+Status HybridOptions::Check() const {
+  return CheckOptionFields(HybridOptionFields(), "hybrid", *this);
+}
+
+}  // namespace armmimic
