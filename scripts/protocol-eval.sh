@@ -7,7 +7,7 @@
 #
 #   scripts/protocol-eval.sh [--build DIR] [--work DIR] [--generators random,capsule]
 #       [--tiers medium,hard] [--set heldout|tuning] [--first-seed S] [--scenes N]
-#       [--runs bgsub,lk,lk+joints] [--size WxH]
+#       [--runs bgsub,lk,lk+joints] [--size WxH] [--param ENGINE.KEY=VALUE]...
 #
 # Runs: ENGINE runs the thesis protocol without clicks (--background BG --arm-length AL --start K
 # --standstill-frames M; an engine that does not take --arm-length runs without it), and
@@ -15,7 +15,8 @@
 # at the start frame). `pose` runs the pose engine as an operator would: the moving arm named
 # (--side: the person's own, so the image's right arm is their left) and --start K; `blazepose`
 # runs it the same way with --network blazepose. K and M are the scene's own (45 and 60 in
-# capsule scenes).
+# capsule scenes). `--param` goes to every run whose engine takes it (hybrid takes lk.* and
+# bgsub.* too); give a run with other parameters its own --work.
 # Seeds: the set's range of each generator (held out unless --set tuning): random 100000-,
 # capsule 300000-; tuning 1000- and 3000-. Held-out scenes are for measuring only: nothing may
 # be tuned on them. Scenes and angle files already in the work folder are reused.
@@ -31,6 +32,7 @@ FIRST=""
 SCENES=8
 RUNS=bgsub,lk,lk+joints
 SIZE=320x240
+PARAMS=()
 usage() { awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; }
 while (($# > 0)); do
   case "$1" in
@@ -43,6 +45,7 @@ while (($# > 0)); do
     --scenes) SCENES="$2"; shift 2 ;;
     --runs) RUNS="$2"; shift 2 ;;
     --size) SIZE="$2"; shift 2 ;;
+    --param) PARAMS+=("$2"); shift 2 ;;
     -h | --help) usage; exit 0 ;;
     *) echo "protocol-eval: unknown option '$1' (try --help)" >&2; exit 2 ;;
   esac
@@ -139,6 +142,12 @@ for gen in "${GENS[@]}"; do
         else
           flags=(--background "$dir/background.png" --arm-length "$dir/armlength.png" --start "$k" --standstill-frames "$m")
         fi
+        for assignment in "${PARAMS[@]}"; do
+          prefix="${assignment%%.*}"
+          if [[ "$prefix" == "$engine" || ("$engine" == hybrid && ("$prefix" == lk || "$prefix" == bgsub)) ]]; then
+            flags+=(--param "$assignment")
+          fi
+        done
         code=0
         seconds=0
         if [[ ! -f "$out" ]]; then

@@ -110,12 +110,13 @@ void AnalysisFlags::Register(ArgParser& p, bool both_arms) {
            point(&f.elbow_px));
   p.Custom("--wrist", "X,Y", "lk/hybrid: the wrist in frame F (with --shoulder and --elbow)",
            point(&f.wrist_px));
-  p.Custom("--roi", "X,Y,W,H", "bgsub/lk/hybrid: analyse only this rectangle", [&f](const std::string& v) {
-    cv::Rect roi;
-    const std::string e = ParseRectArg(v, &roi);
-    if (e.empty()) f.roi = roi;
-    return e;
-  });
+  p.Custom("--roi", "X,Y,W,H", "bgsub/lk/hybrid: analyse only this rectangle",
+           [&f](const std::string& v) {
+             cv::Rect roi;
+             const std::string e = ParseRectArg(v, &roi);
+             if (e.empty()) f.roi = roi;
+             return e;
+           });
   AddRowFlag(p, Row(LkOptionFields(), "initial_upper_deg"), &e.lk, For("lk/hybrid"));
   AddRowFlag(p, Row(LkOptionFields(), "initial_fore_deg"), &e.lk, For("lk/hybrid"));
   p.String("--reference", &f.reference_path, "REF.png",
@@ -252,7 +253,8 @@ void AnalysisFlags::ApplyGiven(const ArgParser& p, AnalysisOptions* o) const {
 }
 
 std::optional<int> AnalysisFlags::Finish(const ArgParser& p, AnalysisOptions* o) const {
-  if (engine_name_.empty()) return p.UsageError("missing --engine (bgsub, lk, marker, pose or hybrid)");
+  if (engine_name_.empty())
+    return p.UsageError("missing --engine (bgsub, lk, marker, pose or hybrid)");
   if (auto code = ParseEngine(p, &o->engine.kind)) return code;
   if (const std::string e = CheckFor(p, *o); !e.empty()) return p.UsageError(e);
   ApplyGiven(p, o);

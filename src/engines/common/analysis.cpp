@@ -431,8 +431,8 @@ Status AnalyzeToFile(const AnalysisOptions& options, const std::string& output_p
   const std::vector<std::string> paths = ArmOutputPaths(options, output_path);
   std::vector<AngleFileWriter> writers(paths.size());
   const bool file_column = options.engine.kind == EngineKind::kMarker;
-  // The engines that rate their own rows (pose, lk, hybrid, and bgsub's two-segment fit, not its thesis
-  // path) write the optional confidence column.
+  // The engines that rate their own rows (pose, lk, hybrid, and bgsub's two-segment fit, not its
+  // thesis path) write the optional confidence column.
   const bool confidence_column =
       options.engine.kind == EngineKind::kPose || options.engine.kind == EngineKind::kLk ||
       options.engine.kind == EngineKind::kHybrid ||

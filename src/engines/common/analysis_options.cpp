@@ -38,9 +38,9 @@ Status AnalysisOptions::Check() const {
   }
   const bool tracking = engine.kind == EngineKind::kLk || engine.kind == EngineKind::kHybrid;
   if (!tracking && (elbow_px || wrist_px)) {
-    return Status::Error(
-        elbow_px ? "analysis.elbow" : "analysis.wrist",
-        std::string(elbow_px ? "the elbow" : "the wrist") + " is used by the lk and hybrid engines only");
+    return Status::Error(elbow_px ? "analysis.elbow" : "analysis.wrist",
+                         std::string(elbow_px ? "the elbow" : "the wrist") +
+                             " is used by the lk and hybrid engines only");
   }
   if (inputs.empty()) return Status::Error("no INPUT given (a video, images or a folder)");
   if (start < 0) {

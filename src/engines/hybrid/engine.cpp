@@ -2,15 +2,18 @@
 // standstill's self-calibration (or clicked joints, or the pose network), and bgsub's
 // background difference measures the same arm afresh in every frame as a second opinion. A
 // row is `ok` only when both are and they place each segment alike (hybrid/agreement.h); its
-// directions are lk's, its yaw bgsub's (a straight arm's foreshortening against the calibrated
-// length). Without a background and an arm-length image (joints clicked on footage with no
-// empty room) there is no second opinion, and the rows are lk's alone, as the header and the
-// first row's estimate say.
+// directions are the mean of the two, its yaw bgsub's (a straight arm's foreshortening against
+// the calibrated length). A tracker that gives no agreeing pose for hybrid.restart_frames rows
+// (lost, drifted, or its calibration refused) restarts from the background difference's joints
+// once those have been steady for hybrid.confirm_frames rows. Without a background and an
+// arm-length image (joints clicked on footage with no empty room) there is no second opinion,
+// and the rows are lk's alone, as the header and the first row's estimate say.
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "armmimic/core/angle_file.h"
+#include "armmimic/core/angles.h"
 #include "common/engine_internal.h"
 #include "hybrid/agreement.h"
 
@@ -42,8 +45,12 @@ class HybridEngine final : public Engine {
   EngineKind kind() const override { return EngineKind::kHybrid; }
 
   Status Begin(const EngineContext& context) override {
+    context_ = context;
     lk_ = internal::CreateLkEngine(lk_options_);
     bgsub_.reset();
+    unagreed_ = 0;
+    steady_ = 0;
+    restarts_ = 0;
     if (Status st = lk_->Begin(context); !st) return st;
     if (!context.background.empty() && !context.arm_length.empty()) {
       bgsub_ = internal::CreateBgsubEngine(bgsub_options_);
@@ -69,35 +76,19 @@ class HybridEngine final : public Engine {
     m.estimate = Join(m.estimate, b.estimate);
     if (!m.row()) return m;  // the standstill: both average it
     first_row_ = false;
-    // The background difference's own shapes, drawn under the tracker's joints.
-    m.arm_contour = b.arm_contour;
-    m.arm_hull = b.arm_hull;
-    if (!m.body_box) m.body_box = b.body_box;
-    if (m.phase != MeasurementPhase::kOk) {
-      m.note = "the tracker: " + m.note;
-      return m;
-    }
-    if (b.phase == MeasurementPhase::kSetup) {
-      Lose(&m, "the background difference, the second opinion, is still taking the standstill");
-      return m;
-    }
-    if (b.phase != MeasurementPhase::kOk) {
-      Lose(&m, "the background difference, the second opinion: " + b.note);
-      return m;
-    }
-    if (const std::string why = internal::Disagreement(m, b, o_); !why.empty()) {
-      Lose(&m, why);
-      return m;
-    }
-    m.yaw_deg = b.yaw_deg;
-    m.confidence = Lower(m.confidence, b.confidence);
+    Decide(b, &m);
+    Steady(b);
+    unagreed_ = m.phase == MeasurementPhase::kOk ? 0 : unagreed_ + 1;
+    if (unagreed_ >= o_.restart_frames && steady_ >= o_.confirm_frames) Restart(frame, b, &m);
     return m;
   }
 
   AngleMeta Describe() const override {
     AngleMeta meta = {{"second_opinion", bgsub_ ? "bgsub" : "none"},
                       {"max_disagreement", FormatNumber(o_.max_disagreement_deg, 2)},
-                      {"joint_px", FormatNumber(o_.joint_px, 2)}};
+                      {"joint_px", FormatNumber(o_.joint_px, 2)},
+                      {"restart_frames", std::to_string(o_.restart_frames)},
+                      {"confirm_frames", std::to_string(o_.confirm_frames)}};
     if (lk_) {
       for (auto& [key, value] : lk_->Describe()) meta.emplace_back("lk_" + key, value);
     }
@@ -108,6 +99,71 @@ class HybridEngine final : public Engine {
   }
 
  private:
+  // The frame's row from the tracker's (m) and the background difference's (b).
+  void Decide(const ArmMeasurement& b, ArmMeasurement* out) {
+    ArmMeasurement& m = *out;
+    // The background difference's own shapes, drawn under the tracker's joints.
+    m.arm_contour = b.arm_contour;
+    m.arm_hull = b.arm_hull;
+    if (!m.body_box) m.body_box = b.body_box;
+    if (m.phase != MeasurementPhase::kOk) {
+      m.note = "the tracker: " + m.note;
+      return;
+    }
+    if (b.phase == MeasurementPhase::kSetup) {
+      Lose(&m, "the background difference, the second opinion, is still taking the standstill");
+      return;
+    }
+    if (b.phase != MeasurementPhase::kOk) {
+      Lose(&m, "the background difference, the second opinion: " + b.note);
+      return;
+    }
+    if (const std::string why = internal::Disagreement(m, b, o_); !why.empty()) {
+      Lose(&m, why);
+      return;
+    }
+    // Two measurements that err apart: their mean halves what they do not share.
+    m.upper_deg = Wrap180(m.upper_deg + Wrap180(b.upper_deg - m.upper_deg) / 2);
+    m.fore_deg = Wrap180(m.fore_deg + Wrap180(b.fore_deg - m.fore_deg) / 2);
+    m.bend_deg = Wrap180(m.fore_deg - m.upper_deg);
+    m.yaw_deg = b.yaw_deg;
+    m.confidence = Lower(m.confidence, b.confidence);
+  }
+
+  // Counts the frames in a row the background difference has been ok, each pose within
+  // max_disagreement_deg of the last.
+  void Steady(const ArmMeasurement& b) {
+    const bool ok = b.phase == MeasurementPhase::kOk && b.shoulder_px && b.elbow_px && b.wrist_px;
+    if (!ok) {
+      steady_ = 0;
+      return;
+    }
+    const bool near =
+        steady_ > 0 &&
+        std::abs(Wrap180(b.upper_deg - steady_upper_deg_)) <= o_.max_disagreement_deg &&
+        std::abs(Wrap180(b.fore_deg - steady_fore_deg_)) <= o_.max_disagreement_deg;
+    steady_ = near ? steady_ + 1 : 1;
+    steady_upper_deg_ = b.upper_deg;
+    steady_fore_deg_ = b.fore_deg;
+  }
+
+  // A tracker that has given no agreeing pose for a while (lost, drifted, or never calibrated)
+  // starts again from the background difference's joints in this frame, as if they had been
+  // clicked. This frame stays lost: its pose is the background difference's alone.
+  void Restart(const Frame& frame, const ArmMeasurement& b, ArmMeasurement* m) {
+    EngineContext c = context_;
+    c.shoulder_px = *b.shoulder_px;
+    c.elbow_px = *b.elbow_px;
+    c.wrist_px = *b.wrist_px;
+    std::unique_ptr<Engine> lk = internal::CreateLkEngine(lk_options_);
+    if (!lk->Begin(c)) return;  // joints lk cannot start from: keep waiting
+    lk->Process(frame);         // the start posture: no measurement of its own
+    lk_ = std::move(lk);
+    unagreed_ = 0;
+    ++restarts_;
+    m->note += "; the tracker restarts from the background difference's joints";
+  }
+
   static std::string Join(const std::string& a, const std::string& b) {
     if (a.empty()) return b;
     if (b.empty()) return a;
@@ -120,6 +176,12 @@ class HybridEngine final : public Engine {
   std::unique_ptr<Engine> lk_;
   std::unique_ptr<Engine> bgsub_;  // the second opinion; null without a background
   bool first_row_ = true;
+  EngineContext context_;        // the run's, for a restarted tracker
+  int unagreed_ = 0;             // rows in a row without an agreeing pose
+  int steady_ = 0;               // rows in a row the background difference has been steady
+  double steady_upper_deg_ = 0;  // its last pose
+  double steady_fore_deg_ = 0;
+  int restarts_ = 0;
 };
 
 }  // namespace

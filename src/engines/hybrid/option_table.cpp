@@ -13,8 +13,7 @@ using H = HybridOptions;
 
 const std::vector<OptionField<HybridOptions>>& HybridOptionFields() {
   static const std::vector<OptionField<H>> fields = {
-      Real<H>("max_disagreement_deg", &H::max_disagreement_deg, 12, 1, 90, 1,
-              "Max. disagreement",
+      Real<H>("max_disagreement_deg", &H::max_disagreement_deg, 12, 1, 90, 1, "Max. disagreement",
               "lk's and bgsub's directions of a segment further apart than this (plus the "
               "joints' pixel uncertainty) make the frame lost, degrees")
           .Unit("deg")
@@ -22,6 +21,12 @@ const std::vector<OptionField<HybridOptions>>& HybridOptionFields() {
       Real<H>("joint_px", &H::joint_px, 2, 0, 50, 1, "Joint uncertainty",
               "how far each measurement may place a joint off, pixels: a short segment's "
               "directions may differ by atan(2 x this / its length) more"),
+      Int<H>("restart_frames", &H::restart_frames, 5, 1, 100000, "Restart after",
+             "frames in a row without an agreeing pose before the tracker restarts from the "
+             "background difference's joints"),
+      Int<H>("confirm_frames", &H::confirm_frames, 5, 1, 1000, "Steady frames",
+             "frames in a row the background difference must be ok and steady to restart the "
+             "tracker from"),
   };
   return fields;
 }
