@@ -104,7 +104,6 @@ cv::Mat LightGain(const cv::Mat& bgr, const cv::Mat& background, const cv::Mat& 
   const int bx = std::max(1, (region.width + kBlock - 1) / kBlock);
   const int by = std::max(1, (region.height + kBlock - 1) / kBlock);
   std::vector<std::vector<float>> ratios(static_cast<std::size_t>(bx * by * 3));
-  std::vector<float> all[3];
   for (int y = 0; y < region.height; y += 2) {
     const cv::Vec3b* in = bgr.ptr<cv::Vec3b>(y + region.y) + region.x;
     const cv::Vec3f* b = background.ptr<cv::Vec3f>(y + region.y) + region.x;
@@ -116,7 +115,6 @@ cv::Mat LightGain(const cv::Mat& bgr, const cv::Mat& background, const cv::Mat& 
       for (int c = 0; c < 3; ++c) {
         const float r = (in[x][c] + 4.f) / (b[x][c] + 4.f);
         ratios[static_cast<std::size_t>(cell * 3 + c)].push_back(r);
-        all[c].push_back(r);
       }
     }
   }
@@ -125,15 +123,30 @@ cv::Mat LightGain(const cv::Mat& bgr, const cv::Mat& background, const cv::Mat& 
     std::nth_element(v.begin(), m, v.end());
     return *m;
   };
-  float whole[3];
-  for (int c = 0; c < 3; ++c) whole[c] = all[c].empty() ? 1.f : median(all[c]);
+  // The whole region's medians, taken only when a block needs them (most frames none does).
+  float whole[3] = {1.f, 1.f, 1.f};
+  bool have_whole = false;
+  auto whole_median = [&](int c) {
+    if (!have_whole) {
+      for (int ch = 0; ch < 3; ++ch) {
+        std::vector<float> all;
+        for (std::size_t cell = 0; cell < ratios.size() / 3; ++cell) {
+          const std::vector<float>& v = ratios[cell * 3 + ch];
+          all.insert(all.end(), v.begin(), v.end());
+        }
+        if (!all.empty()) whole[ch] = median(all);
+      }
+      have_whole = true;
+    }
+    return whole[c];
+  };
   cv::Mat grid(by, bx, CV_32FC3);
   for (int j = 0; j < by; ++j) {
     for (int i = 0; i < bx; ++i) {
       cv::Vec3f& g = grid.at<cv::Vec3f>(j, i);
       for (int c = 0; c < 3; ++c) {
         std::vector<float>& v = ratios[static_cast<std::size_t>((j * bx + i) * 3 + c)];
-        g[c] = std::clamp(static_cast<int>(v.size()) >= kMinSamples ? median(v) : whole[c],
+        g[c] = std::clamp(static_cast<int>(v.size()) >= kMinSamples ? median(v) : whole_median(c),
                           kMinGain, kMaxGain);
       }
     }
@@ -344,7 +357,10 @@ void EvidenceMap::Compute(const cv::Mat& bgr, const LearntBackground& background
   // The distance of every pixel from its background neighbourhood; the background pixels' own
   // distances (away from the arm) set how much change is noise in this frame.
   cv::Mat dist(region_.size(), CV_32F);
+  // The noise below is max(kMinChange, a quantile of the sampled distances): only the distances
+  // above kMinChange can move it, so only they are kept, and the rest counted.
   distances_.clear();
+  std::size_t sampled = 0;
   for (int y = 0; y < region_.height; ++y) {
     const cv::Vec3b* in = relit_.ptr<cv::Vec3b>(y);
     const cv::Vec3f* lo = low_.ptr<cv::Vec3f>(y);
@@ -364,15 +380,21 @@ void EvidenceMap::Compute(const cv::Mat& bgr, const LearntBackground& background
         s += e * e;
       }
       d[x] = std::sqrt(s);
-      if ((x & 1) == 0 && (y & 1) == 0 && !(ign && ign[x])) distances_.push_back(d[x]);
+      if ((x & 1) == 0 && (y & 1) == 0 && !(ign && ign[x])) {
+        ++sampled;
+        if (d[x] > kMinChange) distances_.push_back(d[x]);
+      }
     }
   }
-  double noise = 0;
-  if (!distances_.empty()) {
-    const auto q =
-        distances_.begin() + static_cast<std::ptrdiff_t>(kChangeQuantile * (distances_.size() - 1));
-    std::nth_element(distances_.begin(), q, distances_.end());
-    noise = *q;
+  double noise = 0;  // the quantile, where it is above kMinChange
+  if (sampled > 0) {
+    const auto at = static_cast<std::size_t>(kChangeQuantile * (sampled - 1));
+    const std::size_t at_most_min = sampled - distances_.size();
+    if (at >= at_most_min) {
+      const auto q = distances_.begin() + static_cast<std::ptrdiff_t>(at - at_most_min);
+      std::nth_element(distances_.begin(), q, distances_.end());
+      noise = *q;
+    }
   }
   const double low = std::max(kMinChange, noise);
   const double span = std::max(kMinChangeSpan, low);

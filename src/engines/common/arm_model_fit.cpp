@@ -24,6 +24,16 @@ double ForeTo(const ArmShape& shape) {
   return shape.fore_px > 0 ? 1 + kHandShare * shape.hand_px / shape.fore_px : 1;
 }
 
+// The squared distance of p from the segment a-b.
+inline double SquaredDistanceToSegment(const cv::Point2d& p, const cv::Point2d& a,
+                                       const cv::Point2d& b) {
+  const cv::Point2d ab = b - a;
+  const double len2 = ab.dot(ab);
+  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  const cv::Point2d d = p - (a + t * ab);
+  return d.dot(d);
+}
+
 // Offset of the peak of a parabola through (-1, a), (0, b), (1, c), within half a step.
 double ParabolaPeak(double a, double b, double c) {
   const double den = a - 2 * b + c;
@@ -33,11 +43,7 @@ double ParabolaPeak(double a, double b, double c) {
 }  // namespace
 
 double DistanceToSegment(const cv::Point2d& p, const cv::Point2d& a, const cv::Point2d& b) {
-  const cv::Point2d ab = b - a;
-  const double len2 = ab.dot(ab);
-  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  const cv::Point2d d = p - (a + t * ab);
-  return std::sqrt(d.dot(d));
+  return std::sqrt(SquaredDistanceToSegment(p, a, b));
 }
 
 ArmJoints JointsOf(const ArmPose& pose, const ArmShape& shape) {
@@ -74,7 +80,10 @@ SegmentScore ScoreSegment(const EvidenceMap& evidence, const cv::Point2d& from_p
     }
     for (int s = -1; s <= 1; s += 2) {
       const cv::Point2d q = p + s * flank * n;
-      if (avoid_hw_px > 0 && DistanceToSegment(q, avoid_a, avoid_b) < avoid_hw_px) continue;
+      if (avoid_hw_px > 0 &&
+          SquaredDistanceToSegment(q, avoid_a, avoid_b) < avoid_hw_px * avoid_hw_px) {
+        continue;
+      }
       flanks += evidence.At(q.x, q.y);
       ++n_flank;
     }
