@@ -6,7 +6,7 @@
 # every generator, run and tier like issue 28's.
 #
 #   scripts/protocol-eval.sh [--build DIR] [--work DIR] [--generators random,capsule]
-#       [--tiers medium,hard] [--set heldout|tuning] [--first-seed S] [--scenes N]
+#       [--tiers medium,hard] [--set heldout|tuning|unit] [--first-seed S] [--scenes N]
 #       [--runs bgsub,lk,lk+joints] [--size WxH] [--param ENGINE.KEY=VALUE]...
 #
 # Runs: ENGINE runs the thesis protocol without clicks (--background BG --arm-length AL --start K
@@ -18,7 +18,8 @@
 # capsule scenes). `--param` goes to every run whose engine takes it (hybrid takes lk.* and
 # bgsub.* too); give a run with other parameters its own --work.
 # Seeds: the set's range of each generator (held out unless --set tuning): random 100000-,
-# capsule 300000-; tuning 1000- and 3000-. Held-out scenes are for measuring only: nothing may
+# capsule 300000-; tuning 1000- and 3000-; unit 8000- of both (the unit tests' scenes, free to
+# look at). Held-out scenes are for measuring only: nothing may
 # be tuned on them. Scenes and angle files already in the work folder are reused.
 # Writes WORK/scenes.tsv (one row per scene and run) and WORK/table.md (the summary).
 set -euo pipefail
@@ -52,7 +53,7 @@ while (($# > 0)); do
 done
 CLI="$BUILD/bin/armmimic-cli"
 [[ -x "$CLI" ]] || { echo "protocol-eval: $CLI not found; build first (scripts/build.sh $BUILD)" >&2; exit 2; }
-[[ "$SET" == heldout || "$SET" == tuning ]] || { echo "protocol-eval: --set '$SET' is not heldout or tuning" >&2; exit 2; }
+[[ "$SET" == heldout || "$SET" == tuning || "$SET" == unit ]] || { echo "protocol-eval: --set '$SET' is not heldout, tuning or unit" >&2; exit 2; }
 [[ "$SCENES" =~ ^[0-9]+$ && "$SCENES" -ge 1 ]] || { echo "protocol-eval: --scenes '$SCENES' is not a positive number" >&2; exit 2; }
 WORK="${WORK:-$(mktemp -d /tmp/armmimic-protocol-XXXXXX)}"
 mkdir -p "$WORK"
@@ -67,6 +68,7 @@ seed_range() {
     random:tuning) echo "1000 1999" ;;
     capsule:heldout) echo "300000 300999" ;;
     capsule:tuning) echo "3000 3999" ;;
+    *:unit) echo "8000 8999" ;;
   esac
 }
 

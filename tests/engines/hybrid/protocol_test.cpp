@@ -1,0 +1,194 @@
+// The hybrid engine on the thesis protocol without clicks (the empty room, the standstill and the
+// arm-length image), on scenes of both generators: the painted random figures and the ray-cast
+// capsules. Each scene is rendered, its frames compressed as its video would be, and analysed as
+// `analyze` would; the test asserts coverage, the mean error of the ok frames and the confidently
+// wrong frames (ok, either segment more than 15 degrees off), pooled over the scenes. Seeds 8000+
+// lie outside the tuning and held-out ranges (docs/accuracy.md); seed 1001 is a tuning scene.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+#include "armmimic/core/angles.h"
+#include "armmimic/engines/engine.h"
+#include "armmimic/synth/capsule_arm_scene.h"
+#include "armmimic/synth/random_arm_scene.h"
+
+namespace armmimic {
+namespace {
+
+struct ProtocolRun {
+  int motion = 0;      // motion frames
+  int ok = 0;          // of them ok
+  int wrong = 0;       // ok and off by more than 15 degrees (either segment)
+  double sum_err = 0;  // mean of |d upper| and |d fore|, summed over ok frames
+  double coverage() const { return motion ? static_cast<double>(ok) / motion : 0; }
+  double mae() const { return ok ? sum_err / ok : kNaN; }
+  double wrong_share() const { return ok ? static_cast<double>(wrong) / ok : 0; }
+  void Add(const ProtocolRun& r) {
+    motion += r.motion;
+    ok += r.ok;
+    wrong += r.wrong;
+    sum_err += r.sum_err;
+  }
+};
+
+// The engine `kind` on `scene`'s protocol as `synth arm` writes it and the operator gives it:
+// the empty room's image, the arm-length image and the standstill, the video's frames
+// JPEG-compressed at `quality`.
+ProtocolRun RunProtocol(const synth::ArmSceneSource& scene, int quality, EngineKind kind) {
+  const int k = scene.background_frames(), m = scene.standstill_frames();
+  EngineContext ctx;
+  ctx.frame_size = scene.size();
+  ctx.fps = scene.fps();
+  ctx.background = scene.EmptyBackground();
+  ctx.arm_length = scene.ArmLengthImage();
+  EngineOptions eo;
+  eo.kind = kind;
+  eo.bgsub.standstill_frames = m;
+  eo.lk.standstill_frames = m;
+  auto engine = Engine::Create(eo);
+  const Status st = engine->Begin(ctx);
+  EXPECT_TRUE(st.ok()) << st.message();
+  ProtocolRun run;
+  if (!st) return run;
+  for (int i = k; i < scene.frame_count(); ++i) {
+    Frame f;
+    synth::ArmTruth t;
+    f.image = synth::JpegRoundTrip(scene.Render(i, &t), quality);
+    f.index = i;
+    f.time_s = i / scene.fps();
+    const ArmMeasurement a = engine->Process(f);
+    if (i < k + m) {
+      EXPECT_FALSE(a.row()) << "frame " << i << " of the standstill gave a row";
+      continue;
+    }
+    ++run.motion;
+    if (a.phase != MeasurementPhase::kOk) continue;
+    ++run.ok;
+    const double du = std::fabs(AngleDiff(a.upper_deg, t.upper_deg));
+    const double df = std::fabs(AngleDiff(a.fore_deg, t.fore_deg));
+    run.sum_err += 0.5 * (du + df);
+    run.wrong += std::max(du, df) > 15;
+  }
+  return run;
+}
+
+ProtocolRun RandomScene(uint64_t seed, synth::SceneTier tier, EngineKind kind) {
+  synth::RandomArmSceneOptions o;
+  o.seed = seed;
+  o.tier = tier;
+  o.size = cv::Size(320, 240);
+  const synth::RandomArmScene scene(o);
+  return RunProtocol(scene, scene.params().jpeg_quality, kind);
+}
+
+ProtocolRun CapsuleScene(uint64_t seed, synth::SceneTier tier, EngineKind kind) {
+  synth::CapsuleArmSceneOptions o;
+  o.seed = seed;
+  o.tier = tier;
+  o.size = cv::Size(320, 240);
+  const synth::CapsuleArmScene scene(o);
+  return RunProtocol(scene, scene.params().jpeg_quality, kind);
+}
+
+void Print(const char* what, const ProtocolRun& r) {
+  std::printf(
+      "%s: %d motion frames, %.1f %% ok, MAE %.2f deg, %d confidently wrong (%.1f %% of ok)\n",
+      what, r.motion, 100 * r.coverage(), r.mae(), r.wrong, 100 * r.wrong_share());
+}
+
+// Pooled over four scenes, as they come: these bounds guard what the engine does today, short of
+// the goals (docs/hybrid.md): measured 61.4 % ok, MAE 3.47 deg, 36 confidently wrong frames of
+// 505 ok. Seed 8001 gives no row (the background difference refuses its calibration: the hanging
+// arm does not lie on the standstill's person, and the tracker cannot calibrate either); on seed
+// 8004 both opinions place the raised forearm's elbow short by the same anthropometric length
+// share, and agree 16 degrees off.
+TEST(HybridProtocol, RandomFiguresWithoutClicks) {
+  ProtocolRun all;
+  for (uint64_t seed = 8001; seed <= 8004; ++seed) {
+    all.Add(RandomScene(seed, synth::SceneTier::kMedium, EngineKind::kHybrid));
+  }
+  Print("hybrid, random medium 8001-8004", all);
+  ASSERT_GT(all.motion, 0);
+  EXPECT_GE(all.coverage(), 0.58);
+  EXPECT_LE(all.mae(), 4.0);
+  EXPECT_LE(all.wrong_share(), 0.08);
+}
+
+// As above: measured 50.7 % ok, MAE 4.03 deg, 24 confidently wrong frames of 480 ok, most on
+// seed 8001, whose short sleeves are the wall's colour (the background difference places the
+// upper arm 30-40 degrees off with full confidence, and the tracker restarts from it).
+TEST(HybridProtocol, CapsuleFiguresWithoutClicks) {
+  ProtocolRun all;
+  for (uint64_t seed = 8001; seed <= 8004; ++seed) {
+    all.Add(CapsuleScene(seed, synth::SceneTier::kMedium, EngineKind::kHybrid));
+  }
+  Print("hybrid, capsule medium 8001-8004", all);
+  ASSERT_GT(all.motion, 0);
+  EXPECT_GE(all.coverage(), 0.47);
+  EXPECT_LE(all.mae(), 4.5);
+  EXPECT_LE(all.wrong_share(), 0.06);
+}
+
+// A tuning scene whose standstill the tracker cannot calibrate from (a sleeve in the room's
+// colour): lk alone gives no ok row at all; the hybrid engine starts its tracker from the
+// background difference's steady joints instead, and measures the scene.
+TEST(HybridProtocol, ATrackerThatCannotCalibrateStartsFromTheBackgroundDifference) {
+  const ProtocolRun lk = RandomScene(1001, synth::SceneTier::kMedium, EngineKind::kLk);
+  const ProtocolRun hybrid = RandomScene(1001, synth::SceneTier::kMedium, EngineKind::kHybrid);
+  Print("lk, random medium 1001", lk);
+  Print("hybrid, random medium 1001", hybrid);
+  EXPECT_EQ(lk.ok, 0);
+  EXPECT_GE(hybrid.coverage(), 0.9);
+  EXPECT_LE(hybrid.mae(), 4.5);
+  EXPECT_EQ(hybrid.wrong, 0);
+}
+
+// Joints clicked on footage with no empty room: there is no second opinion, so the rows are the
+// tracker's own, exactly as the lk engine gives them, and the first row says so.
+TEST(HybridProtocol, WithoutABackgroundTheRowsAreTheTrackersAlone) {
+  synth::RandomArmSceneOptions so;
+  so.seed = 8002;
+  so.tier = synth::SceneTier::kMedium;
+  so.size = cv::Size(320, 240);
+  const synth::RandomArmScene scene(so);
+  const int first = scene.first_motion_frame();
+  const synth::ArmTruth t = scene.Truth(first);
+  EngineContext ctx;
+  ctx.frame_size = scene.size();
+  ctx.fps = scene.fps();
+  ctx.shoulder_px = t.shoulder_px;
+  ctx.elbow_px = t.elbow_px;
+  ctx.wrist_px = t.wrist_px;
+  EngineOptions lk_options, hybrid_options;
+  lk_options.kind = EngineKind::kLk;
+  hybrid_options.kind = EngineKind::kHybrid;
+  auto lk = Engine::Create(lk_options);
+  auto hybrid = Engine::Create(hybrid_options);
+  ASSERT_TRUE(lk->Begin(ctx).ok());
+  ASSERT_TRUE(hybrid->Begin(ctx).ok());
+  int ok = 0;
+  for (int i = first; i < first + 40; ++i) {
+    Frame f;
+    f.image = synth::JpegRoundTrip(scene.Render(i), scene.params().jpeg_quality);
+    f.index = i;
+    f.time_s = i / scene.fps();
+    const ArmMeasurement a = lk->Process(f), b = hybrid->Process(f);
+    ASSERT_EQ(a.phase, b.phase) << "frame " << i;
+    if (i == first) {
+      EXPECT_NE(b.estimate.find("no second opinion"), std::string::npos) << b.estimate;
+    }
+    if (a.phase != MeasurementPhase::kOk) continue;
+    ++ok;
+    EXPECT_EQ(a.upper_deg, b.upper_deg) << "frame " << i;
+    EXPECT_EQ(a.fore_deg, b.fore_deg) << "frame " << i;
+  }
+  EXPECT_GT(ok, 30);
+}
+
+}  // namespace
+}  // namespace armmimic
