@@ -65,7 +65,12 @@ constexpr const char* kResultKeys[] = {
     "levels", "motion_threshold", "still_frames_drop",
     // marker
     "median", "low", "high", "flood_range", "area", "N_px", "e_px", "fov_deg", "radius_px",
-    "alpha_deg", "e_radii"};
+    "alpha_deg", "e_radii",
+    // hybrid (and its lk's and bgsub's, prefixed: kEnginePrefixes)
+    "second_opinion", "max_disagreement", "joint_px", "restart_frames", "confirm_frames"};
+
+// The hybrid engine records the two engines it runs under these prefixes ("lk_window").
+constexpr const char* kEnginePrefixes[] = {"lk_", "bgsub_"};
 
 // The plain keys RunFromMeta reads.
 constexpr const char* kInputKeys[] = {
@@ -78,6 +83,16 @@ bool IsKnownPlainKey(const std::string& key) {
                        [&key](const char* k) { return key == k; });
   };
   if (in(kResultKeys) || in(kInputKeys)) return true;
+  for (const char* prefix : kEnginePrefixes) {
+    const std::string p(prefix);
+    if (key.size() > p.size() && key.compare(0, p.size(), p) == 0) {
+      const std::string rest = key.substr(p.size());
+      if (std::any_of(std::begin(kResultKeys), std::end(kResultKeys),
+                      [&rest](const char* k) { return rest == k; })) {
+        return true;
+      }
+    }
+  }
   for (const PathKey& p : kPathKeys) {
     if (key == p.key || key == std::string(p.key) + kAbsSuffix) return true;
   }
@@ -144,13 +159,16 @@ Status RunFromMeta(const AngleMeta& meta, const std::string& source_name, Analys
   run.inputs = o->inputs;
   if (!ParseEngineKind(engine, &run.engine.kind)) {
     return err("engine=" + Excerpt(engine) +
-               " is not an engine this version knows (bgsub, lk, marker or pose)");
+               " is not an engine this version knows (bgsub, lk, marker, pose or hybrid)");
   }
   std::vector<double> n;
   std::vector<std::string> removed;
   for (const auto& [k, v] : meta) {
     if (k.find('.') != std::string::npos) {
-      if (k.rfind(engine + ".", 0) != 0) {
+      // The hybrid engine records the settings of the lk and bgsub engines it runs too.
+      const bool part = run.engine.kind == EngineKind::kHybrid &&
+                        (k.rfind("lk.", 0) == 0 || k.rfind("bgsub.", 0) == 0);
+      if (k.rfind(engine + ".", 0) != 0 && !part) {
         return err(k + "=" + Excerpt(v) + " is not a setting of the recorded engine " + engine);
       }
       if (FindRemovedEngineOption(k)) {
