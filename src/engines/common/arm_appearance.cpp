@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "armmimic/core/angles.h"
+#include "common/light_gain.h"
 
 namespace armmimic::arm {
 namespace {
@@ -92,71 +93,6 @@ double HalfWidth(const cv::Mat& bgr, const ColourModel& colour, const cv::Point2
   return std::clamp(v[v.size() / 2], kMinHalfWidth, max_hw);
 }
 
-// The light on the frame against the background, per channel, over blocks of `block` pixels:
-// the median ratio of frame to background over the known pixels away from `ignore`, smoothed
-// over neighbouring blocks and interpolated to every pixel (CV_32FC3 of the region's size). A
-// shadow, a flicker or a drift of the light changes whole areas by one factor; the arm changes a
-// part of a block. Blocks with too few pixels take the whole region's median.
-cv::Mat LightGain(const cv::Mat& bgr, const cv::Mat& background, const cv::Mat& known,
-                  const cv::Mat& ignore, const cv::Rect& region) {
-  constexpr int kBlock = 24, kMinSamples = 24;
-  constexpr float kMinGain = 0.4f, kMaxGain = 2.5f;
-  const int bx = std::max(1, (region.width + kBlock - 1) / kBlock);
-  const int by = std::max(1, (region.height + kBlock - 1) / kBlock);
-  std::vector<std::vector<float>> ratios(static_cast<std::size_t>(bx * by * 3));
-  for (int y = 0; y < region.height; y += 2) {
-    const cv::Vec3b* in = bgr.ptr<cv::Vec3b>(y + region.y) + region.x;
-    const cv::Vec3f* b = background.ptr<cv::Vec3f>(y + region.y) + region.x;
-    const uchar* k = known.ptr<uchar>(y + region.y) + region.x;
-    const uchar* ign = ignore.empty() ? nullptr : ignore.ptr<uchar>(y + region.y) + region.x;
-    for (int x = y & 2 ? 1 : 0; x < region.width; x += 2) {
-      if (!k[x] || (ign && ign[x])) continue;
-      const int cell = (y / kBlock) * bx + x / kBlock;
-      for (int c = 0; c < 3; ++c) {
-        const float r = (in[x][c] + 4.f) / (b[x][c] + 4.f);
-        ratios[static_cast<std::size_t>(cell * 3 + c)].push_back(r);
-      }
-    }
-  }
-  auto median = [](std::vector<float>& v) {
-    const auto m = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-    std::nth_element(v.begin(), m, v.end());
-    return *m;
-  };
-  // The whole region's medians, taken only when a block needs them (most frames none does).
-  float whole[3] = {1.f, 1.f, 1.f};
-  bool have_whole = false;
-  auto whole_median = [&](int c) {
-    if (!have_whole) {
-      for (int ch = 0; ch < 3; ++ch) {
-        std::vector<float> all;
-        for (std::size_t cell = 0; cell < ratios.size() / 3; ++cell) {
-          const std::vector<float>& v = ratios[cell * 3 + ch];
-          all.insert(all.end(), v.begin(), v.end());
-        }
-        if (!all.empty()) whole[ch] = median(all);
-      }
-      have_whole = true;
-    }
-    return whole[c];
-  };
-  cv::Mat grid(by, bx, CV_32FC3);
-  for (int j = 0; j < by; ++j) {
-    for (int i = 0; i < bx; ++i) {
-      cv::Vec3f& g = grid.at<cv::Vec3f>(j, i);
-      for (int c = 0; c < 3; ++c) {
-        std::vector<float>& v = ratios[static_cast<std::size_t>((j * bx + i) * 3 + c)];
-        g[c] = std::clamp(static_cast<int>(v.size()) >= kMinSamples ? median(v) : whole_median(c),
-                          kMinGain, kMaxGain);
-      }
-    }
-  }
-  cv::blur(grid, grid, cv::Size(3, 3), cv::Point(-1, -1), cv::BORDER_REPLICATE);
-  cv::Mat gain;
-  // Block centres to pixels: the grid's cell i covers [i*kBlock, (i+1)*kBlock).
-  cv::resize(grid, gain, cv::Size(bx * kBlock, by * kBlock), 0, 0, cv::INTER_LINEAR);
-  return gain(cv::Rect(0, 0, region.width, region.height));
-}
 
 }  // namespace
 
@@ -331,6 +267,22 @@ void LearntBackground::Update(const cv::Mat& bgr, const cv::Mat& hidden, double 
   }
 }
 
+namespace {
+
+// max(kMinChange, the kChangeQuantile quantile of `sampled` distances) from the distances above
+// kMinChange alone (`above`, reordered): the others cannot move it.
+double ChangeNoise(std::vector<float>* above, std::size_t sampled) {
+  if (sampled == 0) return kMinChange;
+  const auto at = static_cast<std::size_t>(kChangeQuantile * (sampled - 1));
+  const std::size_t at_most_min = sampled - above->size();
+  if (at < at_most_min) return kMinChange;
+  const auto q = above->begin() + static_cast<std::ptrdiff_t>(at - at_most_min);
+  std::nth_element(above->begin(), q, above->end());
+  return std::max(kMinChange, static_cast<double>(*q));
+}
+
+}  // namespace
+
 void EvidenceMap::Compute(const cv::Mat& bgr, const LearntBackground& background,
                           const ColourModel& colour, const cv::Rect& region,
                           const cv::Mat& ignore) {
@@ -386,17 +338,7 @@ void EvidenceMap::Compute(const cv::Mat& bgr, const LearntBackground& background
       }
     }
   }
-  double noise = 0;  // the quantile, where it is above kMinChange
-  if (sampled > 0) {
-    const auto at = static_cast<std::size_t>(kChangeQuantile * (sampled - 1));
-    const std::size_t at_most_min = sampled - distances_.size();
-    if (at >= at_most_min) {
-      const auto q = distances_.begin() + static_cast<std::ptrdiff_t>(at - at_most_min);
-      std::nth_element(distances_.begin(), q, distances_.end());
-      noise = *q;
-    }
-  }
-  const double low = std::max(kMinChange, noise);
+  const double low = ChangeNoise(&distances_, sampled);
   const double span = std::max(kMinChangeSpan, low);
   full_change_ = low + span;
   const float lowf = static_cast<float>(low), inv = static_cast<float>(1 / span);

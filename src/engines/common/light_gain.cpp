@@ -1,0 +1,64 @@
+#include "common/light_gain.h"
+
+#include <algorithm>
+#include <vector>
+
+#include <opencv2/imgproc.hpp>
+
+namespace armmimic::arm {
+
+cv::Mat LightGain(const cv::Mat& bgr, const cv::Mat& background, const cv::Mat& known,
+                  const cv::Mat& ignore, const cv::Rect& region) {
+  constexpr int kBlock = 24, kMinSamples = 24;
+  constexpr float kMinGain = 0.4f, kMaxGain = 2.5f;
+  const int bx = std::max(1, (region.width + kBlock - 1) / kBlock);
+  const int by = std::max(1, (region.height + kBlock - 1) / kBlock);
+  std::vector<std::vector<float>> ratios(static_cast<std::size_t>(bx * by * 3));
+  for (int y = 0; y < region.height; y += 2) {
+    const cv::Vec3b* in = bgr.ptr<cv::Vec3b>(y + region.y) + region.x;
+    const cv::Vec3f* b = background.ptr<cv::Vec3f>(y + region.y) + region.x;
+    const uchar* k = known.ptr<uchar>(y + region.y) + region.x;
+    const uchar* ign = ignore.empty() ? nullptr : ignore.ptr<uchar>(y + region.y) + region.x;
+    for (int x = y & 2 ? 1 : 0; x < region.width; x += 2) {
+      if (!k[x] || (ign && ign[x])) continue;
+      const int cell = (y / kBlock) * bx + x / kBlock;
+      for (int c = 0; c < 3; ++c) {
+        const float r = (in[x][c] + 4.f) / (b[x][c] + 4.f);
+        ratios[static_cast<std::size_t>(cell * 3 + c)].push_back(r);
+      }
+    }
+  }
+  auto median = [](std::vector<float>& v) {
+    const auto m = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+    std::nth_element(v.begin(), m, v.end());
+    return *m;
+  };
+  // The whole region's median of a channel, taken only when a block needs it (seldom).
+  float whole[3] = {0.f, 0.f, 0.f};
+  auto whole_median = [&](int c) {
+    if (whole[c] > 0) return whole[c];
+    std::vector<float> all;
+    for (std::size_t cell = static_cast<std::size_t>(c); cell < ratios.size(); cell += 3) {
+      all.insert(all.end(), ratios[cell].begin(), ratios[cell].end());
+    }
+    return whole[c] = all.empty() ? 1.f : median(all);
+  };
+  cv::Mat grid(by, bx, CV_32FC3);
+  for (int j = 0; j < by; ++j) {
+    for (int i = 0; i < bx; ++i) {
+      cv::Vec3f& g = grid.at<cv::Vec3f>(j, i);
+      for (int c = 0; c < 3; ++c) {
+        std::vector<float>& v = ratios[static_cast<std::size_t>((j * bx + i) * 3 + c)];
+        g[c] = std::clamp(static_cast<int>(v.size()) >= kMinSamples ? median(v) : whole_median(c),
+                          kMinGain, kMaxGain);
+      }
+    }
+  }
+  cv::blur(grid, grid, cv::Size(3, 3), cv::Point(-1, -1), cv::BORDER_REPLICATE);
+  cv::Mat gain;
+  // Block centres to pixels: the grid's cell i covers [i*kBlock, (i+1)*kBlock).
+  cv::resize(grid, gain, cv::Size(bx * kBlock, by * kBlock), 0, 0, cv::INTER_LINEAR);
+  return gain(cv::Rect(0, 0, region.width, region.height));
+}
+
+}  // namespace armmimic::arm
