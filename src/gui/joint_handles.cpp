@@ -1,0 +1,54 @@
+#include "joint_handles.h"
+
+#include <cmath>
+
+namespace armmimic::gui {
+namespace {
+
+const QColor kHandle(255, 190, 40);
+
+}  // namespace
+
+void JointHandles::set(int frame, const Joints& joints_px) {
+  frame_ = frame;
+  joints_ = joints_px;
+}
+
+int JointHandles::hit(const QPointF& px, double radius_px) const {
+  int best = -1;
+  double best_d = radius_px;
+  for (int i = 0; i < 3; ++i) {
+    const double d = std::hypot(px.x() - joints_[i].x(), px.y() - joints_[i].y());
+    if (d <= best_d) {
+      best = i;
+      best_d = d;
+    }
+  }
+  return best;
+}
+
+void JointHandles::paint(QPainter& p, double screen_px) const {
+  p.save();
+  p.setRenderHint(QPainter::Antialiasing);
+  p.setPen(QPen(kHandle, 2 * screen_px, Qt::DashLine));
+  p.drawLine(joints_[0], joints_[1]);
+  p.drawLine(joints_[1], joints_[2]);
+  const char* names[3] = {"S", "E", "W"};
+  QFont font = p.font();
+  font.setPixelSize(std::max(1, static_cast<int>(std::lround(12 * screen_px))));
+  font.setBold(true);
+  p.setFont(font);
+  const double r = 7 * screen_px;
+  for (int i = 0; i < 3; ++i) {
+    p.setPen(QPen(Qt::black, 3 * screen_px));
+    p.setBrush(Qt::NoBrush);
+    p.drawEllipse(joints_[i], r, r);
+    p.setPen(QPen(kHandle, 2 * screen_px));
+    p.drawEllipse(joints_[i], r, r);
+    p.drawPoint(joints_[i]);
+    p.drawText(joints_[i] + QPointF(r + 2 * screen_px, -r), names[i]);
+  }
+  p.restore();
+}
+
+}  // namespace armmimic::gui
