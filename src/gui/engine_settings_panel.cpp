@@ -144,8 +144,7 @@ QWidget* EngineSettingsPanel::makeInputs() {
   sl->addWidget(shoulder_x_, 1);
   sl->addWidget(new QLabel("y"));
   sl->addWidget(shoulder_y_, 1);
-  // The elbow and wrist of the start frame (lk, hybrid): clicked, typed, from Auto-calibrate or
-  // dragged from the standstill's estimate.
+  // The elbow and wrist of the start frame (lk, hybrid): clicked, typed, dragged or calibrated.
   elbow_wrist_box_ = new QGroupBox(tr("Elbow and wrist"));
   elbow_wrist_box_->setToolTip(tr("--elbow, --wrist: the joints in the start frame (lk, hybrid)"));
   elbow_wrist_box_->setCheckable(true);
