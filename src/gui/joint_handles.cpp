@@ -35,7 +35,7 @@ void JointHandles::paint(QPainter& p, double screen_px) const {
   p.drawLine(joints_[1], joints_[2]);
   const char* names[3] = {"S", "E", "W"};
   QFont font = p.font();
-  font.setPixelSize(std::max(1, static_cast<int>(std::lround(12 * screen_px))));
+  font.setPixelSize(std::max(1, static_cast<int>(std::lround(14 * screen_px))));
   font.setBold(true);
   p.setFont(font);
   const double r = 7 * screen_px;
@@ -46,7 +46,14 @@ void JointHandles::paint(QPainter& p, double screen_px) const {
     p.setPen(QPen(kHandle, 2 * screen_px));
     p.drawEllipse(joints_[i], r, r);
     p.drawPoint(joints_[i]);
-    p.drawText(joints_[i] + QPointF(r + 2 * screen_px, -r), names[i]);
+    // The letter beside its handle, outlined in black to read on any background.
+    const QPointF at = joints_[i] + QPointF(r + 2 * screen_px, -r);
+    p.setPen(Qt::black);
+    for (const QPointF d : {QPointF(-1, 0), QPointF(1, 0), QPointF(0, -1), QPointF(0, 1)}) {
+      p.drawText(at + d * screen_px, names[i]);
+    }
+    p.setPen(kHandle);
+    p.drawText(at, names[i]);
   }
   p.restore();
 }
