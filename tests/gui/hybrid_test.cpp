@@ -167,6 +167,47 @@ TEST_F(HybridTest, ItsOptionsSurviveASessionAndTheSavedSettings) {
   EXPECT_EQ(restored.options().engine.hybrid.max_disagreement_deg, 9.5);
 }
 
+// An angle file the CLI made with the hybrid engine opens with its engine, its own parameters
+// and those of the two engines it ran.
+TEST_F(HybridTest, AHybridAngleFileRestoresItsThreeSetsOfParameters) {
+  const synth::RandomArmScene truth(Scene().options);
+  const std::string out = tmp_.file("hybrid.tsv");
+  const CliResult r = RunCli({"-q",
+                              "analyze",
+                              Scene().file("scene.avi"),
+                              "-o",
+                              out,
+                              "--engine",
+                              "hybrid",
+                              "--background",
+                              Scene().file("background.png"),
+                              "--arm-length",
+                              Scene().file("armlength.png"),
+                              "--start",
+                              std::to_string(truth.background_frames()),
+                              "--standstill-frames",
+                              std::to_string(truth.standstill_frames()),
+                              "--param",
+                              "hybrid.max_disagreement_deg=9.5",
+                              "--param",
+                              "lk.max_corners=77",
+                              "--param",
+                              "bgsub.closing_size=7"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  MainWindow w;
+  w.show();
+  ASSERT_TRUE(w.openAngleFile(QString::fromStdString(out))) << w.log()->text().toStdString();
+  const AnalysisOptions o = w.settingsPanel()->options();
+  EXPECT_EQ(o.engine.kind, EngineKind::kHybrid);
+  EXPECT_EQ(Engine(w.settingsPanel())->currentData().toInt(), int(EngineKind::kHybrid));
+  EXPECT_EQ(o.engine.hybrid.max_disagreement_deg, 9.5);
+  EXPECT_EQ(o.engine.lk.max_corners, 77);
+  EXPECT_EQ(o.engine.lk.standstill_frames, truth.standstill_frames());
+  EXPECT_EQ(o.engine.bgsub.closing_size, 7);
+  EXPECT_EQ(o.start, truth.background_frames());
+  EXPECT_GT(w.results().rows(), 0);
+}
+
 TEST_F(HybridTest, MimicLiveRunsTheHybridEngine) {
   MainWindow w;
   ShowAndOpen(w);
