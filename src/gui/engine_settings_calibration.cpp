@@ -57,17 +57,9 @@ Status EngineSettingsPanel::autoCalibrate(const std::vector<std::string>& inputs
   return Status::Ok();
 }
 
-Status EngineSettingsPanel::estimateStandstill(const std::vector<std::string>& inputs,
-                                               StandstillJoints* joints) {
-  if (inputs.empty()) return Status::Error("Calibrate: open a video first");
-  AnalysisOptions o = options();
-  o.inputs = inputs;
-  const Status st = EstimateStandstillJoints(o, joints);
-  if (!st) return Status::Error(st.key(), "Calibrate: " + st.message());
-  // Clicked joints would override the calibration shown: accepting it means the run's own.
+void EngineSettingsPanel::clearJoints() {
   setShoulder(std::nullopt);
   elbow_wrist_box_->setChecked(false);
-  return Status::Ok();
 }
 
 }  // namespace armmimic::gui

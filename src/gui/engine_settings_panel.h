@@ -9,7 +9,6 @@
 #include <QWidget>
 
 #include "armmimic/engines/analysis.h"
-#include "armmimic/engines/standstill_estimate.h"
 
 class QCheckBox;
 class QComboBox;
@@ -44,11 +43,10 @@ class EngineSettingsPanel : public QWidget {
   // The Auto-calibrate button's work: the shoulder, elbow and wrist in the start frame of
   // `inputs` from the pose network. The message names what failed.
   Status autoCalibrate(const std::vector<std::string>& inputs);
-  // The Calibrate button's work (lk, hybrid in the thesis protocol): the joints the run would
-  // calibrate itself from, on the last standstill frame of `inputs`. Clears the clicked joints
-  // first, so that accepting them leaves the run to calibrate itself
-  // (engine_settings_calibration.cpp).
-  Status estimateStandstill(const std::vector<std::string>& inputs, StandstillJoints* joints);
+  // Forgets the clicked joints (shoulder, elbow and wrist): the run calibrates itself again.
+  // Calibrate from standstill does this once its joints are shown, so that accepting them
+  // leaves the run to its own calibration.
+  void clearJoints();
   // Whether estimated joints are shown for the operator to accept (enables Accept).
   void setEstimateShown(bool shown);
 

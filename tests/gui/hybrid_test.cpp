@@ -12,6 +12,7 @@
 #include <QSpinBox>
 #include <QTest>
 
+#include "analysis_job.h"
 #include "armmimic/engines/option_fields.h"
 #include "armmimic/synth/random_arm_scene.h"
 #include "engine_settings_panel.h"
@@ -296,6 +297,24 @@ TEST_F(HybridTest, CalibrateShowsTheEstimatedJointsToAcceptOrDrag) {
   EXPECT_TRUE(w.settingsPanel()->findChild<QGroupBox*>("elbowWristBox")->isChecked());
   QTest::mouseClick(accept, Qt::LeftButton);
   EXPECT_TRUE(w.settingsPanel()->options().elbow_px.has_value());  // accepted as dragged
+}
+
+// A calibration the inputs cannot give is reported at its field, and shows no handles.
+TEST_F(HybridTest, ACalibrationThatCannotBeMadeIsNamedAtItsField) {
+  MainWindow w;
+  OpenProtocol(w);
+  AnalysisOptions o = w.settingsPanel()->options();
+  o.arm_length_path = tmp_.file("missing.png");
+  w.settingsPanel()->setOptions(o);
+  auto* calibrate = w.settingsPanel()->findChild<QPushButton*>("standstillCalibrate");
+  ASSERT_TRUE(calibrate->isEnabled());
+  QTest::mouseClick(calibrate, Qt::LeftButton);
+  ASSERT_TRUE(WaitUntil([&] { return !w.job()->isRunning(); }));
+  const QString log = w.log()->text();
+  EXPECT_TRUE(log.contains("Arm-length image: ")) << log.toStdString();
+  EXPECT_TRUE(log.contains("missing.png")) << log.toStdString();
+  EXPECT_TRUE(w.view()->jointHandles().empty());
+  EXPECT_FALSE(w.settingsPanel()->findChild<QPushButton*>("acceptEstimate")->isEnabled());
 }
 
 }  // namespace
