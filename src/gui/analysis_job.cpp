@@ -52,10 +52,18 @@ void AnalysisWorker::estimateBackground(const QStringList& inputs, int start, in
   emit backgroundFinished(st ? QString() : QString::fromStdString(st.message()), output_path);
 }
 
+void AnalysisWorker::estimateStandstill(const AnalysisOptions& options) {
+  StandstillJoints joints;
+  const Status st = EstimateStandstillJoints(options, &joints);
+  emit standstillFinished(st ? QString() : QString::fromStdString(st.message()),
+                          QString::fromStdString(st.key()), joints);
+}
+
 AnalysisJob::AnalysisJob(QObject* parent) : QObject(parent), worker_(new AnalysisWorker(&cancel_)) {
   qRegisterMetaType<armmimic::AnalysisOptions>();
   qRegisterMetaType<armmimic::ArmMeasurement>();
   qRegisterMetaType<armmimic::AnalysisSummary>();
+  qRegisterMetaType<armmimic::StandstillJoints>();
   worker_->moveToThread(&thread_);
   connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
   connect(worker_, &AnalysisWorker::phase, this, &AnalysisJob::phase);
@@ -90,6 +98,18 @@ AnalysisJob::AnalysisJob(QObject* parent) : QObject(parent), worker_(new Analysi
             }
             emit backgroundReady(path);
             emit finished(true, false);
+          });
+  connect(worker_, &AnalysisWorker::standstillFinished, this,
+          [this](const QString& error, const QString& key, const StandstillJoints& joints) {
+            running_ = false;
+            if (!error.isEmpty()) {
+              emit failed(error, key);
+              emit finished(false, false);
+              return;
+            }
+            const bool cancelled = cancel_.load();
+            if (!cancelled) emit standstillReady(joints);
+            emit finished(true, cancelled);
           });
   thread_.setObjectName("armmimic-analysis");
   thread_.start();
@@ -203,6 +223,15 @@ bool AnalysisJob::startBackground(const QStringList& inputs, int start, int coun
   QMetaObject::invokeMethod(worker_, [w = worker_, inputs, start, count, path] {
     w->estimateBackground(inputs, start, count, path);
   });
+  return true;
+}
+
+bool AnalysisJob::startStandstill(const AnalysisOptions& options) {
+  if (running_) return false;
+  cancel_.store(false);
+  running_ = true;
+  emit started();
+  QMetaObject::invokeMethod(worker_, [w = worker_, options] { w->estimateStandstill(options); });
   return true;
 }
 

@@ -1,7 +1,8 @@
-// AnalysisJob: runs armmimic::AnalyzeToFile (the same call as `armmimic-cli analyze`) or
-// EstimateBackground on a worker thread. Cancel is an atomic flag; progress, measurements and the
-// end are signals. The angle file goes to a session folder; exporting copies it, so the GUI's
-// export is byte-for-byte what the CLI writes for the same options.
+// AnalysisJob: runs armmimic::AnalyzeToFile (the same call as `armmimic-cli analyze`),
+// EstimateBackground or EstimateStandstillJoints on a worker thread. Cancel is an atomic flag;
+// progress, measurements and the end are signals. The angle file goes to a session folder;
+// exporting copies it, so the GUI's export is byte-for-byte what the CLI writes for the same
+// options.
 #pragma once
 
 #include <atomic>
@@ -13,6 +14,7 @@
 #include <QThread>
 
 #include "armmimic/engines/analysis.h"
+#include "armmimic/engines/standstill_estimate.h"
 
 namespace armmimic::gui {
 
@@ -25,6 +27,7 @@ class AnalysisWorker : public QObject {
   void analyze(const armmimic::AnalysisOptions& options, const QString& output_path, bool live);
   void estimateBackground(const QStringList& inputs, int start, int count,
                           const QString& output_path);
+  void estimateStandstill(const armmimic::AnalysisOptions& options);
 
  signals:
   void phase(const QString& text);
@@ -35,6 +38,8 @@ class AnalysisWorker : public QObject {
   void analysisFinished(const QString& error, const QString& error_key,
                         const armmimic::AnalysisSummary& summary);
   void backgroundFinished(const QString& error, const QString& output_path);
+  void standstillFinished(const QString& error, const QString& error_key,
+                          const armmimic::StandstillJoints& joints);
 
  private:
   std::atomic<bool>* cancel_;
@@ -50,6 +55,9 @@ class AnalysisJob : public QObject {
   // Starts an analysis; returns false (and emits failed) when the options do not check out.
   bool start(const AnalysisOptions& options, bool live = false);
   bool startBackground(const QStringList& inputs, int start, int count, const QString& path);
+  // The joints the lk or hybrid run of `options` calibrates itself from (standstillReady, or
+  // failed with the setting's key).
+  bool startStandstill(const AnalysisOptions& options);
   void cancel();
   // The angle file of the last finished analysis ("" when none); with both arms analysed (the
   // pose engine's side both), the left arm's.
@@ -85,6 +93,7 @@ class AnalysisJob : public QObject {
   void liveFrame(int index, const QImage& image, double time_s);
   void finished(bool ok, bool cancelled);
   void backgroundReady(const QString& path);
+  void standstillReady(const armmimic::StandstillJoints& joints);
   // `key`: the setting the message is about (Status::key()), or "" (EngineSettingsPanel::showError
   // words it for the panel).
   void failed(const QString& message, const QString& key = QString());
@@ -108,3 +117,4 @@ class AnalysisJob : public QObject {
 Q_DECLARE_METATYPE(armmimic::AnalysisOptions)
 Q_DECLARE_METATYPE(armmimic::ArmMeasurement)
 Q_DECLARE_METATYPE(armmimic::AnalysisSummary)
+Q_DECLARE_METATYPE(armmimic::StandstillJoints)

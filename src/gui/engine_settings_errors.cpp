@@ -39,8 +39,11 @@ QString EngineSettingsPanel::showError(const QString& key, const QString& messag
   const qsizetype dot = key.indexOf('.');
   EngineKind kind;
   if (ParseEngineKind(key.left(dot).toStdString(), &kind)) {
-    // An engine parameter: its engine's page, and the Advanced section when it is there.
-    engine_->setCurrentIndex(engine_->findData(int(kind)));
+    // An engine parameter: its engine's page (the hybrid's shows lk's and bgsub's too), and the
+    // Advanced section when it is there.
+    const bool on_hybrid_page = engine_->currentData().toInt() == int(EngineKind::kHybrid) &&
+                                (kind == EngineKind::kLk || kind == EngineKind::kBgsub);
+    if (!on_hybrid_page) engine_->setCurrentIndex(engine_->findData(int(kind)));
     if (!field->isVisibleTo(forms_[int(kind)])) advancedToggle(kind)->setChecked(true);
   }
   // The background's image or frames: the mode that shows the field.

@@ -16,7 +16,6 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
-#include "armmimic/engines/pose.h"
 #include "parameter_form.h"
 #include "wheel_guard.h"
 
@@ -50,22 +49,7 @@ QDoubleSpinBox* DSpin(double lo, double hi, double value, int decimals, const QS
 EngineSettingsPanel::EngineSettingsPanel(QWidget* parent)
     : QWidget(parent), engine_(new QComboBox), pages_(new QStackedWidget) {
   engine_->setObjectName("engineCombo");
-  engine_->addItem(tr("Background subtraction (ch. 5)"), int(EngineKind::kBgsub));
-  engine_->addItem(tr("Lucas–Kanade tracking (ch. 6)"), int(EngineKind::kLk));
-  engine_->addItem(tr("Marker joint (ch. 4)"), int(EngineKind::kMarker));
-  engine_->addItem(tr("Pose network"), int(EngineKind::kPose));
-  forms_[0] = new ParameterForm(EngineKind::kBgsub,
-                                LiftOptionFields(BgsubOptionFields(), &EngineOptions::bgsub));
-  forms_[1] =
-      new ParameterForm(EngineKind::kLk, LiftOptionFields(LkOptionFields(), &EngineOptions::lk));
-  forms_[2] = new ParameterForm(EngineKind::kMarker,
-                                LiftOptionFields(MarkerOptionFields(), &EngineOptions::marker));
-  forms_[3] = new ParameterForm(EngineKind::kPose,
-                                LiftOptionFields(PoseOptionFields(), &EngineOptions::pose));
-  for (ParameterForm* form : forms_) {
-    pages_->addWidget(form);
-    connect(form, &ParameterForm::changed, this, &EngineSettingsPanel::changed);
-  }
+  makeForms();
   auto* params = new QGroupBox(tr("Engine parameters"));
   auto* pl = new QVBoxLayout(params);
   pl->addWidget(pages_);
@@ -78,6 +62,7 @@ EngineSettingsPanel::EngineSettingsPanel(QWidget* parent)
   layout->addWidget(params);
   layout->addStretch();
   connect(engine_, &QComboBox::currentIndexChanged, this, [this](int i) {
+    placeForms(static_cast<EngineKind>(engine_->itemData(i).toInt()));
     pages_->setCurrentIndex(i);
     updateEnabled();
     // The marker engine takes no region or shoulder: the video stops showing them, and shows
@@ -106,6 +91,9 @@ EngineSettingsPanel::EngineSettingsPanel(QWidget* parent)
   connect(elbow_wrist_box_, &QGroupBox::toggled, this, &EngineSettingsPanel::changed);
   connect(auto_calibrate_, &QPushButton::clicked, this,
           &EngineSettingsPanel::autoCalibrateRequested);
+  // Calibrate needs the protocol's background and arm-length image, typed or chosen.
+  connect(background_, &QLineEdit::textChanged, this, &EngineSettingsPanel::updateEnabled);
+  connect(arm_length_, &QLineEdit::textChanged, this, &EngineSettingsPanel::updateEnabled);
   GuardWheel(this);
   updateEnabled();
 }
@@ -156,9 +144,9 @@ QWidget* EngineSettingsPanel::makeInputs() {
   sl->addWidget(shoulder_x_, 1);
   sl->addWidget(new QLabel("y"));
   sl->addWidget(shoulder_y_, 1);
-  // The elbow and wrist of the start frame (lk): clicked, typed or from Auto-calibrate.
+  // The elbow and wrist of the start frame (lk, hybrid): clicked, typed, dragged or calibrated.
   elbow_wrist_box_ = new QGroupBox(tr("Elbow and wrist"));
-  elbow_wrist_box_->setToolTip(tr("--elbow, --wrist: the joints in the start frame (lk)"));
+  elbow_wrist_box_->setToolTip(tr("--elbow, --wrist: the joints in the start frame (lk, hybrid)"));
   elbow_wrist_box_->setCheckable(true);
   elbow_wrist_box_->setChecked(false);
   elbow_wrist_box_->setObjectName("elbowWristBox");
@@ -202,24 +190,13 @@ QWidget* EngineSettingsPanel::makeInputs() {
   form->addRow(shoulder_box_);
   form->addRow(elbow_wrist_box_);
   form->addRow(auto_calibrate_);
+  form->addRow(makeCalibrateRow());
   form->addRow(roi_box_);
   connect(bg_mode_, &QComboBox::currentIndexChanged, this, [this] {
     updateEnabled();
     emit changed();
   });
   return box;
-}
-
-QWidget* EngineSettingsPanel::parameterEditor(EngineKind engine, const QString& key) const {
-  return forms_[int(engine)]->editor(key);
-}
-
-QToolButton* EngineSettingsPanel::advancedToggle(EngineKind engine) const {
-  return forms_[int(engine)]->advancedToggle();
-}
-
-QToolButton* EngineSettingsPanel::resetButton(EngineKind engine) const {
-  return forms_[int(engine)]->resetButton();
 }
 
 void EngineSettingsPanel::updateEnabled() {
@@ -231,12 +208,19 @@ void EngineSettingsPanel::updateEnabled() {
   bg_mode_->setEnabled(background);
   background_row_->setEnabled(background && bg_mode_->currentIndex() == kBgImage);
   bg_frames_->setEnabled(background && bg_mode_->currentIndex() == kBgFrames);
-  arm_length_row_->setEnabled(kind == EngineKind::kBgsub || kind == EngineKind::kLk);
+  // The tracking engines (lk, and hybrid, which runs it) take the clicked or estimated joints.
+  const bool tracking = kind == EngineKind::kLk || kind == EngineKind::kHybrid;
+  arm_length_row_->setEnabled(kind == EngineKind::kBgsub || tracking);
   reference_row_->setEnabled(marker);
   start_->setEnabled(!marker);
   shoulder_box_->setEnabled(!marker && kind != EngineKind::kPose);
-  elbow_wrist_box_->setEnabled(kind == EngineKind::kLk);
-  auto_calibrate_->setEnabled(kind == EngineKind::kLk);
+  elbow_wrist_box_->setEnabled(tracking);
+  auto_calibrate_->setEnabled(tracking);
+  const bool has_background =
+      (bg_mode_->currentIndex() == kBgImage && !background_->text().isEmpty()) ||
+      bg_mode_->currentIndex() == kBgFrames;
+  standstill_calibrate_->setEnabled(tracking && has_background && !arm_length_->text().isEmpty());
+  accept_estimate_->setEnabled(estimate_shown_);
   roi_box_->setEnabled(!marker);
 }
 
@@ -261,7 +245,8 @@ AnalysisOptions EngineSettingsPanel::options() const {
   if (bg_mode_->currentIndex() == kBgFrames) {
     o.background_frames = bg_frames_->value();
   }
-  if (o.engine.kind == EngineKind::kBgsub || o.engine.kind == EngineKind::kLk) {
+  const bool tracking = o.engine.kind == EngineKind::kLk || o.engine.kind == EngineKind::kHybrid;
+  if (o.engine.kind == EngineKind::kBgsub || tracking) {
     o.arm_length_path = arm_length_->text().toStdString();
   }
   o.start = start_->value();
@@ -273,8 +258,7 @@ AnalysisOptions EngineSettingsPanel::options() const {
   }
   o.elbow_px.reset();
   o.wrist_px.reset();
-  if (o.engine.kind == EngineKind::kLk && shoulder_box_->isChecked() &&
-      elbow_wrist_box_->isChecked()) {
+  if (tracking && shoulder_box_->isChecked() && elbow_wrist_box_->isChecked()) {
     o.elbow_px = cv::Point2d(elbow_[0]->value(), elbow_[1]->value());
     o.wrist_px = cv::Point2d(wrist_[0]->value(), wrist_[1]->value());
   }
@@ -346,21 +330,6 @@ void EngineSettingsPanel::setJoint(int joint, const cv::Point2d& px) {
   emit changed();
 }
 
-Status EngineSettingsPanel::autoCalibrate(const std::vector<std::string>& inputs) {
-  if (inputs.empty()) return Status::Error("Auto-calibrate: open a video first");
-  const AnalysisOptions o = options();
-  PoseArm arm;
-  PoseSide side = PoseSide::kAuto;
-  const Status st =
-      DetectArmJoints(inputs, o.start, PoseSide::kAuto, o.model_dir, o.engine.pose, &arm, &side);
-  if (!st) return Status::Error(st.key(), "Auto-calibrate: " + st.message());
-
-  setJoint(1, arm.elbow);
-  setJoint(2, arm.wrist);
-  setShoulder(arm.shoulder);
-  return Status::Ok();
-}
-
 void EngineSettingsPanel::setBackgroundImage(const QString& path) {
   background_->setText(path);
   bg_mode_->setCurrentIndex(kBgImage);
@@ -383,8 +352,9 @@ void EngineSettingsPanel::save(QSettings& s) const {
 void EngineSettingsPanel::load(QSettings& s) {
   s.beginGroup("analysis");
   AnalysisOptions o;
-  o.engine.kind =
-      static_cast<EngineKind>(std::clamp(s.value("engine", int(EngineKind::kBgsub)).toInt(), 0, 3));
+  const int last_kind = static_cast<int>(AllEngineKinds().size()) - 1;
+  o.engine.kind = static_cast<EngineKind>(
+      std::clamp(s.value("engine", int(EngineKind::kBgsub)).toInt(), 0, last_kind));
   for (const ParameterForm* form : forms_) form->load(s, &o.engine);
   o.arm_length_path = s.value("armLength").toString().toStdString();
   o.reference_path = s.value("reference").toString().toStdString();

@@ -2,7 +2,8 @@
 // same AnalysisOptions/EngineOptions structs the CLI fills from its flags. The parameter forms
 // (the main ones and a collapsible "Advanced" section per engine) and their saved settings are
 // built from the engines' parameter tables (armmimic/engines/option_fields.h), so every option
-// is editable.
+// is editable. The hybrid engine's page shows its own form with lk's and bgsub's below it (the
+// same editors, moved there while it is chosen: engine_settings_pages.cpp).
 #pragma once
 
 #include <QWidget>
@@ -37,11 +38,17 @@ class EngineSettingsPanel : public QWidget {
   void setShoulder(const std::optional<cv::Point2d>& shoulder_px);
   void setBackgroundImage(const QString& path);
   // A joint of the start frame, clicked: 0 the shoulder, 1 the elbow, 2 the wrist. The elbow and
-  // wrist are used by the tracking engine (lk).
+  // wrist are used by the tracking engines (lk, hybrid).
   void setJoint(int joint, const cv::Point2d& px);
   // The Auto-calibrate button's work: the shoulder, elbow and wrist in the start frame of
   // `inputs` from the pose network. The message names what failed.
   Status autoCalibrate(const std::vector<std::string>& inputs);
+  // Forgets the clicked joints (shoulder, elbow and wrist): the run calibrates itself again.
+  // Calibrate from standstill does this once its joints are shown, so that accepting them
+  // leaves the run to its own calibration.
+  void clearJoints();
+  // Whether estimated joints are shown for the operator to accept (enables Accept).
+  void setEstimateShown(bool shown);
 
   void save(QSettings& settings) const;
   void load(QSettings& settings);
@@ -67,9 +74,16 @@ class EngineSettingsPanel : public QWidget {
   void roiChanged(const std::optional<cv::Rect>& roi);
   void shoulderChanged(const std::optional<cv::Point2d>& shoulder_px);
   void autoCalibrateRequested();
+  void standstillCalibrateRequested();
+  void estimateAccepted();
 
  private:
+  // The engine combo's entries, the parameter forms and their pages (engine_settings_pages.cpp).
+  void makeForms();
+  // Puts lk's and bgsub's forms on the page of `kind`: the hybrid's, or their own.
+  void placeForms(EngineKind kind);
   QWidget* makeInputs();
+  QWidget* makeCalibrateRow();
   QLineEdit* fileRow(QWidget* parent, const QString& name, QWidget** row);
   void updateEnabled();
 
@@ -78,7 +92,10 @@ class EngineSettingsPanel : public QWidget {
 
   QComboBox* engine_;
   QStackedWidget* pages_;
-  ParameterForm* forms_[4] = {};  // indexed by EngineKind
+  static constexpr int kEngines = 5;
+  ParameterForm* forms_[kEngines] = {};  // indexed by EngineKind
+  QWidget* own_page_[kEngines] = {};     // each engine's page in pages_
+  QWidget* hybrid_part_[2] = {};         // the hybrid page's places for bgsub's and lk's forms
   // Inputs.
   QComboBox* bg_mode_;
   QLineEdit* background_;
@@ -96,6 +113,9 @@ class EngineSettingsPanel : public QWidget {
   QDoubleSpinBox* elbow_[2];
   QDoubleSpinBox* wrist_[2];
   QPushButton* auto_calibrate_;
+  QPushButton* standstill_calibrate_;
+  QPushButton* accept_estimate_;
+  bool estimate_shown_ = false;
   QGroupBox* roi_box_;
   QSpinBox* roi_[4];
 };

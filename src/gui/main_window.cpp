@@ -84,6 +84,7 @@ MainWindow::MainWindow(QWidget* parent)
   wireFileActions();
   wireAnalysis();
   wireMimic();
+  wireCalibration();
   robot_->setInputFiles([this] { return sessionInputs(); });
   robot_->setPlanFile([this] { return planFilePath(); });
   restoreSettings();
@@ -192,17 +193,6 @@ void MainWindow::wireActions() {
           [this](const QPointF& p) { settings_->setShoulder(cv::Point2d(p.x(), p.y())); });
   connect(view_, &VideoView::jointPicked, this, [this](int joint, const QPointF& p) {
     settings_->setJoint(joint, cv::Point2d(p.x(), p.y()));
-  });
-  connect(settings_, &EngineSettingsPanel::autoCalibrateRequested, this, [this] {
-    std::vector<std::string> inputs;
-    for (const QString& s : player_->inputs()) inputs.push_back(s.toStdString());
-    const Status st = settings_->autoCalibrate(inputs);
-    if (st) {
-      log_->info(tr("Auto-calibrated the arm's joints from the pose network"));
-    } else {
-      log_->error(settings_->showError(QString::fromStdString(st.key()),
-                                       QString::fromStdString(st.message())));
-    }
   });
   connect(settings_, &EngineSettingsPanel::roiChanged, this,
           [this](const std::optional<cv::Rect>& r) {

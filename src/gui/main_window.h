@@ -92,6 +92,9 @@ class MainWindow : public QMainWindow {
   void showResults(const ResultStore& results, const QString& angle_path);
   void wireAnalysis();
   void wireMimic();
+  // The calibration buttons of the Analysis panel: the pose network's joints, and the
+  // standstill's estimated joints shown as handles to accept or drag (main_window_calibration.cpp).
+  void wireCalibration();
   void refreshViews();
   // The overlay's options as the actions set them, its texts about the arm picked.
   void applyOverlayOptions();

@@ -75,7 +75,7 @@ QJsonObject WriteAnalysis(const AnalysisOptions& o, const QDir& dir) {
 QString ReadAnalysis(const QJsonObject& a, const QDir& dir, AnalysisOptions* o,
                      std::vector<std::string>* ignored) {
   if (!ParseEngineKind(a.value("engine").toString().toStdString(), &o->engine.kind)) {
-    return "analysis.engine (expected bgsub, lk or marker)";
+    return "analysis.engine (expected bgsub, lk, marker, pose or hybrid)";
   }
   const QJsonObject params = a.value("parameters").toObject();
   for (auto it = params.begin(); it != params.end(); ++it) {

@@ -57,6 +57,18 @@ void VideoView::setTool(Tool tool) {
   setCursor(tool == Tool::kPan ? Qt::OpenHandCursor : Qt::CrossCursor);
 }
 
+void VideoView::setJointHandles(int frame, const JointHandles::Joints& joints_px) {
+  handles_.set(frame, joints_px);
+  dragged_joint_ = -1;
+  update();
+}
+
+void VideoView::clearJointHandles() {
+  handles_.clear();
+  dragged_joint_ = -1;
+  update();
+}
+
 OverlayTexts VideoView::overlayTexts() const {
   const ArmMeasurement* m =
       measurement_ ? &measurement_->Arm(static_cast<std::size_t>(overlay_.arm)) : nullptr;
@@ -138,6 +150,7 @@ void VideoView::paintEvent(QPaintEvent*) {
     p.drawLine(*shoulder_ - QPointF(10 * px, 0), *shoulder_ + QPointF(10 * px, 0));
     p.drawLine(*shoulder_ - QPointF(0, 10 * px), *shoulder_ + QPointF(0, 10 * px));
   }
+  if (handles_.shownOn(frame_index_)) handles_.paint(p, px);
   // The texts at the corners of the part of the frame in view, at their size when the frame
   // fits: zoomed in or panned, the frame count, yaw and angles stay on screen and readable.
   p.resetTransform();
@@ -159,6 +172,10 @@ void VideoView::wheelEvent(QWheelEvent* event) {
 void VideoView::mousePressEvent(QMouseEvent* event) {
   if (image_.isNull()) return;
   const QPointF px = toImage(event->position());
+  if (event->button() == Qt::LeftButton && handles_.shownOn(frame_index_)) {
+    dragged_joint_ = handles_.hit(px, 10 / zoom_);  // within 10 screen pixels
+    if (dragged_joint_ >= 0) return;
+  }
   if (event->button() == Qt::MiddleButton ||
       (event->button() == Qt::LeftButton && tool_ == Tool::kPan)) {
     dragging_ = true;
@@ -169,8 +186,7 @@ void VideoView::mousePressEvent(QMouseEvent* event) {
     rubber_ = QRectF(px, px);
   } else if (event->button() == Qt::LeftButton &&
              (tool_ == Tool::kShoulder || tool_ == Tool::kJoints)) {
-    const QPointF clamped(std::clamp(px.x(), 0.0, image_.width() - 1.0),
-                          std::clamp(px.y(), 0.0, image_.height() - 1.0));
+    const QPointF clamped = clampToImage(px);
     const int joint = tool_ == Tool::kJoints ? next_joint_ : 0;
     if (joint == 0) shoulder_ = clamped;
     update();
@@ -183,8 +199,16 @@ void VideoView::mousePressEvent(QMouseEvent* event) {
   }
 }
 
+QPointF VideoView::clampToImage(const QPointF& px) const {
+  return QPointF(std::clamp(px.x(), 0.0, image_.width() - 1.0),
+                 std::clamp(px.y(), 0.0, image_.height() - 1.0));
+}
+
 void VideoView::mouseMoveEvent(QMouseEvent* event) {
-  if (dragging_) {
+  if (dragged_joint_ >= 0) {
+    handles_.move(dragged_joint_, clampToImage(toImage(event->position())));
+    update();
+  } else if (dragging_) {
     offset_ = drag_offset_ + (event->position() - drag_start_);
     fit_ = false;
     update();
@@ -195,6 +219,14 @@ void VideoView::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void VideoView::mouseReleaseEvent(QMouseEvent* event) {
+  if (dragged_joint_ >= 0) {
+    handles_.move(dragged_joint_, clampToImage(toImage(event->position())));
+    dragged_joint_ = -1;
+    update();
+    // The three joints as they now stand, as if clicked in turn.
+    for (int joint = 0; joint < 3; ++joint) emit jointPicked(joint, handles_.joints()[joint]);
+    return;
+  }
   if (dragging_) {
     dragging_ = false;
     setCursor(tool_ == Tool::kPan ? Qt::OpenHandCursor : Qt::CrossCursor);

@@ -1,5 +1,6 @@
 // VideoView: shows one frame with the overlay; zoom (wheel, +/-), pan (drag), and the region of
-// interest and shoulder tools. Knows nothing about engines or files: it draws what it is given.
+// interest and shoulder tools, and joint handles to drag (the standstill's estimated joints) on
+// the frame they belong to. Knows nothing about engines or files: it draws what it is given.
 #pragma once
 
 #include <optional>
@@ -8,6 +9,7 @@
 #include <QWidget>
 
 #include "armmimic/engines/measurement.h"
+#include "joint_handles.h"
 #include "overlay.h"
 
 namespace armmimic::gui {
@@ -30,6 +32,11 @@ class VideoView : public QWidget {
   const std::optional<QPointF>& shoulder() const { return shoulder_; }
   void setTool(Tool tool);
   Tool tool() const { return tool_; }
+  // Handles on the joints of frame `frame`, shown while that frame is: a handle dragged (with
+  // any tool) emits jointPicked for all three joints as they then are, as if clicked.
+  void setJointHandles(int frame, const JointHandles::Joints& joints_px);
+  void clearJointHandles();
+  const JointHandles& jointHandles() const { return handles_; }
 
   const QImage& image() const { return image_; }
   int frameIndex() const { return frame_index_; }
@@ -69,6 +76,7 @@ class VideoView : public QWidget {
 
  private:
   double fitZoom() const;
+  QPointF clampToImage(const QPointF& px) const;
   void zoomAround(double factor, const QPointF& widget_pos);
   QTransform imageToWidget() const;
 
@@ -88,6 +96,8 @@ class VideoView : public QWidget {
   QPointF drag_start_;
   QPointF drag_offset_;
   std::optional<QRectF> rubber_;  // ROI being drawn, image pixels
+  JointHandles handles_;
+  int dragged_joint_ = -1;  // the handle being dragged
 };
 
 }  // namespace armmimic::gui

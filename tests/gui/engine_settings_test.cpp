@@ -117,13 +117,16 @@ TEST_F(EngineSettingsTest, EveryParameterIsEditableAndSurvivesSettings) {
   const int n = EditAll(panel, EngineKind::kBgsub, BgsubOptionFields(), &EngineOptions::bgsub) +
                 EditAll(panel, EngineKind::kLk, LkOptionFields(), &EngineOptions::lk) +
                 EditAll(panel, EngineKind::kMarker, MarkerOptionFields(), &EngineOptions::marker) +
-                EditAll(panel, EngineKind::kPose, PoseOptionFields(), &EngineOptions::pose);
+                EditAll(panel, EngineKind::kPose, PoseOptionFields(), &EngineOptions::pose) +
+                EditAll(panel, EngineKind::kHybrid, HybridOptionFields(), &EngineOptions::hybrid);
   EXPECT_EQ(n, static_cast<int>(BgsubOptionFields().size() + LkOptionFields().size() +
-                                MarkerOptionFields().size() + PoseOptionFields().size()));
+                                MarkerOptionFields().size() + PoseOptionFields().size() +
+                                HybridOptionFields().size()));
   const AnalysisOptions edited = panel.options();
   EXPECT_TRUE(edited.engine.bgsub.Check().ok()) << edited.engine.bgsub.Check().message();
   EXPECT_TRUE(edited.engine.lk.Check().ok()) << edited.engine.lk.Check().message();
   EXPECT_TRUE(edited.engine.marker.Check().ok()) << edited.engine.marker.Check().message();
+  EXPECT_TRUE(edited.engine.hybrid.Check().ok()) << edited.engine.hybrid.Check().message();
 
   const QString ini = QString::fromStdString(tmp_.file("panel.ini"));
   {
@@ -138,6 +141,7 @@ TEST_F(EngineSettingsTest, EveryParameterIsEditableAndSurvivesSettings) {
   ExpectSame(LkOptionFields(), edited.engine.lk, back.engine.lk);
   ExpectSame(MarkerOptionFields(), edited.engine.marker, back.engine.marker);
   ExpectSame(PoseOptionFields(), edited.engine.pose, back.engine.pose);
+  ExpectSame(HybridOptionFields(), edited.engine.hybrid, back.engine.hybrid);
   EXPECT_EQ(restored.parameterEditor(EngineKind::kLk, "side")->property("currentText"),
             panel.parameterEditor(EngineKind::kLk, "side")->property("currentText"));
 }
