@@ -93,7 +93,6 @@ double HalfWidth(const cv::Mat& bgr, const ColourModel& colour, const cv::Point2
   return std::clamp(v[v.size() / 2], kMinHalfWidth, max_hw);
 }
 
-
 }  // namespace
 
 LearntArm LearnArm(const cv::Mat& bgr, const ArmJoints& joints, double reach_px) {
