@@ -54,8 +54,14 @@ class HybridEngine final : public Engine {
     restarts_ = 0;
     if (Status st = lk_->Begin(context); !st) return st;
     if (!context.background.empty() && !context.arm_length.empty()) {
+      // The second opinion calibrates itself: clicked joints are the tracker's start, and a
+      // measurement that took them too would no longer be apart from it.
+      EngineContext own = context;
+      own.shoulder_px.reset();
+      own.elbow_px.reset();
+      own.wrist_px.reset();
       bgsub_ = internal::CreateBgsubEngine(bgsub_options_);
-      if (Status st = bgsub_->Begin(context); !st) return st;
+      if (Status st = bgsub_->Begin(own); !st) return st;
     }
     first_row_ = true;
     return Status::Ok();

@@ -39,13 +39,24 @@ struct ProtocolRun {
 // The engine `kind` on `scene`'s protocol as `synth arm` writes it and the operator gives it:
 // the empty room's image, the arm-length image and the standstill, the video's frames
 // JPEG-compressed at `quality`.
-ProtocolRun RunProtocol(const synth::ArmSceneSource& scene, int quality, EngineKind kind) {
+// With `clicked`, the joints of the start frame are given too (to whole pixels), as an operator
+// would click them: the standstill's rows are then lost (the second opinion is still taking it),
+// not setup.
+ProtocolRun RunProtocol(const synth::ArmSceneSource& scene, int quality, EngineKind kind,
+                        bool clicked = false) {
   const int k = scene.background_frames(), m = scene.standstill_frames();
   EngineContext ctx;
   ctx.frame_size = scene.size();
   ctx.fps = scene.fps();
   ctx.background = scene.EmptyBackground();
   ctx.arm_length = scene.ArmLengthImage();
+  if (clicked) {
+    const synth::ArmTruth t = scene.Truth(k);
+    auto px = [](const cv::Point2d& p) { return cv::Point2d(std::round(p.x), std::round(p.y)); };
+    ctx.shoulder_px = px(t.shoulder_px);
+    ctx.elbow_px = px(t.elbow_px);
+    ctx.wrist_px = px(t.wrist_px);
+  }
   EngineOptions eo;
   eo.kind = kind;
   eo.bgsub.standstill_frames = m;
@@ -63,7 +74,8 @@ ProtocolRun RunProtocol(const synth::ArmSceneSource& scene, int quality, EngineK
     f.time_s = i / scene.fps();
     const ArmMeasurement a = engine->Process(f);
     if (i < k + m) {
-      EXPECT_FALSE(a.row()) << "frame " << i << " of the standstill gave a row";
+      EXPECT_EQ(a.phase, clicked ? MeasurementPhase::kLost : MeasurementPhase::kSetup)
+          << "frame " << i << " of the standstill";
       continue;
     }
     ++run.motion;
@@ -86,13 +98,14 @@ ProtocolRun RandomScene(uint64_t seed, synth::SceneTier tier, EngineKind kind) {
   return RunProtocol(scene, scene.params().jpeg_quality, kind);
 }
 
-ProtocolRun CapsuleScene(uint64_t seed, synth::SceneTier tier, EngineKind kind) {
+ProtocolRun CapsuleScene(uint64_t seed, synth::SceneTier tier, EngineKind kind,
+                         bool clicked = false) {
   synth::CapsuleArmSceneOptions o;
   o.seed = seed;
   o.tier = tier;
   o.size = cv::Size(320, 240);
   const synth::CapsuleArmScene scene(o);
-  return RunProtocol(scene, scene.params().jpeg_quality, kind);
+  return RunProtocol(scene, scene.params().jpeg_quality, kind, clicked);
 }
 
 void Print(const char* what, const ProtocolRun& r) {
@@ -188,6 +201,20 @@ TEST(HybridProtocol, WithoutABackgroundTheRowsAreTheTrackersAlone) {
     EXPECT_EQ(a.fore_deg, b.fore_deg) << "frame " << i;
   }
   EXPECT_GT(ok, 30);
+}
+
+// The protocol with the joints clicked in its first standstill frame (or dragged in the GUI): the
+// tracker starts from them, the background difference still calibrates itself from the
+// standstill (apart from the clicks), and nearly every motion frame is measured (measured 99.6 %,
+// MAE 3.57 deg: the mean of the tracker's 2.7 and the background difference's 4-7 on this scene).
+// Seed 8004: on 8002 the background difference refuses its calibration when the frames are
+// compressed in memory, though not in the scene's AVI (docs/hybrid.md).
+TEST(HybridProtocol, ClickedJointsStartTheTrackerAndTheSecondOpinionStaysApart) {
+  const ProtocolRun r = CapsuleScene(8004, synth::SceneTier::kMedium, EngineKind::kHybrid, true);
+  Print("hybrid, joints clicked, capsule medium 8004", r);
+  EXPECT_GE(r.coverage(), 0.95);
+  EXPECT_LE(r.mae(), 4.5);
+  EXPECT_EQ(r.wrong, 0);
 }
 
 }  // namespace
