@@ -1,8 +1,7 @@
 // The hybrid engine (docs/hybrid.md): lk's model tracker carries the arm, started from the
 // standstill's self-calibration (or clicked joints, or the pose network), and bgsub's
 // background difference measures the same arm afresh in every frame as a second opinion. A
-// row is `ok` only when both place each segment alike (hybrid/agreement.h): both ok, or the
-// tracker's own gate unsure of a pose the background difference bears out; its
+// row is `ok` only when both are and they place each segment alike (hybrid/agreement.h); its
 // directions are the mean of the two, its yaw bgsub's (a straight arm's foreshortening against
 // the calibrated length). A tracker that gives no agreeing pose for hybrid.restart_frames rows
 // (lost, drifted, or its calibration refused) restarts from the background difference's joints
@@ -113,7 +112,7 @@ class HybridEngine final : public Engine {
     m.arm_contour = b.arm_contour;
     m.arm_hull = b.arm_hull;
     if (!m.body_box) m.body_box = b.body_box;
-    if (m.phase != MeasurementPhase::kOk && !Resolve(b, &m)) {
+    if (m.phase != MeasurementPhase::kOk) {
       m.note = "the tracker: " + m.note;
       return;
     }
@@ -135,28 +134,6 @@ class HybridEngine final : public Engine {
     m.bend_deg = Wrap180(m.fore_deg - m.upper_deg);
     m.yaw_deg = b.yaw_deg;
     m.confidence = Lower(m.confidence, b.confidence);
-  }
-
-  // A tracker's row its own gate refused (evidence too weak: another pose explains the frame as
-  // well, or the pose lies where the scene was never seen) still carries the pose it tracked, in
-  // its joints. Where the background difference, measured apart, bears out that pose, the
-  // ambiguity is resolved: the row stands as the tracker's (true). Otherwise it stays lost.
-  bool Resolve(const ArmMeasurement& b, ArmMeasurement* m) const {
-    if (b.phase != MeasurementPhase::kOk || !m->shoulder_px || !m->elbow_px || !m->wrist_px) {
-      return false;
-    }
-    ArmMeasurement tracked = *m;
-    tracked.phase = MeasurementPhase::kOk;
-    tracked.upper_deg = DirectionDeg(*m->shoulder_px, *m->elbow_px);
-    tracked.fore_deg = DirectionDeg(*m->elbow_px, *m->wrist_px);
-    tracked.bend_deg = Wrap180(tracked.fore_deg - tracked.upper_deg);
-    tracked.upper_com_px = (*m->shoulder_px + *m->elbow_px) * 0.5;
-    tracked.fore_com_px = (*m->elbow_px + *m->wrist_px) * 0.5;
-    if (!internal::Disagreement(tracked, b, o_).empty()) return false;
-    tracked.note = "the tracker's own gate was unsure (" + m->note +
-                   "); the background difference bears its pose out";
-    *m = tracked;
-    return true;
   }
 
   // Counts the frames in a row the background difference has been ok, each pose within

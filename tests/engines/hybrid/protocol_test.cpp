@@ -115,8 +115,8 @@ void Print(const char* what, const ProtocolRun& r) {
 }
 
 // Pooled over four scenes, as they come: these bounds guard what the engine does today, short of
-// the goals (docs/hybrid.md): measured 64.3 % ok, MAE 3.63 deg, 40 confidently wrong frames of
-// 529 ok. Seed 8001 gives no row (the background difference refuses its calibration: the hanging
+// the goals (docs/hybrid.md): measured 61.4 % ok, MAE 3.47 deg, 36 confidently wrong frames of
+// 505 ok. Seed 8001 gives no row (the background difference refuses its calibration: the hanging
 // arm does not lie on the standstill's person, and the tracker cannot calibrate either); on seed
 // 8004 both opinions place the raised forearm's elbow short by the same anthropometric length
 // share, and agree 16 degrees off.
@@ -132,7 +132,7 @@ TEST(HybridProtocol, RandomFiguresWithoutClicks) {
   EXPECT_LE(all.wrong_share(), 0.09);
 }
 
-// As above: measured 51.9 % ok, MAE 4.07 deg, 25 confidently wrong frames of 491 ok, most on
+// As above: measured 50.7 % ok, MAE 4.03 deg, 24 confidently wrong frames of 480 ok, most on
 // seed 8001, whose short sleeves are the wall's colour (the background difference places the
 // upper arm 30-40 degrees off with full confidence, and the tracker restarts from it).
 TEST(HybridProtocol, CapsuleFiguresWithoutClicks) {
