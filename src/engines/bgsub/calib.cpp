@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
@@ -46,9 +47,12 @@ void FindBody(const PixelModel& pixels, ArmCalibration* cal) {
 
 // The straight arm of the arm-length image: the largest region outside the standing body that
 // differs from both the empty room and the standstill, with the regions lying in its band of rows
-// (an arm broken where it crosses something of its own colour).
+// (an arm broken where it crosses something of its own colour). A standing person's shoulders are
+// in the upper half of the body (at about four fifths of its height): a region centred lower, by
+// the standing body's box, is no arm held out from the shoulder (the floor or the legs where the
+// images differ by their compression or light).
 bool FindStraightArm(const PixelModel& pixels, const cv::Mat& arm_length, const cv::Mat& body,
-                     cv::Mat* arm, cv::Rect* band) {
+                     const std::optional<cv::Rect>& body_box, cv::Mat* arm, cv::Rect* band) {
   cv::Mat person, moved, both, labels;
   pixels.Differ(arm_length, pixels.background(), &person);
   pixels.Differ(arm_length, pixels.standstill(), &moved);
@@ -58,7 +62,14 @@ bool FindStraightArm(const PixelModel& pixels, const cv::Mat& arm_length, const 
   // Thin lines (edges drawn a little differently) are no arm.
   cv::morphologyEx(both, both, cv::MORPH_OPEN, cv::Mat::ones(3, 3, CV_8UC1));
   const std::vector<Component> parts = MaskComponents(both, &labels);
-  const int largest = LargestComponent(parts);
+  int largest = -1;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const cv::Rect& r = parts[i].box;
+    if (body_box && r.y + 0.5 * r.height > body_box->y + 0.5 * body_box->height) continue;
+    if (largest < 0 || parts[i].area_px > parts[static_cast<std::size_t>(largest)].area_px) {
+      largest = static_cast<int>(i);
+    }
+  }
   if (largest < 0) return false;
   const Component& main = parts[static_cast<std::size_t>(largest)];
   ComponentMask(labels, main, arm);
@@ -120,7 +131,7 @@ ArmCalibration Calibrate(const PixelModel& pixels, const cv::Mat& arm_length,
   }
   cv::Mat arm;
   cv::Rect band;
-  if (!FindStraightArm(pixels, arm_length, cal.body, &arm, &band)) {
+  if (!FindStraightArm(pixels, arm_length, cal.body, cal.body_box, &arm, &band)) {
     cal.note = "arm-length image: no arm differs from the standstill";
     return cal;
   }

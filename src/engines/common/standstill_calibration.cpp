@@ -94,13 +94,21 @@ bool FindBody(const Differences& d, cv::Mat* body, cv::Rect* box) {
 
 // The straight arm of the arm-length image: the largest region outside the standing body that
 // differs from both the empty room and the standstill, with the pieces in line with it (an arm
-// broken where it crosses something of its own colour). `band`: its rows, around the fullest.
-bool FindStraightArm(const Differences& d, const cv::Mat& body, cv::Mat* arm, cv::Rect* band) {
+// broken where it crosses something of its own colour). `band`: its rows, around the fullest. A
+// standing person's shoulders are in the upper half of the body (at about four fifths of its
+// height): a region centred lower in the body's box `body_box` is no arm held out from the
+// shoulder (the floor or the legs, where the images differ by their compression or light).
+bool FindStraightArm(const Differences& d, const cv::Mat& body, const cv::Rect& body_box,
+                     cv::Mat* arm, cv::Rect* band) {
   cv::Mat both = d.arm_length_room & d.arm_length_standstill, labels;
   both.setTo(0, body);
   Open3(&both);
   const std::vector<Part> parts = Parts(both, &labels);
-  const Part* main = Largest(parts);
+  std::vector<Part> high;
+  for (const Part& p : parts) {
+    if (p.box.y + 0.5 * p.box.height <= body_box.y + 0.5 * body_box.height) high.push_back(p);
+  }
+  const Part* main = Largest(high);
   if (!main) return false;
   *arm = labels == main->label;
   const cv::Rect rows = HorizontalBand(*arm, main->box);
@@ -170,7 +178,7 @@ StandstillCalibration CalibrateFromStandstill(const cv::Mat& background, const c
     cal.note = "no person in the standstill: it does not differ from the background";
     return cal;
   }
-  if (!FindStraightArm(d, body, &arm, &band)) {
+  if (!FindStraightArm(d, body, body_box, &arm, &band)) {
     cal.note = "the arm-length image: no arm differs from the standstill";
     return cal;
   }

@@ -3,9 +3,9 @@
 // background difference measures the same arm afresh in every frame as a second opinion. A
 // row is `ok` only when both are and they place each segment alike (hybrid/agreement.h); its
 // directions are the mean of the two, its yaw bgsub's (a straight arm's foreshortening against
-// the calibrated length). A tracker that gives no agreeing pose for hybrid.restart_frames rows
-// (lost, drifted, or its calibration refused) restarts from the background difference's joints
-// once those have been steady for hybrid.confirm_frames rows. Without a background and an
+// the calibrated length). A tracker that has had no pose of its own for hybrid.restart_frames
+// rows (lost, or its calibration refused) restarts from the background difference's joints once
+// those have been steady for hybrid.confirm_frames rows. Without a background and an
 // arm-length image (joints clicked on footage with no empty room) there is no second opinion,
 // and the rows are lk's alone, as the header and the first row's estimate say.
 #include <algorithm>
@@ -48,7 +48,7 @@ class HybridEngine final : public Engine {
     context_ = context;
     lk_ = internal::CreateLkEngine(lk_options_);
     bgsub_.reset();
-    unagreed_ = 0;
+    untracked_ = 0;
     steady_ = 0;
     restarts_ = 0;
     if (Status st = lk_->Begin(context); !st) return st;
@@ -82,10 +82,12 @@ class HybridEngine final : public Engine {
     m.estimate = Join(m.estimate, b.estimate);
     if (!m.row()) return m;  // the standstill: both average it
     first_row_ = false;
+    // Only a tracker that has lost the arm restarts: one that tracks and disagrees is a second
+    // opinion to keep apart, and the rows it disagrees on are lost.
+    untracked_ = m.phase == MeasurementPhase::kOk ? 0 : untracked_ + 1;
     Decide(b, &m);
     Steady(b);
-    unagreed_ = m.phase == MeasurementPhase::kOk ? 0 : unagreed_ + 1;
-    if (unagreed_ >= o_.restart_frames && steady_ >= o_.confirm_frames) Restart(frame, b, &m);
+    if (untracked_ >= o_.restart_frames && steady_ >= o_.confirm_frames) Restart(frame, b, &m);
     return m;
   }
 
@@ -153,9 +155,9 @@ class HybridEngine final : public Engine {
     steady_fore_deg_ = b.fore_deg;
   }
 
-  // A tracker that has given no agreeing pose for a while (lost, drifted, or never calibrated)
-  // starts again from the background difference's joints in this frame, as if they had been
-  // clicked. This frame stays lost: its pose is the background difference's alone.
+  // A tracker that has had no pose of its own for a while (lost, or never calibrated) starts
+  // again from the background difference's joints in this frame, as if they had been clicked. This
+  // frame stays lost: its pose is the background difference's alone.
   void Restart(const Frame& frame, const ArmMeasurement& b, ArmMeasurement* m) {
     EngineContext c = context_;
     c.shoulder_px = *b.shoulder_px;
@@ -165,7 +167,7 @@ class HybridEngine final : public Engine {
     if (!lk->Begin(c)) return;  // joints lk cannot start from: keep waiting
     lk->Process(frame);         // the start posture: no measurement of its own
     lk_ = std::move(lk);
-    unagreed_ = 0;
+    untracked_ = 0;
     ++restarts_;
     m->note += "; the tracker restarts from the background difference's joints";
   }
@@ -183,7 +185,7 @@ class HybridEngine final : public Engine {
   std::unique_ptr<Engine> bgsub_;  // the second opinion; null without a background
   bool first_row_ = true;
   EngineContext context_;        // the run's, for a restarted tracker
-  int unagreed_ = 0;             // rows in a row without an agreeing pose
+  int untracked_ = 0;            // rows in a row the tracker has had no pose of its own
   int steady_ = 0;               // rows in a row the background difference has been steady
   double steady_upper_deg_ = 0;  // its last pose
   double steady_fore_deg_ = 0;

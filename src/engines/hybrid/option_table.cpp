@@ -22,7 +22,7 @@ const std::vector<OptionField<HybridOptions>>& HybridOptionFields() {
               "how far each measurement may place a joint off, pixels: a short segment's "
               "directions may differ by atan(2 x this / its length) more"),
       Int<H>("restart_frames", &H::restart_frames, 5, 1, 100000, "Restart after",
-             "frames in a row without an agreeing pose before the tracker restarts from the "
+             "frames in a row the tracker has had no pose of its own before it restarts from the "
              "background difference's joints"),
       Int<H>("confirm_frames", &H::confirm_frames, 5, 1, 1000, "Steady frames",
              "frames in a row the background difference must be ok and steady to restart the "

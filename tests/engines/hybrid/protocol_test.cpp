@@ -132,9 +132,10 @@ TEST(HybridProtocol, RandomFiguresWithoutClicks) {
   EXPECT_LE(all.wrong_share(), 0.09);
 }
 
-// As above: measured 50.7 % ok, MAE 4.03 deg, 24 confidently wrong frames of 480 ok, most on
+// As above: measured 76.4 % ok, MAE 3.15 deg, 24 confidently wrong frames of 723 ok, most on
 // seed 8001, whose short sleeves are the wall's colour (the background difference places the
-// upper arm 30-40 degrees off with full confidence, and the tracker restarts from it).
+// upper arm 30-40 degrees off with full confidence, and the tracker, which cannot calibrate
+// there, restarts from it).
 TEST(HybridProtocol, CapsuleFiguresWithoutClicks) {
   ProtocolRun all;
   for (uint64_t seed = 8001; seed <= 8004; ++seed) {
@@ -142,9 +143,9 @@ TEST(HybridProtocol, CapsuleFiguresWithoutClicks) {
   }
   Print("hybrid, capsule medium 8001-8004", all);
   ASSERT_GT(all.motion, 0);
-  EXPECT_GE(all.coverage(), 0.47);
-  EXPECT_LE(all.mae(), 4.5);
-  EXPECT_LE(all.wrong_share(), 0.065);
+  EXPECT_GE(all.coverage(), 0.7);
+  EXPECT_LE(all.mae(), 3.6);
+  EXPECT_LE(all.wrong_share(), 0.045);
 }
 
 // A tuning scene whose standstill the tracker cannot calibrate from (a sleeve in the room's
@@ -207,14 +208,26 @@ TEST(HybridProtocol, WithoutABackgroundTheRowsAreTheTrackersAlone) {
 // tracker starts from them, the background difference still calibrates itself from the
 // standstill (apart from the clicks), and nearly every motion frame is measured (measured 99.6 %,
 // MAE 3.57 deg: the mean of the tracker's 2.7 and the background difference's 4-7 on this scene).
-// Seed 8004: on 8002 the background difference refuses its calibration when the frames are
-// compressed in memory, though not in the scene's AVI (docs/hybrid.md).
 TEST(HybridProtocol, ClickedJointsStartTheTrackerAndTheSecondOpinionStaysApart) {
   const ProtocolRun r = CapsuleScene(8004, synth::SceneTier::kMedium, EngineKind::kHybrid, true);
   Print("hybrid, joints clicked, capsule medium 8004", r);
   EXPECT_GE(r.coverage(), 0.95);
   EXPECT_LE(r.mae(), 4.5);
   EXPECT_EQ(r.wrong, 0);
+}
+
+// The arm-length image and a standstill compressed as video differ a little over the floor and
+// the legs too; on this unit scene that region was larger than the straight arm, and both
+// calibrations took it for the arm (the shoulder at the frame's bottom edge: every row lost). A
+// shoulder lies in the upper half of a standing body, and the arm held out from it is found there.
+TEST(HybridProtocol, TheStraightArmIsHeldOutFromTheShoulderNotLyingOnTheFloor) {
+  const ProtocolRun bgsub = CapsuleScene(8002, synth::SceneTier::kMedium, EngineKind::kBgsub);
+  const ProtocolRun hybrid = CapsuleScene(8002, synth::SceneTier::kMedium, EngineKind::kHybrid);
+  Print("bgsub, capsule medium 8002", bgsub);
+  Print("hybrid, capsule medium 8002", hybrid);
+  EXPECT_GE(bgsub.coverage(), 0.9);
+  EXPECT_GE(hybrid.coverage(), 0.9);
+  EXPECT_EQ(hybrid.wrong, 0);
 }
 
 }  // namespace
