@@ -169,7 +169,8 @@ class HybridEngine final : public Engine {
     lk_ = std::move(lk);
     untracked_ = 0;
     ++restarts_;
-    m->note += "; the tracker restarts from the background difference's joints";
+    m->note += "; the tracker restarts from the background difference's joints (restart " +
+               std::to_string(restarts_) + ")";
   }
 
   static std::string Join(const std::string& a, const std::string& b) {
