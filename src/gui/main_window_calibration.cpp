@@ -2,6 +2,10 @@
 // joints from the pose network; Calibrate from standstill shows the joints the run would
 // calibrate itself from as handles on the last standstill frame, where a drag fills the joint
 // fields (VideoView::jointPicked, as clicks do) and Accept hides them.
+#include <memory>
+#include <sstream>
+#include <string>
+
 #include "analysis_job.h"
 #include "engine_settings_panel.h"
 #include "log_view.h"
@@ -10,6 +14,21 @@
 #include "video_view.h"
 
 namespace armmimic::gui {
+namespace {
+
+// What the estimate on the last standstill frame depends on (standstill_estimate.h): another
+// value of any of these makes the handles shown out of date.
+std::string EstimateInputs(const AnalysisOptions& o) {
+  std::ostringstream s;
+  s << static_cast<int>(o.engine.kind) << '|' << o.start << '|' << o.background_path << '|'
+    << o.background_frames << '|' << o.arm_length_path << '|' << o.engine.lk.standstill_frames
+    << '|' << o.engine.lk.body_threshold << '|' << static_cast<int>(o.engine.lk.side) << '|'
+    << o.engine.lk.upper_fraction;
+  if (o.roi) s << '|' << o.roi->x << ',' << o.roi->y << ',' << o.roi->width << ',' << o.roi->height;
+  return s.str();
+}
+
+}  // namespace
 
 void MainWindow::wireCalibration() {
   auto inputs = [this] {
@@ -38,24 +57,37 @@ void MainWindow::wireCalibration() {
     for (const QString& s : player_->inputs()) o.inputs.push_back(s.toStdString());
     job_->startStandstill(o);
   });
-  connect(job_, &AnalysisJob::standstillReady, this, [this](const StandstillJoints& joints) {
-    settings_->clearJoints();  // accepting these joints leaves the run to its own calibration
-    auto at = [](const cv::Point2d& p) { return QPointF(p.x, p.y); };
-    view_->setJointHandles(joints.frame,
-                           {at(joints.shoulder_px), at(joints.elbow_px), at(joints.wrist_px)});
-    settings_->setEstimateShown(true);
-    player_->pause();
-    player_->seek(joints.frame);
-    log_->info(tr("Estimated joints on frame %1 (%2). Accept them, and the run calibrates "
-                  "itself so; or drag a handle, and the joints shown become clicked joints")
-                   .arg(joints.frame)
-                   .arg(QString::fromStdString(joints.description)));
-  });
+  // The inputs the handles shown were estimated from.
+  auto shown_for = std::make_shared<std::string>();
+  connect(
+      job_, &AnalysisJob::standstillReady, this, [this, shown_for](const StandstillJoints& joints) {
+        settings_->clearJoints();  // accepting these joints leaves the run to its own calibration
+        *shown_for = EstimateInputs(settings_->options());
+        auto at = [](const cv::Point2d& p) { return QPointF(p.x, p.y); };
+        view_->setJointHandles(joints.frame,
+                               {at(joints.shoulder_px), at(joints.elbow_px), at(joints.wrist_px)});
+        settings_->setEstimateShown(true);
+        player_->pause();
+        player_->seek(joints.frame);
+        log_->info(tr("Estimated joints on frame %1 (%2). Accept them, and the run calibrates "
+                      "itself so; or drag a handle, and the joints shown become clicked joints")
+                       .arg(joints.frame)
+                       .arg(QString::fromStdString(joints.description)));
+      });
   connect(settings_, &EngineSettingsPanel::estimateAccepted, this, [this] {
     view_->clearJointHandles();
     log_->info(settings_->options().shoulder_px
                    ? tr("Joints accepted: the run starts from the joints dragged")
                    : tr("Joints accepted: the run calibrates itself from the standstill"));
+  });
+  // Another engine, start frame, standstill or image: the handles shown are another run's.
+  connect(settings_, &EngineSettingsPanel::changed, this, [this, shown_for] {
+    if (view_->jointHandles().empty() || EstimateInputs(settings_->options()) == *shown_for) return;
+    view_->clearJointHandles();
+    settings_->setEstimateShown(false);
+    log_->info(
+        tr("The estimated joints were for other settings: calibrate from the standstill "
+           "again to see the run's"));
   });
   // Another input: its standstill is another.
   connect(player_, &VideoPlayer::opened, this, [this] {

@@ -299,6 +299,25 @@ TEST_F(HybridTest, CalibrateShowsTheEstimatedJointsToAcceptOrDrag) {
   EXPECT_TRUE(w.settingsPanel()->options().elbow_px.has_value());  // accepted as dragged
 }
 
+// Handles estimated for one start frame are not shown for another: changing the start frame takes
+// them away (the run would calibrate from other frames), while a drag, which changes only the
+// joints, keeps them.
+TEST_F(HybridTest, AnotherStartFrameTakesTheEstimatedJointsAway) {
+  MainWindow w;
+  OpenProtocol(w);
+  auto* calibrate = w.settingsPanel()->findChild<QPushButton*>("standstillCalibrate");
+  auto* start = w.settingsPanel()->findChild<QSpinBox*>("startFrame");
+  ASSERT_TRUE(calibrate && start);
+  QTest::mouseClick(calibrate, Qt::LeftButton);
+  const gui::VideoView* view = w.view();
+  ASSERT_TRUE(WaitUntil([&] { return view->jointHandles().shownOn(view->frameIndex()); }))
+      << w.log()->text().toStdString();
+  start->setValue(start->value() + 5);
+  EXPECT_TRUE(view->jointHandles().empty());
+  EXPECT_TRUE(w.log()->text().contains("calibrate from the standstill again"));
+  EXPECT_FALSE(w.settingsPanel()->findChild<QPushButton*>("acceptEstimate")->isEnabled());
+}
+
 // A calibration the inputs cannot give is reported at its field, and shows no handles.
 TEST_F(HybridTest, ACalibrationThatCannotBeMadeIsNamedAtItsField) {
   MainWindow w;
