@@ -20,14 +20,15 @@
 #include "armmimic/engines/option_fields.h"
 #include "armmimic/engines/pose.h"
 #include "armmimic/engines/run_record.h"
+#include "common/analysis_inputs.h"
 #include "common/engine_internal.h"
 
 namespace armmimic {
 namespace {
 
-std::string SizeText(const cv::Size& s) {
-  return std::to_string(s.width) + "x" + std::to_string(s.height);
-}
+using internal::LoadSized;
+using internal::OpenInput;
+using internal::SizeText;
 
 std::string BaseName(const std::string& path) {
   std::string p = path;
@@ -52,32 +53,6 @@ bool Cancelled(const AnalysisCallbacks& cb) {
 void Phase(const AnalysisCallbacks& cb, const std::string& phase) {
   if (cb.on_phase) cb.on_phase(phase);
 }
-
-// Loads the image the setting `key` names (`what`: "the background image") and checks its size
-// against the video's.
-Status LoadSized(const std::string& path, const std::string& key, const std::string& what,
-                 const VideoInfo& video, cv::Mat* out) {
-  Status st = ReadImage(path, out);
-  if (!st) return st.WithKey(key);
-  if (out->size() != video.size) {
-    return Status::Error(key, what + " " + path + " is " + SizeText(out->size()) + " but " +
-                                  video.path + " is " + SizeText(video.size) +
-                                  "; they must have the same size");
-  }
-  return Status::Ok();
-}
-
-// The input of a pass: options.open_source when set, else the files named in options.inputs.
-std::unique_ptr<VideoSource> OpenInput(const AnalysisOptions& options, Status* status) {
-  if (options.open_source) return options.open_source(status);
-  return VideoSource::Open(options.inputs, status);
-}
-
-// Averages frames [start, start+count) of `source` (thesis 5.2.1); `open_status` is returned
-// when the source could not be opened.
-Status EstimateBackgroundOf(std::unique_ptr<VideoSource> source, const Status& open_status,
-                            int start, int count, cv::Mat* background,
-                            const AnalysisCallbacks& callbacks);
 
 // The pose network's part before the engine starts: --auto-calibrate's joints, and the pose
 // engine's arm when --side is auto. Decisions go to on_estimate.
@@ -235,8 +210,8 @@ Status Run(const AnalysisOptions& given, const AnalysisCallbacks& callbacks,
       Phase(callbacks, "background");
       Status bg_open;
       std::unique_ptr<VideoSource> bg_source = OpenInput(options, &bg_open);
-      st = EstimateBackgroundOf(std::move(bg_source), bg_open, 0, options.background_frames,
-                                &context.background, callbacks);
+      st = internal::MeanOfFrames(std::move(bg_source), bg_open, 0, options.background_frames,
+                                  "the background", &context.background, callbacks);
       if (!st) return finish(st.WithKey("analysis.background_frames"));
       if (Cancelled(callbacks)) {
         summary->cancelled = true;
@@ -354,52 +329,9 @@ Status EstimateBackground(const std::vector<std::string>& inputs, int start, int
                           cv::Mat* background, const AnalysisCallbacks& callbacks) {
   Status st;
   std::unique_ptr<VideoSource> source = VideoSource::Open(inputs, &st);
-  return EstimateBackgroundOf(std::move(source), st, start, count, background, callbacks);
+  return internal::MeanOfFrames(std::move(source), st, start, count, "the background", background,
+                                callbacks);
 }
-
-namespace {
-
-Status EstimateBackgroundOf(std::unique_ptr<VideoSource> source, const Status& open_status,
-                            int start, int count, cv::Mat* background,
-                            const AnalysisCallbacks& callbacks) {
-  if (count < 1) return Status::Error("the background needs at least 1 frame");
-  if (start < 0) return Status::Error("the first background frame must be 0 or more");
-  if (!source) return open_status;
-  Status st;
-  const VideoInfo& info = source->info();
-  const std::string range =
-      "[" + std::to_string(start) + ", " + std::to_string(start + count) + ")";
-  if (info.frame_count >= 0 && start + count > info.frame_count) {
-    return Status::Error(info.path + " has " + std::to_string(info.frame_count) +
-                         " frames; the background needs frames " + range);
-  }
-  if (start > 0) {
-    st = source->Seek(start);
-    if (!st) return st;
-  }
-  cv::Mat sum;
-  Frame frame;
-  for (int i = 0; i < count; ++i) {
-    if (Cancelled(callbacks)) return Status::Ok();
-    Status read_status;
-    if (!source->Read(&frame, &read_status)) {
-      if (!read_status) return read_status;
-      return Status::Error(info.path + " ended after " + std::to_string(start + i) +
-                           " frames; the background needs frames " + range);
-    }
-    if (sum.empty()) sum = cv::Mat::zeros(frame.image.size(), CV_32FC3);
-    if (frame.image.size() != sum.size()) {
-      return Status::Error(info.path + ": frame " + std::to_string(frame.index) + " is " +
-                           SizeText(frame.image.size()) + ", the first is " + SizeText(sum.size()));
-    }
-    cv::accumulate(frame.image, sum);
-    if (callbacks.on_progress) callbacks.on_progress(i + 1, count);
-  }
-  sum.convertTo(*background, CV_8UC3, 1.0 / count);
-  return Status::Ok();
-}
-
-}  // namespace
 
 std::vector<PoseSide> AnalysedArms(const AnalysisOptions& options) {
   if (options.engine.kind != EngineKind::kPose) return {options.engine.pose.side};

@@ -38,11 +38,15 @@ bool ArmGate::Consistent(const Pose& from, const Pose& to) const {
          std::abs(AngleDiff(to.bend_deg, from.bend_deg)) <= reach;
 }
 
-void ArmGate::Lose(ArmMeasurement* m, const std::string& why) {
+void LoseRow(ArmMeasurement* m, const std::string& why) {
   m->phase = MeasurementPhase::kLost;
-  m->note = why + (m->note.empty() ? "" : " (" + m->note + ")");
+  m->note = why;
   m->upper_deg = m->fore_deg = m->yaw_deg = m->bend_deg = kNaN;
   m->upper_com_px = m->fore_com_px = cv::Point2d(kNaN, kNaN);
+}
+
+void ArmGate::Lose(ArmMeasurement* m, const std::string& why) {
+  LoseRow(m, why + (m->note.empty() ? "" : " (" + m->note + ")"));
 }
 
 void ArmGate::Review(ArmMeasurement* m, double support) {

@@ -13,6 +13,9 @@
 
 namespace armmimic {
 
+// Turns `m` into a lost row: phase kLost, the angles and centres cleared, `why` as its note.
+void LoseRow(ArmMeasurement* m, const std::string& why);
+
 struct ArmGateOptions {
   double max_speed_deg_s = 600;  // segment turn rate no arm motion exceeds (upper and bend)
   double min_support = 0.3;      // below: the evidence does not carry an estimate

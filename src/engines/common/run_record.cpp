@@ -78,19 +78,15 @@ constexpr const char* kInputKeys[] = {
     "wrist",  "model", "auto_calibrate",    "calibrate_side", "roi"};
 
 bool IsKnownPlainKey(const std::string& key) {
-  auto in = [&key](const auto& list) {
+  auto in = [](const std::string& name, const auto& list) {
     return std::any_of(std::begin(list), std::end(list),
-                       [&key](const char* k) { return key == k; });
+                       [&name](const char* k) { return name == k; });
   };
-  if (in(kResultKeys) || in(kInputKeys)) return true;
-  for (const char* prefix : kEnginePrefixes) {
-    const std::string p(prefix);
-    if (key.size() > p.size() && key.compare(0, p.size(), p) == 0) {
-      const std::string rest = key.substr(p.size());
-      if (std::any_of(std::begin(kResultKeys), std::end(kResultKeys),
-                      [&rest](const char* k) { return rest == k; })) {
-        return true;
-      }
+  if (in(key, kResultKeys) || in(key, kInputKeys)) return true;
+  for (const std::string prefix : kEnginePrefixes) {
+    if (key.size() > prefix.size() && key.rfind(prefix, 0) == 0 &&
+        in(key.substr(prefix.size()), kResultKeys)) {
+      return true;
     }
   }
   for (const PathKey& p : kPathKeys) {

@@ -280,4 +280,11 @@ StandstillCalibration CalibrateFromStandstill(const cv::Mat& background, const c
   return cal;
 }
 
+StandstillCalibration CalibrateFromStandstill(const cv::Mat& background, const cv::Mat& standstill,
+                                              const cv::Mat& arm_length, const LkOptions& lk) {
+  const int side = lk.side == LkArmSide::kLeft ? -1 : lk.side == LkArmSide::kRight ? 1 : 0;
+  return CalibrateFromStandstill(background, standstill, arm_length, lk.body_threshold, side,
+                                 lk.upper_fraction);
+}
+
 }  // namespace armmimic

@@ -21,6 +21,7 @@
 #include <opencv2/core.hpp>
 
 #include "armmimic/core/angles.h"
+#include "armmimic/engines/lk_options.h"
 
 namespace armmimic {
 
@@ -44,5 +45,10 @@ struct StandstillCalibration {
 StandstillCalibration CalibrateFromStandstill(const cv::Mat& background, const cv::Mat& standstill,
                                               const cv::Mat& arm_length, int threshold, int side,
                                               double upper_fraction);
+
+// The same with the lk engine's settings (lk.body_threshold, lk.side, lk.upper_fraction): what
+// the lk and hybrid runs calibrate from, and what the shells show ahead of a run.
+StandstillCalibration CalibrateFromStandstill(const cv::Mat& background, const cv::Mat& standstill,
+                                              const cv::Mat& arm_length, const LkOptions& lk);
 
 }  // namespace armmimic

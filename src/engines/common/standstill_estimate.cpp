@@ -5,71 +5,23 @@
 
 #include <memory>
 
-#include <opencv2/imgproc.hpp>
-
-#include "armmimic/core/image_io.h"
 #include "armmimic/core/video_source.h"
+#include "common/analysis_inputs.h"
 #include "common/standstill_calibration.h"
 
 namespace armmimic {
 namespace {
 
-std::string SizeText(const cv::Size& s) {
-  return std::to_string(s.width) + "x" + std::to_string(s.height);
-}
+using internal::SizeText;
 
-std::unique_ptr<VideoSource> OpenInput(const AnalysisOptions& options, Status* status) {
-  if (options.open_source) return options.open_source(status);
-  return VideoSource::Open(options.inputs, status);
-}
-
-// The mean of frames [first, first + count) of the input, as the engines average them (a float
-// sum, then one rounding to 8 bits). `what` names the stretch in errors.
+// The mean of frames [first, first + count) of the input, as the engines average them; `info`
+// gets the input's description.
 Status MeanOf(const AnalysisOptions& options, int first, int count, const std::string& what,
-              cv::Mat* mean) {
+              cv::Mat* mean, VideoInfo* info) {
   Status st;
-  std::unique_ptr<VideoSource> source = OpenInput(options, &st);
-  if (!source) return st;
-  const VideoInfo info = source->info();
-  const std::string range =
-      "[" + std::to_string(first) + ", " + std::to_string(first + count) + ")";
-  if (info.frame_count >= 0 && first + count > info.frame_count) {
-    return Status::Error(info.path + " has " + std::to_string(info.frame_count) + " frames; " +
-                         what + " needs frames " + range);
-  }
-  if (first > 0) {
-    st = source->Seek(first);
-    if (!st) return st;
-  }
-  cv::Mat sum;
-  Frame frame;
-  for (int i = 0; i < count; ++i) {
-    Status read;
-    if (!source->Read(&frame, &read)) {
-      if (!read) return read;
-      return Status::Error(info.path + " ended after " + std::to_string(first + i) + " frames; " +
-                           what + " needs frames " + range);
-    }
-    if (sum.empty()) sum = cv::Mat::zeros(frame.image.size(), CV_32FC3);
-    if (frame.image.size() != sum.size() || frame.image.type() != CV_8UC3) {
-      return Status::Error(info.path + ": frame " + std::to_string(frame.index) +
-                           " is not a colour image of " + SizeText(sum.size()));
-    }
-    cv::accumulate(frame.image, sum);
-  }
-  sum.convertTo(*mean, CV_8UC3, 1.0 / count);
-  return Status::Ok();
-}
-
-Status LoadSized(const std::string& path, const std::string& key, const std::string& what,
-                 const cv::Size& size, cv::Mat* out) {
-  Status st = ReadImage(path, out);
-  if (!st) return st.WithKey(key);
-  if (out->size() != size) {
-    return Status::Error(key, what + " " + path + " is " + SizeText(out->size()) +
-                                  " but the video is " + SizeText(size));
-  }
-  return Status::Ok();
+  std::unique_ptr<VideoSource> source = internal::OpenInput(options, &st);
+  if (source) *info = source->info();
+  return internal::MeanOfFrames(std::move(source), st, first, count, what, mean);
 }
 
 }  // namespace
@@ -98,19 +50,21 @@ Status EstimateStandstillJoints(const AnalysisOptions& options, StandstillJoints
   const LkOptions& lk = options.engine.lk;  // the hybrid engine runs lk with these
   if (options.start < 0) return Status::Error("analysis.start", "the start frame is negative");
   cv::Mat standstill;
-  Status st = MeanOf(options, options.start, lk.standstill_frames, "the standstill", &standstill);
+  VideoInfo info;
+  Status st =
+      MeanOf(options, options.start, lk.standstill_frames, "the standstill", &standstill, &info);
   if (!st) return st.WithKey("analysis.start");
   cv::Mat background, arm_length;
   if (!options.background_path.empty()) {
-    st = LoadSized(options.background_path, "analysis.background", "the background image",
-                   standstill.size(), &background);
+    st = internal::LoadSized(options.background_path, "analysis.background", "the background image",
+                             info, &background);
   } else {
-    st = MeanOf(options, 0, options.background_frames, "the background", &background)
+    st = MeanOf(options, 0, options.background_frames, "the background", &background, &info)
              .WithKey("analysis.background_frames");
   }
   if (!st) return st;
-  st = LoadSized(options.arm_length_path, "analysis.arm_length", "the arm-length image",
-                 standstill.size(), &arm_length);
+  st = internal::LoadSized(options.arm_length_path, "analysis.arm_length", "the arm-length image",
+                           info, &arm_length);
   if (!st) return st;
 
   cv::Rect region(cv::Point(0, 0), standstill.size());
@@ -121,10 +75,8 @@ Status EstimateStandstillJoints(const AnalysisOptions& options, StandstillJoints
     }
     region = *options.roi;
   }
-  const int side = lk.side == LkArmSide::kLeft ? -1 : lk.side == LkArmSide::kRight ? 1 : 0;
   const StandstillCalibration cal = CalibrateFromStandstill(
-      background(region).clone(), standstill(region).clone(), arm_length(region).clone(),
-      lk.body_threshold, side, lk.upper_fraction);
+      background(region).clone(), standstill(region).clone(), arm_length(region).clone(), lk);
   if (!cal.ok) return Status::Error("cannot calibrate from the standstill: " + cal.note);
   const cv::Point2d offset(region.tl());
   out->frame = options.start + lk.standstill_frames - 1;

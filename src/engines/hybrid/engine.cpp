@@ -14,6 +14,7 @@
 
 #include "armmimic/core/angle_file.h"
 #include "armmimic/core/angles.h"
+#include "common/arm_gate.h"
 #include "common/engine_internal.h"
 #include "hybrid/agreement.h"
 
@@ -25,13 +26,6 @@ double Lower(double a, double b) {
   if (!std::isfinite(a)) return b;
   if (!std::isfinite(b)) return a;
   return std::min(a, b);
-}
-
-void Lose(ArmMeasurement* m, const std::string& why) {
-  m->phase = MeasurementPhase::kLost;
-  m->upper_deg = m->fore_deg = m->yaw_deg = m->bend_deg = kNaN;
-  m->upper_com_px = m->fore_com_px = cv::Point2d(kNaN, kNaN);
-  m->note = why;
 }
 
 class HybridEngine final : public Engine {
@@ -119,15 +113,15 @@ class HybridEngine final : public Engine {
       return;
     }
     if (b.phase == MeasurementPhase::kSetup) {
-      Lose(&m, "the background difference, the second opinion, is still taking the standstill");
+      LoseRow(&m, "the background difference, the second opinion, is still taking the standstill");
       return;
     }
     if (b.phase != MeasurementPhase::kOk) {
-      Lose(&m, "the background difference, the second opinion: " + b.note);
+      LoseRow(&m, "the background difference, the second opinion: " + b.note);
       return;
     }
     if (const std::string why = internal::Disagreement(m, b, o_); !why.empty()) {
-      Lose(&m, why);
+      LoseRow(&m, why);
       return;
     }
     // Two measurements that err apart: their mean halves what they do not share.

@@ -233,9 +233,7 @@ class LkEngine : public Engine {
   // then the model tracker as with clicked joints, started on this last standstill frame.
   ArmMeasurement Calibrated(const cv::Mat& mean, const cv::Mat& view, const cv::Mat& gray,
                             ArmMeasurement& m) {
-    const int side = o_.side == LkArmSide::kLeft ? -1 : o_.side == LkArmSide::kRight ? 1 : 0;
-    const StandstillCalibration cal = CalibrateFromStandstill(
-        background_, mean, arm_length_, o_.body_threshold, side, o_.upper_fraction);
+    const StandstillCalibration cal = CalibrateFromStandstill(background_, mean, arm_length_, o_);
     if (!cal.ok) {
       state_ = State::kFailed;
       failure_ = "lk: cannot calibrate from the standstill: " + cal.note;
