@@ -20,21 +20,9 @@ bool Contains(const std::string& text, const std::string& part) {
 }
 
 std::vector<std::string> Protocol(const std::string& scene, const std::string& out) {
-  return {"-q",
-          "analyze",
-          scene + "/scene.avi",
-          "-o",
-          out,
-          "--engine",
-          "hybrid",
-          "--background",
-          scene + "/background.png",
-          "--arm-length",
-          scene + "/armlength.png",
-          "--start",
-          "10",
-          "--standstill-frames",
-          "10"};
+  std::vector<std::string> args = {"-q", "analyze", scene + "/scene.avi", "-o", out};
+  for (const std::string& flag : test::SmallSceneBgsubFlags(scene, "hybrid")) args.push_back(flag);
+  return args;
 }
 
 TEST(CliHybrid, TheProtocolWithoutClicksMeasuresTheArm) {

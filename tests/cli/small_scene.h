@@ -31,11 +31,13 @@ inline const std::string& SmallScene(std::uint64_t seed, int motion_frames) {
   return dir.path();
 }
 
-// The thesis protocol's bgsub flags for a small scene in folder `scene`: its background and
-// arm-length images, the standstill from frame 10 for 10 frames.
-inline std::vector<std::string> SmallSceneBgsubFlags(const std::string& scene) {
+// The thesis protocol's flags for a small scene in folder `scene` (for `engine`: bgsub, or an
+// engine that takes the same): its background and arm-length images, the standstill from frame
+// 10 for 10 frames.
+inline std::vector<std::string> SmallSceneBgsubFlags(const std::string& scene,
+                                                     const std::string& engine = "bgsub") {
   return {"--engine",
-          "bgsub",
+          engine,
           "--background",
           scene + "/background.png",
           "--arm-length",

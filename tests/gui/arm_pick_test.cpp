@@ -1,11 +1,9 @@
 // Both arms in the window (the pose engine's side both): the analysis writes an angle file per
 // arm, the overlay draws both arms, and the arm picked on the angle panel is the one the plot,
 // the overlay's angles and the robot's plan follow. Needs the pose model.
-#include <QCheckBox>
 #include <QComboBox>
 #include <QFileInfo>
 #include <QImage>
-#include <QPushButton>
 #include <QTest>
 
 #include "analysis_job.h"
@@ -16,11 +14,8 @@
 #include "gui_fixture.h"
 #include "log_view.h"
 #include "main_window.h"
-#include "mimic_controller.h"
-#include "mimic_panel.h"
 #include "robot_panel.h"
 #include "robot_plan.h"
-#include "sim_controller.h"
 #include "video_player.h"
 #include "video_view.h"
 
@@ -118,25 +113,8 @@ TEST_F(ArmPickTest, MimicLiveFollowsThePickedArm) {
   MainWindow w;
   AnalyzeBothArms(w);
   w.anglePanel()->setArm(1);
-  gui::RobotPanel* robot = w.robotPanel();
-  ASSERT_TRUE(robot->startSimulator(0.05)) << w.log()->text().toStdString();
-  ASSERT_TRUE(robot->connectTo(robot->simulator()->devicePath())) << w.log()->text().toStdString();
-  gui::MimicPanel* panel = w.mimicPanel();
-  auto* confirm = panel->findChild<QCheckBox*>("mimicConfirm");
-  auto* start = panel->findChild<QPushButton*>("mimicStart");
-  ASSERT_NE(confirm, nullptr);
-  ASSERT_NE(start, nullptr);
-  ASSERT_TRUE(WaitUntil([&] { return !panel->shownSettings().isEmpty(); }));
-  QTest::mouseClick(confirm, Qt::LeftButton, {}, QPoint(4, confirm->height() / 2));
-  ASSERT_TRUE(start->isEnabled());
-  bool finished = false;
-  QObject::connect(panel->controller(), &gui::MimicController::finished,
-                   [&](bool, const QString&) { finished = true; });
-  QTest::mouseClick(start, Qt::LeftButton);
-  ASSERT_TRUE(panel->controller()->running()) << w.log()->text().toStdString();
-  ASSERT_TRUE(WaitUntil([&] { return finished; }, 60000)) << w.log()->text().toStdString();
   AngleFile f;
-  ASSERT_TRUE(ReadAngleFile(panel->controller()->anglesPath().toStdString(), &f).ok());
+  ASSERT_NO_FATAL_FAILURE(RunMimicToEnd(w, &f));
   EXPECT_EQ(f.Meta("pose.side"), "right");
 }
 

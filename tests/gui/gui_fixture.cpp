@@ -5,6 +5,8 @@
 #include <utility>
 
 #include <QApplication>
+#include <QCheckBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QTest>
 #include <QTimer>
@@ -12,11 +14,16 @@
 #include <QWidget>
 
 #include "analysis_job.h"
+#include "armmimic/core/angle_file.h"
 #include "armmimic/synth/arm_scene.h"
 #include "armmimic/synth/marker_scene.h"
 #include "engine_settings_panel.h"
 #include "log_view.h"
 #include "main_window.h"
+#include "mimic_controller.h"
+#include "mimic_panel.h"
+#include "robot_panel.h"
+#include "sim_controller.h"
 #include "video_player.h"
 #include "video_view.h"
 
@@ -127,6 +134,28 @@ void GuiTest::Wheel(QWidget* w, int delta) {
     QApplication::sendEvent(target, &event);
     if (event.isAccepted()) return;
   }
+}
+
+void GuiTest::RunMimicToEnd(gui::MainWindow& w, AngleFile* angles) {
+  gui::RobotPanel* robot = w.robotPanel();
+  ASSERT_TRUE(robot->startSimulator(0.05)) << w.log()->text().toStdString();
+  ASSERT_TRUE(robot->connectTo(robot->simulator()->devicePath())) << w.log()->text().toStdString();
+  gui::MimicPanel* panel = w.mimicPanel();
+  auto* confirm = panel->findChild<QCheckBox*>("mimicConfirm");
+  auto* start = panel->findChild<QPushButton*>("mimicStart");
+  ASSERT_NE(confirm, nullptr);
+  ASSERT_NE(start, nullptr);
+  ASSERT_TRUE(WaitUntil([&] { return !panel->shownSettings().isEmpty(); }));
+  QTest::mouseClick(confirm, Qt::LeftButton, {}, QPoint(4, confirm->height() / 2));
+  ASSERT_TRUE(start->isEnabled());
+  bool finished = false;
+  QObject::connect(panel->controller(), &gui::MimicController::finished,
+                   [&](bool, const QString&) { finished = true; });
+  QTest::mouseClick(start, Qt::LeftButton);
+  ASSERT_TRUE(panel->controller()->running()) << w.log()->text().toStdString();
+  ASSERT_TRUE(WaitUntil([&] { return finished; }, 60000)) << w.log()->text().toStdString();
+  const Status st = ReadAngleFile(panel->controller()->anglesPath().toStdString(), angles);
+  ASSERT_TRUE(st.ok()) << st.message();
 }
 
 void GuiTest::ShowAndOpen(gui::MainWindow& w) {

@@ -11,6 +11,7 @@
 
 class QWidget;
 
+#include "armmimic/core/angle_file.h"
 #include "armmimic/engines/analysis.h"
 #include "test_util.h"
 
@@ -59,6 +60,10 @@ class GuiTest : public ::testing::Test {
   // ShowAndOpen, then analyses the scene with bgsub in the thesis protocol; fails the test when
   // any step does not happen.
   static void ShowAndAnalyze(gui::MainWindow& w);
+  // Starts the emulator (time scale 0.05) and connects the robot panel to it, confirms and
+  // starts Mimic live with the Analysis tab's settings, waits for it to finish and reads its
+  // angle file into `angles`; fails the test when any step does not happen.
+  static void RunMimicToEnd(gui::MainWindow& w, AngleFile* angles);
   // Runs `action` while a modal dialog of class `D` it opens is answered by `answer` (called
   // with the dialog once it shows). Returns whether the dialog showed.
   template <typename D>

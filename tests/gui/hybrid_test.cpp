@@ -2,7 +2,6 @@
 // parameters, its options through sessions, saved settings and Mimic live, and the standstill's
 // estimated joints shown as handles on the last standstill frame, accepted or dragged into the
 // clicked joints.
-#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QGroupBox>
@@ -19,10 +18,6 @@
 #include "gui_fixture.h"
 #include "log_view.h"
 #include "main_window.h"
-#include "mimic_controller.h"
-#include "mimic_panel.h"
-#include "robot_panel.h"
-#include "sim_controller.h"
 #include "video_player.h"
 #include "video_view.h"
 
@@ -216,23 +211,8 @@ TEST_F(HybridTest, MimicLiveRunsTheHybridEngine) {
   o.engine.kind = EngineKind::kHybrid;
   o.engine.lk.standstill_frames = scenes().standstill_frames;
   w.settingsPanel()->setOptions(o);
-  gui::RobotPanel* robot = w.robotPanel();
-  ASSERT_TRUE(robot->startSimulator(0.05)) << w.log()->text().toStdString();
-  ASSERT_TRUE(robot->connectTo(robot->simulator()->devicePath())) << w.log()->text().toStdString();
-  gui::MimicPanel* panel = w.mimicPanel();
-  auto* confirm = panel->findChild<QCheckBox*>("mimicConfirm");
-  auto* start = panel->findChild<QPushButton*>("mimicStart");
-  ASSERT_TRUE(confirm && start);
-  ASSERT_TRUE(WaitUntil([&] { return !panel->shownSettings().isEmpty(); }));
-  QTest::mouseClick(confirm, Qt::LeftButton, {}, QPoint(4, confirm->height() / 2));
-  bool finished = false;
-  QObject::connect(panel->controller(), &gui::MimicController::finished,
-                   [&](bool, const QString&) { finished = true; });
-  QTest::mouseClick(start, Qt::LeftButton);
-  ASSERT_TRUE(panel->controller()->running()) << w.log()->text().toStdString();
-  ASSERT_TRUE(WaitUntil([&] { return finished; }, 60000)) << w.log()->text().toStdString();
   AngleFile f;
-  ASSERT_TRUE(ReadAngleFile(panel->controller()->anglesPath().toStdString(), &f).ok());
+  ASSERT_NO_FATAL_FAILURE(RunMimicToEnd(w, &f));
   EXPECT_EQ(f.Meta("engine"), "hybrid");
   EXPECT_EQ(f.Meta("second_opinion"), "bgsub");
 }
