@@ -69,11 +69,16 @@ class ArmFitter {
     double upper = 0, fore = 0;
     std::vector<Ray> upper_rays, fore_rays;  // one per degree, 0..359 (DirectionVector)
     std::vector<Ray> upper_flank[2], fore_flank[2];
+    // Every upper ray is the first samples of the first Lengths' ray of its degree (the same
+    // start, a shorter end): its scores are partial sums of those.
+    bool upper_prefix = false;
   };
   Lengths MakeLengths(double scale) const;
-  // The best pose with the segments of `l`; its score in *score.
+  // The upper arm's score at every degree (0..359) for each of lengths_.
+  void ScoreUppers(const cv::Mat& weights, int from) const;
+  // The best pose with the segments of `l`, whose upper scores are `up`; its score in *score.
   ArmFit FitLengths(const cv::Mat& weights, const cv::Point& origin, const Lengths& l,
-                    int* score) const;
+                    const std::vector<int>& up, int* score) const;
   // The yaw, to a degree, that fits `fit`'s directions best: its lengths and joints.
   void RefineScale(const cv::Mat& weights, const cv::Point& origin, ArmFit* fit) const;
   static Ray MakeRay(int stride, int deg, double t0, double t1, double half_width);
@@ -95,8 +100,10 @@ class ArmFitter {
 
   int stride_ = 0;
   double upper_len_ = 0, fore_len_ = 0, half_width_ = 0;
-  mutable cv::Mat without_upper_;  // WithoutUpper's buffer
-  std::vector<Lengths> lengths_;   // the calibrated lengths first, then shorter ones
+  mutable cv::Mat without_upper_;  // WithoutUpper's buffer: Fit's weights but for `cleared_`
+  mutable cv::Rect cleared_;       // around the line WithoutUpper cleared last
+  mutable std::vector<std::vector<int>> upper_scores_;  // ScoreUppers' result, per lengths_
+  std::vector<Lengths> lengths_;  // the calibrated lengths first, then shorter ones
 };
 
 }  // namespace armmimic::bgsub
