@@ -13,7 +13,10 @@ cv::Mat LightGain(const cv::Mat& bgr, const cv::Mat& background, const cv::Mat& 
   constexpr float kMinGain = 0.4f, kMaxGain = 2.5f;
   const int bx = std::max(1, (region.width + kBlock - 1) / kBlock);
   const int by = std::max(1, (region.height + kBlock - 1) / kBlock);
-  std::vector<std::vector<float>> ratios(static_cast<std::size_t>(bx * by * 3));
+  // Kept from call to call (cleared, not freed): a frame fills a few hundred of them.
+  thread_local std::vector<std::vector<float>> ratios;
+  ratios.resize(static_cast<std::size_t>(bx * by * 3));
+  for (std::vector<float>& v : ratios) v.clear();
   for (int y = 0; y < region.height; y += 2) {
     const cv::Vec3b* in = bgr.ptr<cv::Vec3b>(y + region.y) + region.x;
     const cv::Vec3f* b = background.ptr<cv::Vec3f>(y + region.y) + region.x;
