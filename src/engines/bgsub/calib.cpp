@@ -28,6 +28,10 @@ double MedianOf(std::vector<double> v) {
 void FindBody(const PixelModel& pixels, ArmCalibration* cal) {
   cv::Mat person, labels;
   pixels.StandstillPerson(&person);
+  // Thin lines are no body: an edge of the room drawn a little differently (the floor's edge
+  // under a drift of the light, a compression's ringing) would join the whole width of the room
+  // to the person and move the body's centre.
+  cv::morphologyEx(person, person, cv::MORPH_OPEN, cv::Mat::ones(3, 3, CV_8UC1));
   const std::vector<Component> parts = MaskComponents(person, &labels);
   const int largest = LargestComponent(parts);
   if (largest < 0) return;
@@ -35,14 +39,20 @@ void FindBody(const PixelModel& pixels, ArmCalibration* cal) {
   ComponentMask(labels, c, &cal->body);
   // The head, and a hanging arm a gap of wall away from the torso, are the body too: every
   // sizeable region of the standstill's difference (not specks of noise) joins the mask.
+  // The body's box also takes the parts above and below the largest one (in its columns): legs
+  // the thin lines' removal cut off from the torso, where they differ little from the floor.
   cv::Mat one;
+  cv::Rect box = c.box;
   for (const Component& part : parts) {
     if (part.label == c.label || part.area_px < std::max(16, c.area_px / kBodyPartShare)) continue;
     ComponentMask(labels, part, &one);
     cal->body |= one;
+    if (part.box.x < c.box.x + c.box.width && c.box.x < part.box.x + part.box.width) {
+      box |= part.box;
+    }
   }
   Close(&cal->body, cv::Rect(cv::Point(), cal->body.size()), 5);
-  cal->body_box = c.box;
+  cal->body_box = box;
 }
 
 // The straight arm of the arm-length image: the largest region outside the standing body that
@@ -107,7 +117,9 @@ double HangingArmAxis(const ArmCalibration& cal, int inner_x, double length) {
   std::vector<double> edges;
   for (int y = std::max(0, y0); y <= last; ++y) {
     const uchar* row = cal.body.ptr<uchar>(y);
-    for (int x = outer; x != centre; x -= cal.side) {
+    // Towards the centre only while on the arm's side of it: a straight arm whose inner end lies
+    // past the body's centre gives no edge (the walk must not run on past the centre).
+    for (int x = std::clamp(outer, -1, cal.body.cols); cal.side * (x - centre) > 0; x -= cal.side) {
       if (x < 0 || x >= cal.body.cols) continue;
       if (row[x]) {
         edges.push_back(x);
