@@ -155,6 +155,54 @@ TEST(BgsubEngine, RoiAndFixedShoulderKeepFullImagePixels) {
   EXPECT_LT(cv::norm(m.upper_com_px - mid), 10);
 }
 
+// A person near the image's right edge whose arm reaches left, past the image's centre, and a
+// floor edge that differs from the empty room by a thin line across the whole width (drawn a
+// little differently, as a drift of the light or a compression can). The line must not join the
+// room to the body: the body's centre would move to the image's centre, the arm (its centroid
+// right of that) would be taken for one reaching right, and the shoulder searched past the body.
+cv::Mat RightPerson(double upper_deg, double fore_deg, bool floor_line) {
+  cv::Mat img = Wall();
+  const cv::Scalar shirt(140, 60, 30), skin(120, 150, 200);
+  const cv::Point2d shoulder(236, 100);
+  cv::rectangle(img, cv::Rect(243, 90, 57, 150), shirt, cv::FILLED);
+  cv::circle(img, cv::Point(271, 62), 16, skin, cv::FILLED);
+  cv::line(img, cv::Point(300, 98), cv::Point(303, 190), shirt, 14);
+  const cv::Point2d e = shoulder + DirectionVector(upper_deg) * kUpper;
+  cv::line(img, shoulder, e, shirt, 13);
+  cv::line(img, e, e + DirectionVector(fore_deg) * kFore, shirt, 11);
+  if (floor_line) cv::line(img, cv::Point(0, 210), cv::Point(kSize.width - 1, 210), shirt, 1);
+  return img;
+}
+
+TEST(BgsubEngine, AThinLineAcrossTheRoomIsNoBody) {
+  EngineContext ctx;
+  ctx.frame_size = kSize;
+  ctx.background = Wall();
+  ctx.arm_length = RightPerson(180, 180, true);
+  EngineOptions eo;
+  eo.bgsub = Short();
+  auto engine = Engine::Create(eo);
+  ASSERT_TRUE(engine->Begin(ctx).ok());
+  int index = 0;
+  for (int i = 0; i < eo.bgsub.standstill_frames; ++i) {
+    Frame f;
+    f.image = RightPerson(-90, -90, true);
+    f.index = index++;
+    ASSERT_EQ(engine->Process(f).phase, MeasurementPhase::kSetup);
+  }
+  for (double deg : {180.0, 150.0, -150.0}) {
+    Frame f;
+    f.image = RightPerson(deg, deg, true);
+    f.index = index++;
+    const ArmMeasurement m = engine->Process(f);
+    ASSERT_EQ(m.phase, MeasurementPhase::kOk) << deg << ": " << m.note;
+    EXPECT_NEAR(AngleDiff(m.upper_deg, deg), 0, 3) << m.note;
+    EXPECT_NEAR(AngleDiff(m.fore_deg, deg), 0, 3) << m.note;
+    ASSERT_TRUE(m.shoulder_px.has_value());
+    EXPECT_NEAR(m.shoulder_px->x, 236, 7);
+  }
+}
+
 TEST(BgsubEngine, BeginNamesTheBadImage) {
   EngineOptions eo;
   auto engine = Engine::Create(eo);
