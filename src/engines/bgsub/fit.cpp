@@ -317,12 +317,16 @@ ArmFit ArmFitter::FitLengths(const cv::Mat& weights, const cv::Point& origin, co
     const cv::Point2d e = DirectionVector(deg) * l.upper;
     return from + cvRound(e.y) * stride_ + cvRound(e.x);
   };
+  // Each peak's forearm scores (u - 160 .. u + 160 by 2), kept for the best other pose below.
+  std::vector<std::pair<int, std::vector<int>>> fore_scores;
   for (int u : Peaks(up, 4, 4)) {
     const int e = elbow_at(u);
     const cv::Mat& rest = WithoutUpper(weights, origin, u, l.upper);
     Pose best{u, u, std::numeric_limits<int>::min() / 2};
+    fore_scores.emplace_back(u, std::vector<int>());
     for (int f = u - 160; f <= u + 160; f += 2) {
       const int s = Score(rest, e, f, l.fore_rays);
+      fore_scores.back().second.push_back(s);
       if (better(s, u, f, best)) best = {u, Wrap360(f), s};
     }
     best.score += up[static_cast<std::size_t>(u)];
@@ -349,11 +353,15 @@ ArmFit ArmFitter::FitLengths(const cv::Mat& weights, const cv::Point& origin, co
     if (std::abs(AngleDiff(poses[i].up, best.up)) > 15) second = std::max(second, poses[i].score);
   }
   const int e = elbow_at(best.up);
-  const cv::Mat& rest = WithoutUpper(weights, origin, best.up, l.upper);
-  for (int f = best.up - 160; f <= best.up + 160; f += 2) {
+  const std::vector<int>* known = nullptr;  // the best elbow's forearm scores, if a peak's
+  for (const auto& [u, scores] : fore_scores) {
+    if (u == best.up) known = &scores;
+  }
+  const cv::Mat& rest = known ? weights : WithoutUpper(weights, origin, best.up, l.upper);
+  for (int f = best.up - 160, k = 0; f <= best.up + 160; f += 2, ++k) {
     if (std::abs(AngleDiff(f, best.fore)) <= 15) continue;
-    second =
-        std::max(second, up[static_cast<std::size_t>(best.up)] + Score(rest, e, f, l.fore_rays));
+    const int s = known ? (*known)[static_cast<std::size_t>(k)] : Score(rest, e, f, l.fore_rays);
+    second = std::max(second, up[static_cast<std::size_t>(best.up)] + s);
   }
   int upos = 0, uneg = 0, un = 0, fpos = 0, fneg = 0, fn = 0;
   Count(weights, from, best.up, l.upper_rays, &upos, &uneg, &un);
