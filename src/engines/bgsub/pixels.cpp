@@ -7,6 +7,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "common/order_statistic.h"
+
 namespace armmimic::bgsub {
 namespace {
 
@@ -30,9 +32,7 @@ constexpr double kOutlier = 0.08;
 
 float Median(std::vector<float>* v) {
   if (v->empty()) return 1.0f;
-  auto mid = v->begin() + static_cast<std::ptrdiff_t>(v->size() / 2);
-  std::nth_element(v->begin(), mid, v->end());
-  return *mid;
+  return arm::KthSmallest(v->data(), v->size(), v->size() / 2);
 }
 
 // One gain per channel of `bgr` over `reference`: the median ratio over a sparse grid.

@@ -7,6 +7,7 @@
 
 #include "armmimic/core/angles.h"
 #include "common/light_gain.h"
+#include "common/order_statistic.h"
 
 namespace armmimic::arm {
 namespace {
@@ -275,9 +276,8 @@ double ChangeNoise(std::vector<float>* above, std::size_t sampled) {
   const auto at = static_cast<std::size_t>(kChangeQuantile * (sampled - 1));
   const std::size_t at_most_min = sampled - above->size();
   if (at < at_most_min) return kMinChange;
-  const auto q = above->begin() + static_cast<std::ptrdiff_t>(at - at_most_min);
-  std::nth_element(above->begin(), q, above->end());
-  return std::max(kMinChange, static_cast<double>(*q));
+  return std::max(kMinChange,
+                  static_cast<double>(KthSmallest(above->data(), above->size(), at - at_most_min)));
 }
 
 }  // namespace

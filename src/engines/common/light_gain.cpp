@@ -5,6 +5,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "common/order_statistic.h"
+
 namespace armmimic::arm {
 
 cv::Mat LightGain(const cv::Mat& bgr, const cv::Mat& background, const cv::Mat& known,
@@ -31,11 +33,7 @@ cv::Mat LightGain(const cv::Mat& bgr, const cv::Mat& background, const cv::Mat& 
       }
     }
   }
-  auto median = [](std::vector<float>& v) {
-    const auto m = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-    std::nth_element(v.begin(), m, v.end());
-    return *m;
-  };
+  auto median = [](std::vector<float>& v) { return KthSmallest(v.data(), v.size(), v.size() / 2); };
   // The whole region's median of a channel, taken only when a block needs it (seldom).
   float whole[3] = {0.f, 0.f, 0.f};
   auto whole_median = [&](int c) {

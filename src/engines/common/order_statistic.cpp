@@ -1,0 +1,52 @@
+#include "common/order_statistic.h"
+
+#include <algorithm>
+
+namespace armmimic::arm {
+namespace {
+
+float MedianOfThree(float a, float b, float c) {
+  return std::max(std::min(a, b), std::min(std::max(a, b), c));
+}
+
+// Moves the elements of [first, first + n) that satisfy `keep` to the front, in one pass that
+// swaps every element and advances on the condition (the elements between the front and the
+// element looked at all fail it, so a swap with one of them changes nothing that matters); the
+// number kept.
+template <typename Keep>
+std::size_t Partition(float* first, std::size_t n, Keep keep) {
+  std::size_t front = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    const float v = first[j];
+    first[j] = first[front];
+    first[front] = v;
+    front += keep(v) ? 1 : 0;
+  }
+  return front;
+}
+
+}  // namespace
+
+float KthSmallest(float* first, std::size_t n, std::size_t k) {
+  constexpr std::size_t kSmall = 24;  // below this, nth_element's own insertion sort is as quick
+  while (n > kSmall) {
+    const float pivot = MedianOfThree(first[0], first[n / 2], first[n - 1]);
+    const std::size_t below = Partition(first, n, [pivot](float v) { return v < pivot; });
+    if (k < below) {
+      n = below;
+      continue;
+    }
+    // The rest are at least the pivot: those equal to it come next, then the larger ones. The
+    // pivot is one of the values, so each round leaves fewer.
+    const std::size_t equal =
+        Partition(first + below, n - below, [pivot](float v) { return v <= pivot; });
+    if (k < below + equal) return pivot;
+    first += below + equal;
+    n -= below + equal;
+    k -= below + equal;
+  }
+  std::nth_element(first, first + k, first + n);
+  return first[k];
+}
+
+}  // namespace armmimic::arm

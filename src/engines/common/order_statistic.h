@@ -1,0 +1,14 @@
+// The k-th smallest of a few hundred floats, as std::nth_element gives it, without its branches:
+// the light gain takes some hundreds of such medians per frame, and on ratios of noisy pixels
+// nth_element's comparisons are a coin toss the processor mispredicts half the time.
+#pragma once
+
+#include <cstddef>
+
+namespace armmimic::arm {
+
+// The value std::nth_element(first, first + k, first + n) would put at first + k (k < n; n > 0).
+// Reorders [first, first + n) as it goes; NaN must not occur.
+float KthSmallest(float* first, std::size_t n, std::size_t k);
+
+}  // namespace armmimic::arm

@@ -1,0 +1,54 @@
+// KthSmallest against std::nth_element: every rank of arrays of many sizes, with ties, runs of
+// one value and sorted input.
+#include "common/order_statistic.h"
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace armmimic::arm {
+namespace {
+
+float Reference(std::vector<float> v, std::size_t k) {
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  return v[k];
+}
+
+void ExpectEveryRank(const std::vector<float>& v) {
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    std::vector<float> w = v;
+    ASSERT_EQ(KthSmallest(w.data(), w.size(), k), Reference(v, k))
+        << "n " << v.size() << " k " << k;
+  }
+}
+
+TEST(KthSmallestTest, EqualsNthElementOnNoisyRatios) {
+  std::mt19937 rng(11);
+  std::normal_distribution<float> ratio(1.0f, 0.08f);
+  for (std::size_t n : {1, 2, 3, 23, 24, 25, 26, 60, 100, 144, 145, 500}) {
+    std::vector<float> v(n);
+    for (float& x : v) x = ratio(rng);
+    ExpectEveryRank(v);
+  }
+}
+
+TEST(KthSmallestTest, EqualsNthElementWithTiesAndOrder) {
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> level(0, 6);
+  for (std::size_t n : {30, 100, 144}) {
+    std::vector<float> ties(n);
+    for (float& x : ties) x = static_cast<float>(level(rng)) / 4;  // a few values, many times
+    ExpectEveryRank(ties);
+    ExpectEveryRank(std::vector<float>(n, 1.25f));  // one value
+    std::vector<float> sorted = ties;
+    std::sort(sorted.begin(), sorted.end());
+    ExpectEveryRank(sorted);
+    std::reverse(sorted.begin(), sorted.end());
+    ExpectEveryRank(sorted);
+  }
+}
+
+}  // namespace
+}  // namespace armmimic::arm
