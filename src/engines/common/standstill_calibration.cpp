@@ -82,13 +82,18 @@ bool FindBody(const Differences& d, cv::Mat* body, cv::Rect* box) {
   const Part* main = Largest(parts);
   if (!main || main->area < 0.005 * static_cast<double>(person.total())) return false;
   *body = cv::Mat::zeros(person.size(), CV_8UC1);
+  // The box also takes the parts above and below the largest one (in its columns): legs that
+  // differ little from the floor, cut off from the torso by the opening.
+  *box = main->box;
   for (const Part& p : parts) {
     if (p.label == main->label || p.area >= std::max(16, main->area / kBodyPartShare)) {
       body->setTo(255, labels == p.label);
+      if (p.box.x < main->box.x + main->box.width && main->box.x < p.box.x + p.box.width) {
+        *box |= p.box;
+      }
     }
   }
   cv::morphologyEx(*body, *body, cv::MORPH_CLOSE, cv::Mat::ones(5, 5, CV_8UC1));
-  *box = main->box;
   return true;
 }
 
@@ -225,7 +230,16 @@ StandstillCalibration CalibrateFromStandstill(const cv::Mat& background, const c
       hi = std::max(hi, x);
       ++count;
     }
-    if (count >= r) axis.emplace_back(0.5 * (lo + hi), y);
+    if (count < r) continue;
+    // A row narrower than the arm whose inner side meets the person of the arm-length image shows
+    // only the arm's part clear of the torso (a sleeve that hung over the body's side, in the
+    // shirt's colour, is no change where the body stays): its outer edge, against the room, is
+    // the arm's, and the axis lies a radius in from it.
+    const int beside = cal.side > 0 ? lo - 1 : hi + 1;
+    const bool covered = hi - lo + 1 < 2 * r && beside >= 0 && beside < left_empty.cols &&
+                         d.arm_length_room.at<uchar>(y, beside) != 0;
+    const double outer_edge = cal.side > 0 ? hi + 0.5 : lo - 0.5;
+    axis.emplace_back(covered ? outer_edge - cal.side * r : 0.5 * (lo + hi), y);
   }
   // Without it in at least kHangingShare of those rows (the arm in front of something of its own
   // colour, a sleeve in the room's), where the arm hangs is not shown: no calibration rather than

@@ -82,10 +82,12 @@ TEST(StandstillCalibrationTest, FindsTheHangingArmOnBothGenerators) {
   // guessed: two of these twelve (a sleeve in the wall's colour) are.
   EXPECT_GE(e.calibrated, e.scenes - 3);
   EXPECT_EQ(e.wrong_side, 0);
-  EXPECT_LT(Median(e.shoulder_px), 6.0);
+  EXPECT_LT(Median(e.shoulder_px), 4.5);
   EXPECT_LT(Median(e.hanging_deg), 6.0);
-  EXPECT_LT(Median(e.wrist_px), 25.0);
-  EXPECT_LT(*std::max_element(e.shoulder_px.begin(), e.shoulder_px.end()), 15.0);
+  EXPECT_LT(Median(e.wrist_px), 20.0);
+  // A sleeve that hung over the torso's side in the shirt's colour shows only its outer part; its
+  // middle put the shoulder 10 px out (random 1002) before the outer edge was taken for it.
+  EXPECT_LT(*std::max_element(e.shoulder_px.begin(), e.shoulder_px.end()), 8.0);
 }
 
 TEST(StandstillCalibrationTest, ARoomWithNobodyIsNamed) {
