@@ -8,6 +8,7 @@
 
 #include "armmimic/core/angles.h"
 #include "marker/lower.h"
+#include "marker/lower_reference.h"
 
 namespace armmimic::internal {
 namespace {
@@ -248,87 +249,6 @@ bool ChooseBands(const cv::Mat& gray, const Layout& g, const CylinderView& cyl, 
   return true;
 }
 
-// Marker grey over surface grey at the two markers' centres, then the markers measured with it:
-// their zero-yaw angles, angular radius and height.
-bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, int x0,
-                             const std::vector<double>& surface, bool allow_cut,
-                             LowerCalibration* cal, LowerScan* scan, std::string* message) {
-  LowerScratch scratch;
-  for (int pass = 0; pass < 2; ++pass) {
-    MeasureLowerMarkers(gray, *cal, x0, surface, true, scan, &scratch);
-    // A marker the limb cuts is read from its inner end and the disc's half-chord, which needs
-    // the markers' angular radius: the whole one's.
-    if (allow_cut && scan->markers.size() == 1 && !scan->markers[0].cut && cal->delta == 0) {
-      cal->delta = scan->markers[0].radius;
-      MeasureLowerMarkers(gray, *cal, x0, surface, true, scan, &scratch);
-    }
-    if (scan->markers.size() != 2) {
-      *message = "found " + std::to_string(scan->markers.size()) +
-                 " dark patches across the joint at the lower markers' height, expected 2";
-      return false;
-    }
-    if (pass == 1) break;
-    double ratio = 0;
-    for (const LowerMarker& m : scan->markers) {
-      const cv::Point c(static_cast<int>(std::lround(m.centre_px.x)),
-                        static_cast<int>(std::lround(m.centre_px.y)));
-      double sum = 0;
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) sum += gray.at<uchar>(c.y + dy, c.x + dx);
-      }
-      ratio += sum / 9 / std::max(1.0, surface[c.x - x0]);
-    }
-    cal->marker_ratio = std::clamp(0.5 * ratio, 0.0, 0.8);
-  }
-  const LowerMarker& l = scan->markers[0];
-  const LowerMarker& r = scan->markers[1];
-  cal->theta_left0 = l.theta;
-  cal->theta_right0 = r.theta;
-  cal->delta = l.cut ? r.radius : r.cut ? l.radius : 0.5 * (l.radius + r.radius);
-  const double f = camera.focal_px, cy = camera.principal_px.y;
-  const CylinderView& c = scan->cylinder;
-  cal->height = 0.5 * ((cy - l.centre_px.y) * c.Depth(l.theta) / f +
-                       (cy - r.centre_px.y) * c.Depth(r.theta) / f);
-  return true;
-}
-
-// The lower markers are equal discs: measured across the cylinder they have the same angular
-// radius, whatever the camera's tilt (both lie at one height). A silhouette edge placed wrongly
-// stretches the angles on its side, so the weaker edge is moved (within a third of a radius)
-// to where the two radii agree best, when they differ by over 3 % at the steps' edges. Markers
-// the limb cuts give no radius and leave the edges as they are.
-void EqualDiscs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
-                const std::vector<double>& surface, int weak, LowerCalibration* cal,
-                LowerScan* scan) {
-  auto unequal = [](const LowerScan& sc) {
-    const double a = sc.markers[0].radius, b = sc.markers[1].radius;
-    if (sc.markers[0].cut || sc.markers[1].cut || !(a > 0) || !(b > 0)) return kNaN;
-    return std::abs(a - b) / (a + b);
-  };
-  double best = unequal(*scan);
-  if (!(best > 0.03)) return;
-  const double start = weak == 0 ? cal->left_edge_px : cal->right_edge_px;
-  const double reach = 0.35 * 0.5 * (cal->right_edge_px - cal->left_edge_px);
-  const LowerCalibration base = *cal;
-  for (double d = -reach; d <= reach; d += 0.25) {
-    LowerCalibration c = base;
-    (weak == 0 ? c.left_edge_px : c.right_edge_px) = start + d;
-    c.delta = 0;
-    c.marker_ratio = LowerCalibration().marker_ratio;
-    LowerScan sc;
-    sc.left_edge_px = c.left_edge_px;
-    sc.right_edge_px = c.right_edge_px;
-    sc.cylinder = CylinderView(camera, c.left_edge_px, c.right_edge_px);
-    std::string ignored;
-    if (!sc.cylinder.valid() ||
-        !MeasureReferenceMarkers(gray, camera, x0, surface, false, &c, &sc, &ignored)) {
-      continue;
-    }
-    const double q = unequal(sc);
-    if (q < best) best = q, *cal = c, *scan = sc;
-  }
-}
-
 }  // namespace
 
 bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Point2d left_px,
@@ -412,6 +332,12 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   // cuts one is wrong. The steps' own edges are tried first, then the faint edge placed by the
   // markers' symmetry; a marker cut by the limb is accepted only when neither shows both whole.
   const double fitted_edges[2] = {cal->left_edge_px, cal->right_edge_px};
+  // Every row that shows the straight joint's limbs beside the markers: from below the upper
+  // marker down to the marker band, and the band below it.
+  std::vector<int> limb_rows = RowRange(
+      upper_px.y + 0.7 * g.h + 2,
+      std::min<double>(g.y_low - 0.7 * g.h - 0.15 * g.off - 2, cal->band_top - 2), gray.rows);
+  limb_rows.insert(limb_rows.end(), cal->bands[1].rows.begin(), cal->bands[1].rows.end());
   std::string first_message;
   for (int attempt = 0; attempt < 4; ++attempt) {
     const bool moved = attempt % 2 == 1;
@@ -428,9 +354,13 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
     if (MeasureReferenceMarkers(gray, camera, g.x0, surface, attempt >= 2, cal, scan, message)) {
       // A plain step that the bands agree on is the silhouette: only an unsure edge is moved.
       if (unsure(weak)) EqualDiscs(gray, camera, g.x0, surface, weak, cal, scan);
+      const bool plain[2] = {!unsure(0), !unsure(1)};
+      cal->single_sized =
+          RefineLimbs(gray, camera, g.x0, surface, limb_rows, g.y_low, plain, cal, scan);
+      // ... or, as before, both lower markers whole and equal discs.
       const LowerMarker& l = scan->markers[0];
       const LowerMarker& r = scan->markers[1];
-      cal->single_sized =
+      cal->single_sized |=
           !l.cut && !r.cut && std::abs(l.radius - r.radius) <= kEqualDiscs * (l.radius + r.radius);
       return true;
     }

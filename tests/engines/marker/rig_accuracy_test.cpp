@@ -106,11 +106,14 @@ TEST(MarkerRigAccuracy, MediumRigs) {
 // every view was lost or 20-100 degrees off; its reference cuts a lower marker, so only its view
 // with both lower markers is read now) and where a single lower marker's side rests on the upper
 // part's silhouette (211, 212: only one side's bend puts the upper part where the image shows
-// it).
+// it). Since the limbs are fitted over all their rows (docs/marker.md, "Calibration"), two of
+// 212's single-marker views are lost as "it could be either" (its alpha moved from 1.1 degrees
+// under the truth to 1.0 over it; the right side's upper marker is no longer found and the wrong
+// side's shows too little of the upper part's silhouette to decide): 6 of 12 are answered.
 TEST(MarkerRigAccuracy, WallBlobsAndOneMarker) {
   RigTally t;
   for (uint64_t seed : {207, 211, 212}) RunRig("hard", seed, 4, &t);
-  EXPECT_GE(t.ok, t.views - 4) << t.log;
+  EXPECT_GE(t.ok, t.views - 6) << t.log;
   EXPECT_LE(t.yaw_max, 5) << t.log;
   EXPECT_LE(t.yaw_mae(), 1.5) << t.log;
   EXPECT_LE(t.bend_mae(), 1.5) << t.log;
@@ -125,6 +128,22 @@ TEST(MarkerRigAccuracy, UnsureReferenceLosesSingleMarkerViews) {
   RunRig("medium", 502, 5, &t);
   EXPECT_GE(t.ok, 2) << t.log;
   EXPECT_LE(t.yaw_max, 5) << t.log;
+  EXPECT_EQ(t.signed_off, 0) << t.log;
+}
+
+// Rigs whose silhouette the steps placed a pixel off (seed 12: a limb about as dark as the wall
+// beside it, the fit of one band's profile a pixel outside it; alpha was 1.1 degrees off, every
+// yaw 0.6-1.0) and whose bent upper part's shadow moved one band's step in a view (medium 118:
+// the silhouette tracked 1.4 pixels aside, single-marker yaws 2.3-3.7 degrees off). The limbs
+// fitted over all their rows, and the silhouette's shift taken from the edges most of the bands
+// agree on, read both within a degree.
+TEST(MarkerRigAccuracy, LimbsFittedOverAllRowsAndShiftsAgreedOn) {
+  RigTally t;
+  RunRig("easy", 12, 4, &t);
+  RunRig("medium", 118, 4, &t);
+  EXPECT_GE(t.ok, t.views - 1) << t.log;
+  EXPECT_LE(t.yaw_max, 1.0) << t.log;
+  EXPECT_LE(t.yaw_mae(), 0.5) << t.log;
   EXPECT_EQ(t.signed_off, 0) << t.log;
 }
 
