@@ -149,6 +149,43 @@ std::vector<int> RowsOnTheSurface(const cv::Mat& gray, const std::vector<int>& r
   return out;
 }
 
+// The same rows cut where the lower part ends, found without the band's median: near either
+// limb and at the centre, the rows are split where two constant levels fit them best, and a
+// split whose levels differ clearly is the part's end (the first of the three). Used when the
+// median's rule keeps too few rows: the median of all rows is the wall's when the part ends
+// within the band's first half, and then no row is kept.
+std::vector<int> RowsBeforeTheEnd(const cv::Mat& gray, const std::vector<int>& rows, double xl,
+                                  double xr) {
+  if (rows.size() < 2) return rows;
+  const int l = static_cast<int>(std::ceil(xl + 0.5)), r = static_cast<int>(std::floor(xr - 0.5));
+  const int c0 = static_cast<int>(std::ceil(xl + 0.33 * (xr - xl)));
+  const int c1 = static_cast<int>(std::floor(xr - 0.33 * (xr - xl)));
+  const int groups[3][2] = {{l, l + 2}, {c0, c1}, {r - 2, r}};
+  const std::size_t n = rows.size();
+  std::size_t end = n;
+  for (const auto& grp : groups) {
+    // Prefix sums of the group's level give each split's two means and misfit.
+    std::vector<double> s1(n + 1, 0.0), s2(n + 1, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      double sum = 0;
+      for (int x = grp[0]; x <= grp[1]; ++x) sum += gray.at<uchar>(rows[i], x);
+      const double v = sum / std::max(1, grp[1] - grp[0] + 1);
+      s1[i + 1] = s1[i] + v;
+      s2[i + 1] = s2[i] + v * v;
+    }
+    double best = 1e300;
+    std::size_t split = n;
+    for (std::size_t k = 1; k < n; ++k) {
+      const double a = s1[k], b = s1[n] - s1[k];
+      const double sse = s2[n] - a * a / k - b * b / (n - k);
+      if (sse < best) best = sse, split = k;
+    }
+    const double above = s1[split] / split, below = (s1[n] - s1[split]) / (n - split);
+    if (split < n && std::abs(above - below) > 0.1 * above + 5) end = std::min(end, split);
+  }
+  return std::vector<int>(rows.begin(), rows.begin() + end);
+}
+
 // An edge no band shows (the limb as bright as the wall behind it), from the other edge and the
 // reference's markers: at zero yaw the lower markers lie symmetrically about the front, where
 // the upper marker is, so theta(left) + theta(right) = 2 theta(upper). Bisection over the hidden
@@ -240,8 +277,11 @@ bool ChooseBands(const cv::Mat& gray, const Layout& g, const CylinderView& cyl, 
   cal->band_bottom = std::min(gray.rows - 1, static_cast<int>(std::ceil(bottom)));
   const double pivot_y = g.y_low - g.e_px;
   cal->bands[0].rows = RowRange(pivot_y + 1.15 * cyl.half_width_px(), cal->band_top - 2, gray.rows);
-  cal->bands[1].rows = RowsOnTheSurface(
-      gray, RowRange(cal->band_bottom + 2, g.y_low + 1.6 * g.e_px, gray.rows), left, right);
+  const std::vector<int> below = RowRange(cal->band_bottom + 2, g.y_low + 1.6 * g.e_px, gray.rows);
+  cal->bands[1].rows = RowsOnTheSurface(gray, below, left, right);
+  if (cal->bands[0].rows.size() + cal->bands[1].rows.size() < 3) {
+    cal->bands[1].rows = RowsBeforeTheEnd(gray, below, left, right);
+  }
   if (cal->bands[0].rows.size() + cal->bands[1].rows.size() < 3) {
     *message = "the joint shows too few rows beside its markers to find its silhouette";
     return false;

@@ -147,6 +147,20 @@ TEST(MarkerRigAccuracy, LimbsFittedOverAllRowsAndShiftsAgreedOn) {
   EXPECT_EQ(t.signed_off, 0) << t.log;
 }
 
+// Rigs whose lower part ends within the first half of the band below the markers (validation
+// seeds medium 132 and 155): the band's median level was the wall's, no row was kept and the
+// reference was refused ("too few rows beside its markers"). The part's end found as the split
+// of two levels keeps the rows above it.
+TEST(MarkerRigAccuracy, APartEndingSoonBelowTheMarkers) {
+  RigTally t;
+  RunRig("medium", 132, 4, &t);
+  RunRig("medium", 155, 4, &t);
+  EXPECT_GE(t.ok, t.views - 1) << t.log;
+  EXPECT_LE(t.yaw_mae(), 1.0) << t.log;
+  EXPECT_LE(t.yaw_max, 2.0) << t.log;
+  EXPECT_EQ(t.signed_off, 0) << t.log;
+}
+
 TEST(MarkerRigAccuracy, HardRigs) {
   RigTally t;
   for (uint64_t seed : {601, 602, 603}) RunRig("hard", seed, 5, &t);
