@@ -395,8 +395,16 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
       // A plain step that the bands agree on is the silhouette: only an unsure edge is moved.
       if (unsure(weak)) EqualDiscs(gray, camera, g.x0, surface, weak, cal, scan);
       const bool plain[2] = {!unsure(0), !unsure(1)};
-      cal->single_sized =
-          RefineLimbs(gray, camera, g.x0, surface, limb_rows, g.y_low, plain, cal, scan);
+      bool either_fitted = false;
+      cal->single_sized = RefineLimbs(gray, camera, g.x0, surface, limb_rows, g.y_low, plain, cal,
+                                      scan, &either_fitted);
+      // Neither limb fits within reach of its step: the silhouette (or the triple) is something
+      // else; the next attempt is tried, and the reference refused when none is left.
+      if (!either_fitted) {
+        *message = "neither limb of the joint fits the rows beside its markers";
+        if (first_message.empty()) first_message = *message;
+        continue;
+      }
       // ... or, as before, both lower markers whole and equal discs.
       const LowerMarker& l = scan->markers[0];
       const LowerMarker& r = scan->markers[1];

@@ -111,9 +111,10 @@ void EqualDiscs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
 // silhouette is then sure enough to size a single lower marker by its reference angle.
 bool RefineLimbs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
                  const std::vector<double>& surface, const std::vector<int>& rows, double y_ref,
-                 const bool plain[2], LowerCalibration* cal, LowerScan* scan) {
+                 const bool plain[2], LowerCalibration* cal, LowerScan* scan, bool* either_fitted) {
   const LimbFit fits[2] = {FitLimb(gray, rows, cal->left_edge_px, y_ref, 1, kLimbReach),
                            FitLimb(gray, rows, cal->right_edge_px, y_ref, -1, kLimbReach)};
+  *either_fitted = fits[0].ok || fits[1].ok;
   bool sure = true;
   bool can_move[2] = {false, false};
   for (int side = 0; side < 2; ++side) {

@@ -26,9 +26,10 @@ void EqualDiscs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
                 LowerScan* scan);
 
 // Fits each limb over `rows` (FitLimb) near the present edges; `plain` tells which side's step
-// is plain. True when the silhouette is sure enough to size a single lower marker.
+// is plain. True when the silhouette is sure enough to size a single lower marker;
+// `either_fitted` false when neither limb fits.
 bool RefineLimbs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
                  const std::vector<double>& surface, const std::vector<int>& rows, double y_ref,
-                 const bool plain[2], LowerCalibration* cal, LowerScan* scan);
+                 const bool plain[2], LowerCalibration* cal, LowerScan* scan, bool* either_fitted);
 
 }  // namespace armmimic::internal

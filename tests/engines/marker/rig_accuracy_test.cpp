@@ -25,7 +25,7 @@ namespace {
 
 struct RigTally {
   int views = 0, ok = 0, bends = 0, signed_off = 0, unsigned_rows = 0;
-  double yaw_sum = 0, bend_sum = 0, yaw_max = 0;
+  double yaw_sum = 0, bend_sum = 0, yaw_max = 0, bend_max = 0;
   std::string log;
   double yaw_mae() const { return ok ? yaw_sum / ok : kNaN; }
   double bend_mae() const { return bends ? bend_sum / bends : kNaN; }
@@ -76,6 +76,7 @@ void RunRig(const std::string& set, uint64_t seed, int views, RigTally* t) {
     }
     if (std::isfinite(m.bend_deg)) {
       t->bend_sum += std::abs(AngleDiff(m.bend_deg, truth.bend_deg));
+      t->bend_max = std::max(t->bend_max, std::abs(AngleDiff(m.bend_deg, truth.bend_deg)));
       ++t->bends;
     }
   }
@@ -158,6 +159,18 @@ TEST(MarkerRigAccuracy, APartEndingSoonBelowTheMarkers) {
   EXPECT_GE(t.ok, t.views - 1) << t.log;
   EXPECT_LE(t.yaw_mae(), 1.0) << t.log;
   EXPECT_LE(t.yaw_max, 2.0) << t.log;
+  EXPECT_EQ(t.signed_off, 0) << t.log;
+}
+
+// A rig whose first calibration fitted neither limb within reach of its steps (hard seed 217: one
+// bend 42 degrees off). That calibration is passed over for the next attempt, whose silhouette a
+// limb fit bears out (its alpha still 3.8 degrees off: bends 1-3 degrees off, yaws up to 3.6).
+TEST(MarkerRigAccuracy, ACalibrationNoLimbBearsOutIsPassedOver) {
+  RigTally t;
+  RunRig("hard", 217, 4, &t);
+  EXPECT_GE(t.ok, t.views - 1) << t.log;
+  EXPECT_LE(t.bend_max, 5) << t.log;
+  EXPECT_LE(t.yaw_max, 5) << t.log;
   EXPECT_EQ(t.signed_off, 0) << t.log;
 }
 
