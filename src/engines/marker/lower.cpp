@@ -129,6 +129,26 @@ bool FitPatch(const CoverageBand& band, const CylinderView& cyl, const LowerCali
   return std::abs(yc - expected_y) <= 0.4 * cal.marker_height_px + 1.5;
 }
 
+// The step in `profile` (first column x0) nearest to `peak_px` within `search` pixels whose
+// gradient has the sign of `strength` and at least 0.4 of its size: the joint does not move
+// between views (a camera may shake a little), so the reference's own step, when it still shows
+// as a step, is preferred to a steeper one beside it (the bent upper part's shadow on the wall).
+ProfileEdge NearestStep(const std::vector<double>& profile, int x0, double peak_px, int search,
+                        double strength) {
+  const int n = static_cast<int>(profile.size());
+  const int sign = strength > 0 ? 1 : -1;
+  const double need = 0.4 * std::abs(strength);
+  auto g = [&](int i) { return sign * 0.5 * (profile[i + 1] - profile[i - 1]); };
+  const int centre = static_cast<int>(std::lround(peak_px)) - x0;
+  int best = -1;
+  for (int i = std::max(2, centre - search); i <= std::min(n - 3, centre + search); ++i) {
+    if (g(i) < need || g(i) < g(i - 1) || g(i) < g(i + 1)) continue;  // a local peak, steep enough
+    if (best < 0 || std::abs(i - centre) < std::abs(best - centre)) best = i;
+  }
+  if (best < 0) return ProfileEdge();
+  return FindProfileEdge(profile, x0, best, best, sign);
+}
+
 }  // namespace
 
 void MeasureLowerMarkers(const cv::Mat& gray, const LowerCalibration& cal, int x0,
@@ -237,13 +257,9 @@ bool ScanLowerPart(const cv::Mat& gray, const LowerCalibration& cal, const Marke
     rows += n;
     for (int side = 0; side < 2; ++side) {
       if (band.strength[side] == 0) continue;
-      const int centre = static_cast<int>(std::lround(band.peak_px[side])) - x0;
       const ProfileEdge e =
-          FindProfileEdge(*profiles[b], x0, centre - cal.search_px, centre + cal.search_px,
-                          band.strength[side] > 0 ? 1 : -1);
-      if (e.found && std::abs(e.strength) >= 0.4 * std::abs(band.strength[side])) {
-        band_shift[side][b] = e.x - band.peak_px[side];
-      }
+          NearestStep(*profiles[b], x0, band.peak_px[side], cal.search_px, band.strength[side]);
+      if (e.found) band_shift[side][b] = e.x - band.peak_px[side];
     }
   }
   // The lower part is rigid: every edge of every band shows the same shift. The shift most of

@@ -174,6 +174,17 @@ TEST(MarkerRigAccuracy, ACalibrationNoLimbBearsOutIsPassedOver) {
   EXPECT_EQ(t.signed_off, 0) << t.log;
 }
 
+// A view whose bands show a steeper step three pixels beside the limb's own (easy seed 46, its
+// upper part bent 50 degrees): the silhouette was tracked 3 pixels aside and a single lower
+// marker's yaw read 6 degrees off. The step nearest to the reference's is taken.
+TEST(MarkerRigAccuracy, TheLimbsOwnStepIsTracked) {
+  RigTally t;
+  RunRig("easy", 46, 4, &t);
+  EXPECT_GE(t.ok, t.views - 1) << t.log;
+  EXPECT_LE(t.yaw_max, 2) << t.log;
+  EXPECT_EQ(t.signed_off, 0) << t.log;
+}
+
 TEST(MarkerRigAccuracy, HardRigs) {
   RigTally t;
   for (uint64_t seed : {601, 602, 603}) RunRig("hard", seed, 5, &t);
