@@ -26,7 +26,9 @@
 # each (easy, medium, hard), 7 scenes of 4 views = 28 views per set, yaw in [-60, 60], bend in
 # [-60, 60]. The rig's own lens (its truth.tsv's fov_deg) is given to analyze as --fov. Seeds:
 # MARKER_EVAL_SET=heldout (default here) 5001-5007, 5101-5107, 5201-5207, never used to tune
-# anything; tuning: 1-12, 101-112, 201-212 (MARKER_EVAL_SEEDS=N the first N of each hundred).
+# anything; tuning: 1-12, 101-112, 201-212 (MARKER_EVAL_SEEDS=N the first N of each hundred;
+# MARKER_EVAL_FIRST=K starts each hundred at seed K instead of 1, e.g. 31 for the validation
+# rigs 31-99, 131-199, 231-299). MARKER_EVAL_RENDERERS="rig" (or "scene") runs one renderer only.
 # Columns: answered (ok rows of 28), readable (views with a lower marker facing the camera within
 # 75 degrees), yaw_mae (yaw_deg against |yaw|, answered views), bend_mae (answered with a bend),
 # signed_max (largest error of an answered signed yaw), signed_off5 (answered signed yaws more
@@ -42,7 +44,7 @@ mkdir -p "$WORK"
 if [[ "${MARKER_EVAL_MODE:-tiers}" == renderers ]]; then
   case "${MARKER_EVAL_SET:-heldout}" in
     heldout) FIRST=5001; SCENES=7 ;;
-    tuning) FIRST=1; SCENES="${MARKER_EVAL_SEEDS:-12}" ;;
+    tuning) FIRST="${MARKER_EVAL_FIRST:-1}"; SCENES="${MARKER_EVAL_SEEDS:-12}" ;;
     *) echo "marker-eval: MARKER_EVAL_SET must be tuning or heldout" >&2; exit 2 ;;
   esac
   declare -A SCENE_FLAGS=(
@@ -53,7 +55,16 @@ if [[ "${MARKER_EVAL_MODE:-tiers}" == renderers ]]; then
   declare -A BASE=([easy]=0 [medium]=100 [hard]=200)
   ROWS="$WORK/renderer-rows.tsv"
   : >"$ROWS"
-  for renderer in scene rig; do
+  if [[ "${MARKER_EVAL_SET:-heldout}" == tuning ]] && ((FIRST < 1 || FIRST + SCENES - 1 > 99)); then
+    echo "marker-eval: tuning seeds must stay within 1..99 of each hundred" >&2
+    exit 2
+  fi
+  for renderer in ${MARKER_EVAL_RENDERERS:-scene rig}; do
+    case "$renderer" in scene | rig) ;; *)
+      echo "marker-eval: MARKER_EVAL_RENDERERS lists scene and/or rig" >&2
+      exit 2
+      ;;
+    esac
     for set in easy medium hard; do
       for ((k = 0; k < SCENES; k++)); do
         seed=$((FIRST + BASE[$set] + k))

@@ -24,7 +24,8 @@ constexpr double kEdgeNoisePx = 0.12;   // spread of one row's interval end, pix
 constexpr double kCommonEdgePx = 0.04;  // ... shared by every row of a patch
 constexpr double kCutEdgePx = 0.3;      // ... for an end within kNearLimbPx of the limb
 constexpr double kNearLimbPx = 1.5;
-constexpr double kChordSpread = 0.004;  // radians: the half-chord from the reference's radius
+constexpr double kChordSpread = 0.004;     // radians: the half-chord from the reference's radius
+constexpr double kShiftAgreementPx = 0.5;  // edges whose shifts agree this well move together
 
 // Coverage rows of the band: [band_top, band_bottom], columns [x0, x0 + width).
 struct CoverageBand {
@@ -128,6 +129,26 @@ bool FitPatch(const CoverageBand& band, const CylinderView& cyl, const LowerCali
   return std::abs(yc - expected_y) <= 0.4 * cal.marker_height_px + 1.5;
 }
 
+// The step in `profile` (first column x0) nearest to `peak_px` within `search` pixels whose
+// gradient has the sign of `strength` and at least 0.4 of its size: the joint does not move
+// between views (a camera may shake a little), so the reference's own step, when it still shows
+// as a step, is preferred to a steeper one beside it (the bent upper part's shadow on the wall).
+ProfileEdge NearestStep(const std::vector<double>& profile, int x0, double peak_px, int search,
+                        double strength) {
+  const int n = static_cast<int>(profile.size());
+  const int sign = strength > 0 ? 1 : -1;
+  const double need = 0.4 * std::abs(strength);
+  auto g = [&](int i) { return sign * 0.5 * (profile[i + 1] - profile[i - 1]); };
+  const int centre = static_cast<int>(std::lround(peak_px)) - x0;
+  int best = -1;
+  for (int i = std::max(2, centre - search); i <= std::min(n - 3, centre + search); ++i) {
+    if (g(i) < need || g(i) < g(i - 1) || g(i) < g(i + 1)) continue;  // a local peak, steep enough
+    if (best < 0 || std::abs(i - centre) < std::abs(best - centre)) best = i;
+  }
+  if (best < 0) return ProfileEdge();
+  return FindProfileEdge(profile, x0, best, best, sign);
+}
+
 }  // namespace
 
 void MeasureLowerMarkers(const cv::Mat& gray, const LowerCalibration& cal, int x0,
@@ -224,7 +245,7 @@ bool ScanLowerPart(const cv::Mat& gray, const LowerCalibration& cal, const Marke
   std::vector<double>* profiles[2] = {&s->above, &s->below};
   // Each edge in each band, kept when about as strong as in the reference; its shift from the
   // reference's position in that band. Bands that disagree with the strongest one are left out.
-  double shift[2] = {0, 0}, weight[2] = {0, 0}, rows = 0;
+  double rows = 0;
   double band_shift[2][2] = {{kNaN, kNaN}, {kNaN, kNaN}};
   s->surface.assign(width, 0.0);
   for (int b = 0; b < 2; ++b) {
@@ -236,44 +257,46 @@ bool ScanLowerPart(const cv::Mat& gray, const LowerCalibration& cal, const Marke
     rows += n;
     for (int side = 0; side < 2; ++side) {
       if (band.strength[side] == 0) continue;
-      const int centre = static_cast<int>(std::lround(band.peak_px[side])) - x0;
       const ProfileEdge e =
-          FindProfileEdge(*profiles[b], x0, centre - cal.search_px, centre + cal.search_px,
-                          band.strength[side] > 0 ? 1 : -1);
-      if (e.found && std::abs(e.strength) >= 0.4 * std::abs(band.strength[side])) {
-        band_shift[side][b] = e.x - band.peak_px[side];
-      }
+          NearestStep(*profiles[b], x0, band.peak_px[side], cal.search_px, band.strength[side]);
+      if (e.found) band_shift[side][b] = e.x - band.peak_px[side];
     }
   }
+  // The lower part is rigid: every edge of every band shows the same shift. The shift most of
+  // them agree on (within half a pixel; the steeper steps when as many agree on two) is taken,
+  // as their weighted mean: an edge caught on something else (the bent upper part's shadow
+  // beside a limb) is outvoted.
+  double value[4], weight[4];
+  int n = 0;
   for (int side = 0; side < 2; ++side) {
-    const double w0 =
-        cal.bands[0].rows.size() * cal.bands[0].strength[side] * cal.bands[0].strength[side];
-    const double w1 =
-        cal.bands[1].rows.size() * cal.bands[1].strength[side] * cal.bands[1].strength[side];
-    const int strong =
-        std::isnan(band_shift[side][1]) || (!std::isnan(band_shift[side][0]) && w0 >= w1) ? 0 : 1;
     for (int b = 0; b < 2; ++b) {
-      const double d = band_shift[side][b];
-      if (std::isnan(d) || std::abs(d - band_shift[side][strong]) > 0.5) continue;
-      shift[side] += (b == 0 ? w0 : w1) * d;
-      weight[side] += b == 0 ? w0 : w1;
+      if (std::isnan(band_shift[side][b])) continue;
+      value[n] = band_shift[side][b];
+      weight[n++] =
+          cal.bands[b].rows.size() * cal.bands[b].strength[side] * cal.bands[b].strength[side];
     }
   }
-  if (weight[0] == 0 && weight[1] == 0) {
+  if (n == 0) {
     out->failure = "the joint's silhouette is not where the reference shows it";
     return false;
   }
   for (double& v : s->surface) v /= rows;
-  // The joint moves as a whole and keeps its width: both edges shift alike, by the weighted mean
-  // of what their steps show, or by the better-seen side's shift alone when the other moved
-  // unlike it (caught on something else) or is lost against the background.
-  const int better = weight[0] >= weight[1] ? 0 : 1;
-  const double best = shift[better] / weight[better];
-  double common = best;
-  if (weight[1 - better] > 0 && std::abs(shift[1 - better] / weight[1 - better] - best) <= 1) {
-    common = (shift[0] + shift[1]) / (weight[0] + weight[1]);
+  int best_count = 0;
+  double best_weight = 0, common = 0;
+  for (int i = 0; i < n; ++i) {
+    int count = 0;
+    double w = 0, sum = 0;
+    for (int j = 0; j < n; ++j) {
+      if (std::abs(value[j] - value[i]) > kShiftAgreementPx) continue;
+      ++count;
+      w += weight[j];
+      sum += weight[j] * value[j];
+    }
+    if (count > best_count || (count == best_count && w > best_weight)) {
+      best_count = count, best_weight = w, common = sum / w;
+    }
   }
-  shift[0] = shift[1] = common;
+  double shift[2] = {common, common};
   out->left_edge_px = cal.left_edge_px + shift[0];
   out->right_edge_px = cal.right_edge_px + shift[1];
   out->cylinder = CylinderView(camera, out->left_edge_px, out->right_edge_px);

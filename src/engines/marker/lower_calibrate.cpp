@@ -8,6 +8,7 @@
 
 #include "armmimic/core/angles.h"
 #include "marker/lower.h"
+#include "marker/lower_reference.h"
 
 namespace armmimic::internal {
 namespace {
@@ -148,6 +149,43 @@ std::vector<int> RowsOnTheSurface(const cv::Mat& gray, const std::vector<int>& r
   return out;
 }
 
+// The same rows cut where the lower part ends, found without the band's median: near either
+// limb and at the centre, the rows are split where two constant levels fit them best, and a
+// split whose levels differ clearly is the part's end (the first of the three). Used when the
+// median's rule keeps too few rows: the median of all rows is the wall's when the part ends
+// within the band's first half, and then no row is kept.
+std::vector<int> RowsBeforeTheEnd(const cv::Mat& gray, const std::vector<int>& rows, double xl,
+                                  double xr) {
+  if (rows.size() < 2) return rows;
+  const int l = static_cast<int>(std::ceil(xl + 0.5)), r = static_cast<int>(std::floor(xr - 0.5));
+  const int c0 = static_cast<int>(std::ceil(xl + 0.33 * (xr - xl)));
+  const int c1 = static_cast<int>(std::floor(xr - 0.33 * (xr - xl)));
+  const int groups[3][2] = {{l, l + 2}, {c0, c1}, {r - 2, r}};
+  const std::size_t n = rows.size();
+  std::size_t end = n;
+  for (const auto& grp : groups) {
+    // Prefix sums of the group's level give each split's two means and misfit.
+    std::vector<double> s1(n + 1, 0.0), s2(n + 1, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      double sum = 0;
+      for (int x = grp[0]; x <= grp[1]; ++x) sum += gray.at<uchar>(rows[i], x);
+      const double v = sum / std::max(1, grp[1] - grp[0] + 1);
+      s1[i + 1] = s1[i] + v;
+      s2[i + 1] = s2[i] + v * v;
+    }
+    double best = 1e300;
+    std::size_t split = n;
+    for (std::size_t k = 1; k < n; ++k) {
+      const double a = s1[k], b = s1[n] - s1[k];
+      const double sse = s2[n] - a * a / k - b * b / (n - k);
+      if (sse < best) best = sse, split = k;
+    }
+    const double above = s1[split] / split, below = (s1[n] - s1[split]) / (n - split);
+    if (split < n && std::abs(above - below) > 0.1 * above + 5) end = std::min(end, split);
+  }
+  return std::vector<int>(rows.begin(), rows.begin() + end);
+}
+
 // An edge no band shows (the limb as bright as the wall behind it), from the other edge and the
 // reference's markers: at zero yaw the lower markers lie symmetrically about the front, where
 // the upper marker is, so theta(left) + theta(right) = 2 theta(upper). Bisection over the hidden
@@ -239,94 +277,16 @@ bool ChooseBands(const cv::Mat& gray, const Layout& g, const CylinderView& cyl, 
   cal->band_bottom = std::min(gray.rows - 1, static_cast<int>(std::ceil(bottom)));
   const double pivot_y = g.y_low - g.e_px;
   cal->bands[0].rows = RowRange(pivot_y + 1.15 * cyl.half_width_px(), cal->band_top - 2, gray.rows);
-  cal->bands[1].rows = RowsOnTheSurface(
-      gray, RowRange(cal->band_bottom + 2, g.y_low + 1.6 * g.e_px, gray.rows), left, right);
+  const std::vector<int> below = RowRange(cal->band_bottom + 2, g.y_low + 1.6 * g.e_px, gray.rows);
+  cal->bands[1].rows = RowsOnTheSurface(gray, below, left, right);
+  if (cal->bands[0].rows.size() + cal->bands[1].rows.size() < 3) {
+    cal->bands[1].rows = RowsBeforeTheEnd(gray, below, left, right);
+  }
   if (cal->bands[0].rows.size() + cal->bands[1].rows.size() < 3) {
     *message = "the joint shows too few rows beside its markers to find its silhouette";
     return false;
   }
   return true;
-}
-
-// Marker grey over surface grey at the two markers' centres, then the markers measured with it:
-// their zero-yaw angles, angular radius and height.
-bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, int x0,
-                             const std::vector<double>& surface, bool allow_cut,
-                             LowerCalibration* cal, LowerScan* scan, std::string* message) {
-  LowerScratch scratch;
-  for (int pass = 0; pass < 2; ++pass) {
-    MeasureLowerMarkers(gray, *cal, x0, surface, true, scan, &scratch);
-    // A marker the limb cuts is read from its inner end and the disc's half-chord, which needs
-    // the markers' angular radius: the whole one's.
-    if (allow_cut && scan->markers.size() == 1 && !scan->markers[0].cut && cal->delta == 0) {
-      cal->delta = scan->markers[0].radius;
-      MeasureLowerMarkers(gray, *cal, x0, surface, true, scan, &scratch);
-    }
-    if (scan->markers.size() != 2) {
-      *message = "found " + std::to_string(scan->markers.size()) +
-                 " dark patches across the joint at the lower markers' height, expected 2";
-      return false;
-    }
-    if (pass == 1) break;
-    double ratio = 0;
-    for (const LowerMarker& m : scan->markers) {
-      const cv::Point c(static_cast<int>(std::lround(m.centre_px.x)),
-                        static_cast<int>(std::lround(m.centre_px.y)));
-      double sum = 0;
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) sum += gray.at<uchar>(c.y + dy, c.x + dx);
-      }
-      ratio += sum / 9 / std::max(1.0, surface[c.x - x0]);
-    }
-    cal->marker_ratio = std::clamp(0.5 * ratio, 0.0, 0.8);
-  }
-  const LowerMarker& l = scan->markers[0];
-  const LowerMarker& r = scan->markers[1];
-  cal->theta_left0 = l.theta;
-  cal->theta_right0 = r.theta;
-  cal->delta = l.cut ? r.radius : r.cut ? l.radius : 0.5 * (l.radius + r.radius);
-  const double f = camera.focal_px, cy = camera.principal_px.y;
-  const CylinderView& c = scan->cylinder;
-  cal->height = 0.5 * ((cy - l.centre_px.y) * c.Depth(l.theta) / f +
-                       (cy - r.centre_px.y) * c.Depth(r.theta) / f);
-  return true;
-}
-
-// The lower markers are equal discs: measured across the cylinder they have the same angular
-// radius, whatever the camera's tilt (both lie at one height). A silhouette edge placed wrongly
-// stretches the angles on its side, so the weaker edge is moved (within a third of a radius)
-// to where the two radii agree best, when they differ by over 3 % at the steps' edges. Markers
-// the limb cuts give no radius and leave the edges as they are.
-void EqualDiscs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
-                const std::vector<double>& surface, int weak, LowerCalibration* cal,
-                LowerScan* scan) {
-  auto unequal = [](const LowerScan& sc) {
-    const double a = sc.markers[0].radius, b = sc.markers[1].radius;
-    if (sc.markers[0].cut || sc.markers[1].cut || !(a > 0) || !(b > 0)) return kNaN;
-    return std::abs(a - b) / (a + b);
-  };
-  double best = unequal(*scan);
-  if (!(best > 0.03)) return;
-  const double start = weak == 0 ? cal->left_edge_px : cal->right_edge_px;
-  const double reach = 0.35 * 0.5 * (cal->right_edge_px - cal->left_edge_px);
-  const LowerCalibration base = *cal;
-  for (double d = -reach; d <= reach; d += 0.25) {
-    LowerCalibration c = base;
-    (weak == 0 ? c.left_edge_px : c.right_edge_px) = start + d;
-    c.delta = 0;
-    c.marker_ratio = LowerCalibration().marker_ratio;
-    LowerScan sc;
-    sc.left_edge_px = c.left_edge_px;
-    sc.right_edge_px = c.right_edge_px;
-    sc.cylinder = CylinderView(camera, c.left_edge_px, c.right_edge_px);
-    std::string ignored;
-    if (!sc.cylinder.valid() ||
-        !MeasureReferenceMarkers(gray, camera, x0, surface, false, &c, &sc, &ignored)) {
-      continue;
-    }
-    const double q = unequal(sc);
-    if (q < best) best = q, *cal = c, *scan = sc;
-  }
 }
 
 }  // namespace
@@ -412,6 +372,12 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   // cuts one is wrong. The steps' own edges are tried first, then the faint edge placed by the
   // markers' symmetry; a marker cut by the limb is accepted only when neither shows both whole.
   const double fitted_edges[2] = {cal->left_edge_px, cal->right_edge_px};
+  // Every row that shows the straight joint's limbs beside the markers: from below the upper
+  // marker down to the marker band, and the band below it.
+  std::vector<int> limb_rows = RowRange(
+      upper_px.y + 0.7 * g.h + 2,
+      std::min<double>(g.y_low - 0.7 * g.h - 0.15 * g.off - 2, cal->band_top - 2), gray.rows);
+  limb_rows.insert(limb_rows.end(), cal->bands[1].rows.begin(), cal->bands[1].rows.end());
   std::string first_message;
   for (int attempt = 0; attempt < 4; ++attempt) {
     const bool moved = attempt % 2 == 1;
@@ -428,9 +394,21 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
     if (MeasureReferenceMarkers(gray, camera, g.x0, surface, attempt >= 2, cal, scan, message)) {
       // A plain step that the bands agree on is the silhouette: only an unsure edge is moved.
       if (unsure(weak)) EqualDiscs(gray, camera, g.x0, surface, weak, cal, scan);
+      const bool plain[2] = {!unsure(0), !unsure(1)};
+      bool either_fitted = false;
+      cal->single_sized = RefineLimbs(gray, camera, g.x0, surface, limb_rows, g.y_low, plain, cal,
+                                      scan, &either_fitted);
+      // Neither limb fits within reach of its step: the silhouette (or the triple) is something
+      // else; the next attempt is tried, and the reference refused when none is left.
+      if (!either_fitted) {
+        *message = "neither limb of the joint fits the rows beside its markers";
+        if (first_message.empty()) first_message = *message;
+        continue;
+      }
+      // ... or, as before, both lower markers whole and equal discs.
       const LowerMarker& l = scan->markers[0];
       const LowerMarker& r = scan->markers[1];
-      cal->single_sized =
+      cal->single_sized |=
           !l.cut && !r.cut && std::abs(l.radius - r.radius) <= kEqualDiscs * (l.radius + r.radius);
       return true;
     }

@@ -1,0 +1,168 @@
+// The reference's lower markers measured for a given silhouette, and the silhouette's edges
+// checked against them and against the rows beside them (docs/marker.md, "Calibration", steps 2
+// and 4): equal discs for an unsure edge, and each limb fitted over all its rows.
+#include "marker/lower_reference.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "armmimic/core/angles.h"
+#include "marker/limb.h"
+
+namespace armmimic::internal {
+namespace {
+
+// How far (pixels) fitting a limb over all its rows may move an edge the steps placed.
+constexpr double kLimbReach = 2;
+// A plain step's edge is confirmed by its fitted limb within this many pixels.
+constexpr double kLimbAgreement = 1;
+// An unsure edge is moved to its fitted limb unless the steps' edge shows the lower markers as
+// equal discs by this much more (a share of the radii's sum).
+constexpr double kLimbPreference = 0.003;
+
+}  // namespace
+
+// Marker grey over surface grey at the two markers' centres, then the markers measured with it:
+// their zero-yaw angles, angular radius and height.
+bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, int x0,
+                             const std::vector<double>& surface, bool allow_cut,
+                             LowerCalibration* cal, LowerScan* scan, std::string* message) {
+  LowerScratch scratch;
+  for (int pass = 0; pass < 2; ++pass) {
+    MeasureLowerMarkers(gray, *cal, x0, surface, true, scan, &scratch);
+    // A marker the limb cuts is read from its inner end and the disc's half-chord, which needs
+    // the markers' angular radius: the whole one's.
+    if (allow_cut && scan->markers.size() == 1 && !scan->markers[0].cut && cal->delta == 0) {
+      cal->delta = scan->markers[0].radius;
+      MeasureLowerMarkers(gray, *cal, x0, surface, true, scan, &scratch);
+    }
+    if (scan->markers.size() != 2) {
+      *message = "found " + std::to_string(scan->markers.size()) +
+                 " dark patches across the joint at the lower markers' height, expected 2";
+      return false;
+    }
+    if (pass == 1) break;
+    double ratio = 0;
+    for (const LowerMarker& m : scan->markers) {
+      const cv::Point c(static_cast<int>(std::lround(m.centre_px.x)),
+                        static_cast<int>(std::lround(m.centre_px.y)));
+      double sum = 0;
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) sum += gray.at<uchar>(c.y + dy, c.x + dx);
+      }
+      ratio += sum / 9 / std::max(1.0, surface[c.x - x0]);
+    }
+    cal->marker_ratio = std::clamp(0.5 * ratio, 0.0, 0.8);
+  }
+  const LowerMarker& l = scan->markers[0];
+  const LowerMarker& r = scan->markers[1];
+  cal->theta_left0 = l.theta;
+  cal->theta_right0 = r.theta;
+  cal->delta = l.cut ? r.radius : r.cut ? l.radius : 0.5 * (l.radius + r.radius);
+  const double f = camera.focal_px, cy = camera.principal_px.y;
+  const CylinderView& c = scan->cylinder;
+  cal->height = 0.5 * ((cy - l.centre_px.y) * c.Depth(l.theta) / f +
+                       (cy - r.centre_px.y) * c.Depth(r.theta) / f);
+  return true;
+}
+
+// The lower markers are equal discs: measured across the cylinder they have the same angular
+// radius, whatever the camera's tilt (both lie at one height). A silhouette edge placed wrongly
+// stretches the angles on its side, so the weaker edge is moved (within a third of a radius)
+// to where the two radii agree best, when they differ by over 3 % at the steps' edges. Markers
+// the limb cuts give no radius and leave the edges as they are.
+void EqualDiscs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
+                const std::vector<double>& surface, int weak, LowerCalibration* cal,
+                LowerScan* scan) {
+  auto unequal = [](const LowerScan& sc) {
+    const double a = sc.markers[0].radius, b = sc.markers[1].radius;
+    if (sc.markers[0].cut || sc.markers[1].cut || !(a > 0) || !(b > 0)) return kNaN;
+    return std::abs(a - b) / (a + b);
+  };
+  double best = unequal(*scan);
+  if (!(best > 0.03)) return;
+  const double start = weak == 0 ? cal->left_edge_px : cal->right_edge_px;
+  const double reach = 0.35 * 0.5 * (cal->right_edge_px - cal->left_edge_px);
+  const LowerCalibration base = *cal;
+  for (double d = -reach; d <= reach; d += 0.25) {
+    LowerCalibration c = base;
+    (weak == 0 ? c.left_edge_px : c.right_edge_px) = start + d;
+    c.delta = 0;
+    c.marker_ratio = LowerCalibration().marker_ratio;
+    LowerScan sc;
+    sc.left_edge_px = c.left_edge_px;
+    sc.right_edge_px = c.right_edge_px;
+    sc.cylinder = CylinderView(camera, c.left_edge_px, c.right_edge_px);
+    std::string ignored;
+    if (!sc.cylinder.valid() ||
+        !MeasureReferenceMarkers(gray, camera, x0, surface, false, &c, &sc, &ignored)) {
+      continue;
+    }
+    const double q = unequal(sc);
+    if (q < best) best = q, *cal = c, *scan = sc;
+  }
+}
+
+// Each limb fitted over every row that shows it (FitLimb), within kLimbReach pixels of where
+// the steps put it. A plain step's edge stays (the fit confirms it within kLimbAgreement); an
+// unsure one (a faint step, or bands that disagree) moves to its fitted limb unless the steps'
+// edge shows the lower markers as clearly more equal discs, and the markers are measured again
+// (a marker the limb cuts read from its inner end). True when both limbs fit and confirm: the
+// silhouette is then sure enough to size a single lower marker by its reference angle.
+bool RefineLimbs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
+                 const std::vector<double>& surface, const std::vector<int>& rows, double y_ref,
+                 const bool plain[2], LowerCalibration* cal, LowerScan* scan, bool* either_fitted) {
+  const LimbFit fits[2] = {FitLimb(gray, rows, cal->left_edge_px, y_ref, 1, kLimbReach),
+                           FitLimb(gray, rows, cal->right_edge_px, y_ref, -1, kLimbReach)};
+  *either_fitted = fits[0].ok || fits[1].ok;
+  bool sure = true;
+  bool can_move[2] = {false, false};
+  for (int side = 0; side < 2; ++side) {
+    const double edge = side == 0 ? cal->left_edge_px : cal->right_edge_px;
+    if (!fits[side].ok) {
+      sure = false;
+    } else if (plain[side]) {
+      sure &= std::abs(fits[side].x - edge) <= kLimbAgreement;
+    } else {
+      can_move[side] = true;
+    }
+  }
+  if (!can_move[0] && !can_move[1]) return sure;
+  // An unsure side: the steps' edge or the fitted limb, whichever shows the two lower markers
+  // as the more nearly equal discs (the fitted limb within kLimbPreference).
+  const double steps[2] = {cal->left_edge_px, cal->right_edge_px};
+  double best = 1e9;
+  LowerCalibration c;
+  LowerScan sc;
+  for (int combo = 0; combo < 4; ++combo) {
+    const bool use[2] = {(combo & 1) != 0, (combo & 2) != 0};
+    if ((use[0] && !can_move[0]) || (use[1] && !can_move[1])) continue;
+    LowerCalibration cc = *cal;
+    cc.left_edge_px = use[0] ? fits[0].x : steps[0];
+    cc.right_edge_px = use[1] ? fits[1].x : steps[1];
+    cc.delta = 0;
+    cc.marker_ratio = LowerCalibration().marker_ratio;
+    LowerScan ss;
+    ss.left_edge_px = cc.left_edge_px;
+    ss.right_edge_px = cc.right_edge_px;
+    ss.cylinder = CylinderView(camera, cc.left_edge_px, cc.right_edge_px);
+    std::string ignored;
+    if (!ss.cylinder.valid() ||
+        !MeasureReferenceMarkers(gray, camera, x0, surface, true, &cc, &ss, &ignored)) {
+      continue;
+    }
+    const LowerMarker& l = ss.markers[0];
+    const LowerMarker& r = ss.markers[1];
+    const double q = (l.cut || r.cut || !(l.radius > 0) || !(r.radius > 0)
+                          ? 0.0
+                          : std::abs(l.radius - r.radius) / (l.radius + r.radius)) -
+                     kLimbPreference * (use[0] + use[1]);
+    if (q < best) best = q, c = cc, sc = ss;
+  }
+  if (best > 1) return false;
+  *cal = c;
+  *scan = sc;
+  return sure;
+}
+
+}  // namespace armmimic::internal

@@ -1,0 +1,35 @@
+// Private: the reference's lower markers measured for a given silhouette, and the two ways the
+// silhouette's edges are checked against the markers and the rows beside them (docs/marker.md,
+// "Calibration", steps 2 and 4).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "marker/lower.h"
+
+namespace armmimic::internal {
+
+// Marker grey over surface grey at the two markers' centres, then the markers measured with it:
+// their zero-yaw angles, angular radius and height (the silhouette in cal, scan). `surface` is
+// the surface's grey level per column from image column x0. A marker the limb cuts is accepted
+// when `allow_cut`. False with a message when two markers are not found.
+bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, int x0,
+                             const std::vector<double>& surface, bool allow_cut,
+                             LowerCalibration* cal, LowerScan* scan, std::string* message);
+
+// Moves the edge on side `weak` (0 left) to where the lower markers' angular radii agree best.
+void EqualDiscs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
+                const std::vector<double>& surface, int weak, LowerCalibration* cal,
+                LowerScan* scan);
+
+// Fits each limb over `rows` (FitLimb) near the present edges; `plain` tells which side's step
+// is plain. True when the silhouette is sure enough to size a single lower marker;
+// `either_fitted` false when neither limb fits.
+bool RefineLimbs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
+                 const std::vector<double>& surface, const std::vector<int>& rows, double y_ref,
+                 const bool plain[2], LowerCalibration* cal, LowerScan* scan, bool* either_fitted);
+
+}  // namespace armmimic::internal
