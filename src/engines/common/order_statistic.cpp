@@ -40,6 +40,7 @@ float KthSmallest(float* first, std::size_t n, std::size_t k) {
     // pivot is one of the values, so each round leaves fewer.
     const std::size_t equal =
         Partition(first + below, n - below, [pivot](float v) { return v <= pivot; });
+    if (equal == 0) return pivot;  // a NaN pivot: nothing equals it, and no round would end
     if (k < below + equal) return pivot;
     first += below + equal;
     n -= below + equal;

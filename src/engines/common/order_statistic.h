@@ -8,7 +8,8 @@
 namespace armmimic::arm {
 
 // The value std::nth_element(first, first + k, first + n) would put at first + k (k < n; n > 0).
-// Reorders [first, first + n) as it goes; NaN must not occur.
+// Reorders [first, first + n) as it goes. With a NaN among them the result is one of the values
+// or NaN, and the call returns.
 float KthSmallest(float* first, std::size_t n, std::size_t k);
 
 }  // namespace armmimic::arm
