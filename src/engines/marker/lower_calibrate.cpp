@@ -346,7 +346,9 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   };
   int weak = steepest(0) < steepest(1) ? 0 : 1;
   if (unsure(1 - weak) && !unsure(weak)) weak = 1 - weak;
-  double symmetric_edge = kNaN;
+  // The edge tried second for the weak side: the markers' symmetry after a faint step's own
+  // edge, or the step no band tracks after the symmetry.
+  double second_edge = kNaN;
   if (unsure(weak)) {
     const double known = weak == 0 ? cal->right_edge_px : cal->left_edge_px;
     const double edge = HiddenEdge(camera, known, weak, left_px, right_px, upper_px);
@@ -355,11 +357,17 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
     // light, seen from aside or by a tilted camera a marker's centroid is not its centre's
     // image, and the upper marker lies at another height): a faint step's own edge is tried
     // before it, and EqualDiscs refines whichever shows both lower markers whole.
+    // A side no band tracks (a step under kTrackable) is placed by the symmetry, and the step
+    // the first silhouette found there from all rows is tried after it (seen from aside, with a
+    // lower marker near the limb, the symmetry had put an edge 45 px out). Without the
+    // symmetry's edge the side is refused: the step alone had let a triple of wall blobs
+    // calibrate.
     if (!std::isnan(edge)) {
       if (steepest(weak) == 0) {
+        if (std::abs(edge - fitted) > 1) second_edge = fitted;
         fitted = edge;
       } else if (std::abs(edge - fitted) > 1 && steepest(weak) < kPlain) {
-        symmetric_edge = edge;
+        second_edge = edge;
       }
     } else if (steepest(weak) == 0) {
       *message = "the joint's silhouette does not stand out from the background on one side";
@@ -381,10 +389,10 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   std::string first_message;
   for (int attempt = 0; attempt < 4; ++attempt) {
     const bool moved = attempt % 2 == 1;
-    if (moved && std::isnan(symmetric_edge)) continue;
+    if (moved && std::isnan(second_edge)) continue;
     cal->left_edge_px = fitted_edges[0];
     cal->right_edge_px = fitted_edges[1];
-    if (moved) (weak == 0 ? cal->left_edge_px : cal->right_edge_px) = symmetric_edge;
+    if (moved) (weak == 0 ? cal->left_edge_px : cal->right_edge_px) = second_edge;
     cal->delta = 0;
     cal->marker_ratio = LowerCalibration().marker_ratio;
     *scan = LowerScan();
@@ -404,6 +412,20 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
         *message = "neither limb of the joint fits the rows beside its markers";
         if (first_message.empty()) first_message = *message;
         continue;
+      }
+      // The step no band tracks, tried after the symmetry, is kept only when both limbs fit and
+      // confirm the silhouette (a faint step alone had let a triple of wall blobs calibrate),
+      // and even then sizes no single lower marker: the markers' symmetry disagrees with it, so
+      // the zero-yaw angles may be degrees off (single-marker yaws 3-5 degrees off where
+      // tried); two markers still check each other.
+      if (moved && steepest(weak) == 0) {
+        if (!cal->single_sized) {
+          *message = "the joint's silhouette does not stand out from the background on one side";
+          if (first_message.empty()) first_message = *message;
+          continue;
+        }
+        cal->single_sized = false;
+        return true;
       }
       // ... or, as before, both lower markers whole and equal discs.
       const LowerMarker& l = scan->markers[0];

@@ -24,6 +24,11 @@ double Wrap(double a) {
 // rig it only approximates): near a limb a marker that far further round may be hidden.
 constexpr double kPredictionMarginDeg = 4;
 
+// A pair of lower markers read through a reference too unsure to size one marker alone may
+// disagree by this much more (degrees) within kNearZeroDeg of zero yaw (see SolveYaw).
+constexpr double kNearZeroAgreementDeg = 2.5;
+constexpr double kNearZeroDeg = 12;
+
 enum class OtherMarker { kUndecided, kMissing };
 
 // Would the marker at `theta` show in the band even `kPredictionMarginDeg` further round, and
@@ -97,7 +102,16 @@ YawSolution SolveYaw(const LowerScan& scan, const LowerCalibration& cal, double 
         const double misfit = std::abs(yl - yr);
         if (misfit >= best) continue;
         best = misfit;
-        agree = misfit <= agreement_sigmas * spread + RadFromDeg(1);
+        // A reference too unsure to size one marker may have its markers' zero angles degrees
+        // off, and a pair then disagrees by degrees. Near zero yaw the view looks like the
+        // reference, where each marker reads its own zero angle whatever the calibration, so
+        // the pair's errors stay small and its mean cancels their common part: there the pair
+        // may disagree by kNearZeroAgreementDeg more (tuning and validation rigs: yaws within
+        // 2.4 degrees, at most a third of the yaw, where such pairs were lost).
+        const bool near_zero =
+            !cal.single_sized && std::abs(0.5 * (yl + yr)) <= RadFromDeg(kNearZeroDeg);
+        agree = misfit <=
+                agreement_sigmas * spread + RadFromDeg(near_zero ? 1 + kNearZeroAgreementDeg : 1);
         const double wl = 1 / (m[i].sigma * m[i].sigma), wr = 1 / (m[j].sigma * m[j].sigma);
         h.yaw = Wrap((wl * yl + wr * yr) / (wl + wr));
         h.sigma = 1 / std::sqrt(wl + wr);
