@@ -136,8 +136,10 @@ class MarkerEngine : public Engine {
   }
 
   // Sub-pixel centroids of the triple (once with the darkest level, then with the learnt
-  // marker/surround) and the cylinder model's calibration from them; false with a message.
-  bool CalibrateFrom(MarkerTriple t, const MarkerOptions& o, std::string* message) {
+  // marker/surround) and the cylinder model's calibration from them; false with a message, and
+  // *measured set when the markers could be measured (the model itself refused them).
+  bool CalibrateFrom(MarkerTriple t, const MarkerOptions& o, std::string* message, bool* measured) {
+    *measured = false;
     double ratio = 0;
     for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
       if (!RefineMarker(scratch_.gray, scratch_.filtered, 0, 0, b)) {
@@ -146,6 +148,7 @@ class MarkerEngine : public Engine {
       }
       ratio += b->core / b->surround;
     }
+    *measured = true;
     for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
       b->centre = {b->box.x + (b->box.width - 1) / 2.0, b->box.y + (b->box.height - 1) / 2.0};
       RefineMarker(scratch_.gray, scratch_.filtered, ratio / 3, 0, b);
@@ -161,15 +164,20 @@ class MarkerEngine : public Engine {
   // symmetric triple of wall blobs beside the joint fails the model, the joint's own markers
   // do not), in the threshold windows and area bounds FindReferenceMarkers tries.
   Status BeginCylinder(const cv::Mat& ref) {
-    std::string first_error;
-    bool any_triple = false;
+    // Why the reference is refused: the first triple the joint's model itself turned down says
+    // more than a triple whose blobs could not even be measured (a wall blob, one cut by the
+    // image's edge), which may have been tried first.
+    std::string first_error, model_error;
+    int tried = 0;
     auto attempt = [&](const MarkerOptions& o) {
       const std::vector<MarkerBlob> blobs = FindMarkerCandidates(ref, o, &scratch_);
       for (const MarkerTriple& t : RankReferenceTriples(blobs, scratch_.filtered, 4)) {
-        any_triple = true;
+        ++tried;
         std::string message;
-        if (CalibrateFrom(t, o, &message)) return true;
+        bool measured = false;
+        if (CalibrateFrom(t, o, &message, &measured)) return true;
         if (first_error.empty()) first_error = message;
+        if (measured && model_error.empty()) model_error = message;
       }
       return false;
     };
@@ -183,8 +191,11 @@ class MarkerEngine : public Engine {
         }
       }
     }
-    if (!any_triple) return NoTriple();
-    return Status::Error("analysis.reference", first_error);
+    if (tried == 0) return NoTriple();
+    return Status::Error("analysis.reference", (model_error.empty() ? first_error : model_error) +
+                                                   " (" + std::to_string(tried) +
+                                                   " candidate triple" + (tried == 1 ? "" : "s") +
+                                                   " of dark blobs tried)");
   }
 
   // When [low, high] does not show the reference's markers (other illumination), the nearest

@@ -38,6 +38,23 @@ TEST(MarkerEngine, NeedsAReference) {
   EXPECT_EQ(st.key(), "analysis.reference") << st.message();
 }
 
+// Three measurable markers on a flat wall, with no joint around them: the joint's model refuses
+// them, and says why and how many triples were tried, rather than a blob's contrast.
+TEST(MarkerEngine, ARefusedReferenceNamesTheModelsReason) {
+  auto engine = MarkerEngine();
+  EngineContext context;
+  context.reference = cv::Mat(240, 320, CV_8UC3, cv::Scalar(180, 180, 180));
+  for (const cv::Point c : {cv::Point(160, 90), cv::Point(145, 150), cv::Point(175, 150)}) {
+    cv::circle(context.reference, c, 5, cv::Scalar(20, 20, 20), cv::FILLED, cv::LINE_AA);
+  }
+  const Status st = engine->Begin(context);
+  ASSERT_FALSE(st.ok());
+  EXPECT_EQ(st.key(), "analysis.reference") << st.message();
+  EXPECT_EQ(st.message().find("too little contrast"), std::string::npos) << st.message();
+  EXPECT_NE(st.message().find("the reference: "), std::string::npos) << st.message();
+  EXPECT_NE(st.message().find("of dark blobs tried)"), std::string::npos) << st.message();
+}
+
 TEST(MarkerEngine, RejectsAReferenceWithoutMarkers) {
   auto engine = MarkerEngine();
   EngineContext context;
