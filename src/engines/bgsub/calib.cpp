@@ -39,17 +39,14 @@ void FindBody(const PixelModel& pixels, ArmCalibration* cal) {
   ComponentMask(labels, c, &cal->body);
   // The head, and a hanging arm a gap of wall away from the torso, are the body too: every
   // sizeable region of the standstill's difference (not specks of noise) joins the mask.
-  // The body's box also takes the parts above and below the largest one (in its columns): legs
-  // the thin lines' removal cut off from the torso, where they differ little from the floor.
+  // The body's box also takes the parts above and below the largest one (InTheBodysColumns).
   cv::Mat one;
   cv::Rect box = c.box;
   for (const Component& part : parts) {
     if (part.label == c.label || part.area_px < std::max(16, c.area_px / kBodyPartShare)) continue;
     ComponentMask(labels, part, &one);
     cal->body |= one;
-    if (part.box.x < c.box.x + c.box.width && c.box.x < part.box.x + part.box.width) {
-      box |= part.box;
-    }
+    if (InTheBodysColumns(c.box, part.box)) box |= part.box;
   }
   Close(&cal->body, cv::Rect(cv::Point(), cal->body.size()), 5);
   cal->body_box = box;
@@ -57,10 +54,8 @@ void FindBody(const PixelModel& pixels, ArmCalibration* cal) {
 
 // The straight arm of the arm-length image: the largest region outside the standing body that
 // differs from both the empty room and the standstill, with the regions lying in its band of rows
-// (an arm broken where it crosses something of its own colour). A standing person's shoulders are
-// in the upper half of the body (at about four fifths of its height): a region centred lower, by
-// the standing body's box, is no arm held out from the shoulder (the floor or the legs where the
-// images differ by their compression or light).
+// (an arm broken where it crosses something of its own colour), centred high enough in the
+// standing body's box for a shoulder (CentredHighEnoughForAShoulder).
 bool FindStraightArm(const PixelModel& pixels, const cv::Mat& arm_length, const cv::Mat& body,
                      const std::optional<cv::Rect>& body_box, cv::Mat* arm, cv::Rect* band) {
   cv::Mat person, moved, both, labels;
@@ -75,7 +70,7 @@ bool FindStraightArm(const PixelModel& pixels, const cv::Mat& arm_length, const 
   int largest = -1;
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const cv::Rect& r = parts[i].box;
-    if (body_box && r.y + 0.5 * r.height > body_box->y + 0.5 * body_box->height) continue;
+    if (body_box && !CentredHighEnoughForAShoulder(r, *body_box)) continue;
     if (largest < 0 || parts[i].area_px > parts[static_cast<std::size_t>(largest)].area_px) {
       largest = static_cast<int>(i);
     }

@@ -82,15 +82,12 @@ bool FindBody(const Differences& d, cv::Mat* body, cv::Rect* box) {
   const Part* main = Largest(parts);
   if (!main || main->area < 0.005 * static_cast<double>(person.total())) return false;
   *body = cv::Mat::zeros(person.size(), CV_8UC1);
-  // The box also takes the parts above and below the largest one (in its columns): legs that
-  // differ little from the floor, cut off from the torso by the opening.
+  // The box also takes the parts above and below the largest one (InTheBodysColumns).
   *box = main->box;
   for (const Part& p : parts) {
     if (p.label == main->label || p.area >= std::max(16, main->area / kBodyPartShare)) {
       body->setTo(255, labels == p.label);
-      if (p.box.x < main->box.x + main->box.width && main->box.x < p.box.x + p.box.width) {
-        *box |= p.box;
-      }
+      if (InTheBodysColumns(main->box, p.box)) *box |= p.box;
     }
   }
   cv::morphologyEx(*body, *body, cv::MORPH_CLOSE, cv::Mat::ones(5, 5, CV_8UC1));
@@ -99,10 +96,8 @@ bool FindBody(const Differences& d, cv::Mat* body, cv::Rect* box) {
 
 // The straight arm of the arm-length image: the largest region outside the standing body that
 // differs from both the empty room and the standstill, with the pieces in line with it (an arm
-// broken where it crosses something of its own colour). `band`: its rows, around the fullest. A
-// standing person's shoulders are in the upper half of the body (at about four fifths of its
-// height): a region centred lower in the body's box `body_box` is no arm held out from the
-// shoulder (the floor or the legs, where the images differ by their compression or light).
+// broken where it crosses something of its own colour), centred high enough in the body's box
+// `body_box` for a shoulder (CentredHighEnoughForAShoulder). `band`: its rows, around the fullest.
 bool FindStraightArm(const Differences& d, const cv::Mat& body, const cv::Rect& body_box,
                      cv::Mat* arm, cv::Rect* band) {
   cv::Mat both = d.arm_length_room & d.arm_length_standstill, labels;
@@ -111,7 +106,7 @@ bool FindStraightArm(const Differences& d, const cv::Mat& body, const cv::Rect& 
   const std::vector<Part> parts = Parts(both, &labels);
   std::vector<Part> high;
   for (const Part& p : parts) {
-    if (p.box.y + 0.5 * p.box.height <= body_box.y + 0.5 * body_box.height) high.push_back(p);
+    if (CentredHighEnoughForAShoulder(p.box, body_box)) high.push_back(p);
   }
   const Part* main = Largest(high);
   if (!main) return false;

@@ -20,6 +20,14 @@ double Quantile(std::vector<double> v, double q) {
 
 }  // namespace
 
+bool InTheBodysColumns(const cv::Rect& torso, const cv::Rect& part) {
+  return part.x < torso.x + torso.width && torso.x < part.x + part.width;
+}
+
+bool CentredHighEnoughForAShoulder(const cv::Rect& region, const cv::Rect& body_box) {
+  return region.y + 0.5 * region.height <= body_box.y + 0.5 * body_box.height;
+}
+
 cv::Rect HorizontalBand(const cv::Mat& arm, const cv::Rect& box) {
   std::vector<int> counts(static_cast<std::size_t>(box.height));
   for (int y = 0; y < box.height; ++y) {

@@ -9,6 +9,16 @@
 
 namespace armmimic {
 
+// The standing body's box takes, beside its largest region, the sizeable regions above and below
+// it, sharing some of its columns (legs that differ little from the floor, cut off from the
+// torso where thin lines are taken out): true when `part` is one of those for `torso`.
+bool InTheBodysColumns(const cv::Rect& torso, const cv::Rect& part);
+
+// A standing person's shoulders are in the upper half of the body (at about four fifths of its
+// height): a region centred lower in the body's box is no arm held out from the shoulder (the
+// floor or the legs, where the images differ by their compression or light).
+bool CentredHighEnoughForAShoulder(const cv::Rect& region, const cv::Rect& body_box);
+
 // The rows of `box` that hold the horizontal arm in `arm` (CV_8UC1 0/255): around the fullest
 // row, those at least 0.3 as full (what hangs off it, a strip of the torso's side, is left out).
 cv::Rect HorizontalBand(const cv::Mat& arm, const cv::Rect& box);
