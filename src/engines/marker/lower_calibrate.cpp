@@ -390,15 +390,9 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   for (int attempt = 0; attempt < 4; ++attempt) {
     const bool moved = attempt % 2 == 1;
     if (moved && std::isnan(second_edge)) continue;
-    cal->left_edge_px = fitted_edges[0];
-    cal->right_edge_px = fitted_edges[1];
-    if (moved) (weak == 0 ? cal->left_edge_px : cal->right_edge_px) = second_edge;
-    cal->delta = 0;
-    cal->marker_ratio = LowerCalibration().marker_ratio;
-    *scan = LowerScan();
-    scan->left_edge_px = cal->left_edge_px;
-    scan->right_edge_px = cal->right_edge_px;
-    scan->cylinder = CylinderView(camera, cal->left_edge_px, cal->right_edge_px);
+    double edges[2] = {fitted_edges[0], fitted_edges[1]};
+    if (moved) edges[weak] = second_edge;
+    StartAtEdges(camera, edges[0], edges[1], cal, scan);
     if (MeasureReferenceMarkers(gray, camera, g.x0, surface, attempt >= 2, cal, scan, message)) {
       // A plain step that the bands agree on is the silhouette: only an unsure edge is moved.
       if (unsure(weak)) EqualDiscs(gray, camera, g.x0, surface, weak, cal, scan);

@@ -66,6 +66,18 @@ bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, in
   return true;
 }
 
+void StartAtEdges(const MarkerCamera& camera, double left, double right, LowerCalibration* cal,
+                  LowerScan* scan) {
+  cal->left_edge_px = left;
+  cal->right_edge_px = right;
+  cal->delta = 0;
+  cal->marker_ratio = LowerCalibration().marker_ratio;
+  *scan = LowerScan();
+  scan->left_edge_px = left;
+  scan->right_edge_px = right;
+  scan->cylinder = CylinderView(camera, left, right);
+}
+
 // The lower markers are equal discs: measured across the cylinder they have the same angular
 // radius, whatever the camera's tilt (both lie at one height). A silhouette edge placed wrongly
 // stretches the angles on its side, so the weaker edge is moved (within a third of a radius)
@@ -86,13 +98,10 @@ void EqualDiscs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
   const LowerCalibration base = *cal;
   for (double d = -reach; d <= reach; d += 0.25) {
     LowerCalibration c = base;
-    (weak == 0 ? c.left_edge_px : c.right_edge_px) = start + d;
-    c.delta = 0;
-    c.marker_ratio = LowerCalibration().marker_ratio;
     LowerScan sc;
-    sc.left_edge_px = c.left_edge_px;
-    sc.right_edge_px = c.right_edge_px;
-    sc.cylinder = CylinderView(camera, c.left_edge_px, c.right_edge_px);
+    double edges[2] = {base.left_edge_px, base.right_edge_px};
+    edges[weak] = start + d;
+    StartAtEdges(camera, edges[0], edges[1], &c, &sc);
     std::string ignored;
     if (!sc.cylinder.valid() ||
         !MeasureReferenceMarkers(gray, camera, x0, surface, false, &c, &sc, &ignored)) {
@@ -138,14 +147,8 @@ bool RefineLimbs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
     const bool use[2] = {(combo & 1) != 0, (combo & 2) != 0};
     if ((use[0] && !can_move[0]) || (use[1] && !can_move[1])) continue;
     LowerCalibration cc = *cal;
-    cc.left_edge_px = use[0] ? fits[0].x : steps[0];
-    cc.right_edge_px = use[1] ? fits[1].x : steps[1];
-    cc.delta = 0;
-    cc.marker_ratio = LowerCalibration().marker_ratio;
     LowerScan ss;
-    ss.left_edge_px = cc.left_edge_px;
-    ss.right_edge_px = cc.right_edge_px;
-    ss.cylinder = CylinderView(camera, cc.left_edge_px, cc.right_edge_px);
+    StartAtEdges(camera, use[0] ? fits[0].x : steps[0], use[1] ? fits[1].x : steps[1], &cc, &ss);
     std::string ignored;
     if (!ss.cylinder.valid() ||
         !MeasureReferenceMarkers(gray, camera, x0, surface, true, &cc, &ss, &ignored)) {

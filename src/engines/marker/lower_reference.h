@@ -20,6 +20,11 @@ bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, in
                              const std::vector<double>& surface, bool allow_cut,
                              LowerCalibration* cal, LowerScan* scan, std::string* message);
 
+// The silhouette's edges set to `left` and `right`, the marker ratio and angular radius reset,
+// and the scan started afresh on that cylinder: ready for MeasureReferenceMarkers.
+void StartAtEdges(const MarkerCamera& camera, double left, double right, LowerCalibration* cal,
+                  LowerScan* scan);
+
 // Moves the edge on side `weak` (0 left) to where the lower markers' angular radii agree best.
 void EqualDiscs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
                 const std::vector<double>& surface, int weak, LowerCalibration* cal,
