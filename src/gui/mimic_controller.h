@@ -67,8 +67,10 @@ class MimicController : public QObject {
  private:
   void applyHold();
 
-  std::unique_ptr<live::MimicRun> run_;
+  // The session's folder is declared first so that it is removed last: the run, whose thread
+  // may still be writing its angle file there, is stopped and joined before the folder goes.
   QTemporaryDir session_;
+  std::unique_ptr<live::MimicRun> run_;
   QString angles_path_;
   int runs_ = 0;
   bool confirmed_ = false;
