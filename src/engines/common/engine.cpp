@@ -19,7 +19,7 @@ std::unique_ptr<Engine> Engine::Create(const EngineOptions& options) {
     case EngineKind::kPose:
       return internal::CreatePoseEngine(options.pose);
     case EngineKind::kHybrid:
-      return internal::CreateHybridEngine(options.hybrid, options.lk, options.bgsub);
+      return internal::CreateHybridEngine(options.hybrid, options.lk, options.bgsub, options.pose);
   }
   throw std::invalid_argument("Engine::Create: unknown engine kind");
 }

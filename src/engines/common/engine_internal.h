@@ -27,7 +27,7 @@ std::unique_ptr<Engine> CreateMarkerEngine(const MarkerOptions& options);
 std::unique_ptr<Engine> CreatePoseEngine(const PoseOptions& options);  // either network
 std::unique_ptr<Engine> CreateBlazePoseEngine(const PoseOptions& options);
 std::unique_ptr<Engine> CreateHybridEngine(const HybridOptions& hybrid, const LkOptions& lk,
-                                           const BgsubOptions& bgsub);
+                                           const BgsubOptions& bgsub, const PoseOptions& pose);
 
 // The arms the pose engine follows for `side` (pose/arms.h): {kLeft, kRight} for kBoth, {side}
 // otherwise (kAuto is decided on the first frame). The analysis writes an angle file for each.

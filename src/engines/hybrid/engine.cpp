@@ -1,13 +1,15 @@
 // The hybrid engine (docs/hybrid.md): lk's model tracker carries the arm, started from the
-// standstill's self-calibration (or clicked joints, or the pose network), and bgsub's
-// background difference measures the same arm afresh in every frame as a second opinion. A
-// row is `ok` only when both are and they place each segment alike (hybrid/agreement.h); its
-// directions are the mean of the two, its yaw bgsub's (a straight arm's foreshortening against
-// the calibrated length). A tracker that has had no pose of its own for hybrid.restart_frames
-// rows (lost, or its calibration refused) restarts from the background difference's joints once
-// those have been steady for hybrid.confirm_frames rows. Without a background and an
-// arm-length image (joints clicked on footage with no empty room) there is no second opinion,
-// and the rows are lk's alone, as the header and the first row's estimate say.
+// standstill's self-calibration (or clicked joints, or the pose network), and a second opinion
+// measures the same arm afresh in every frame: bgsub's background difference, or, where there
+// is no empty room (joints clicked on real footage), the pose network (hybrid/pose_opinion.h).
+// A row is `ok` only when both are and they place each segment alike (hybrid/agreement.h); its
+// directions are the mean of the two, its yaw the second opinion's (bgsub's: a straight arm's
+// foreshortening against the calibrated length). Where the tracker has lost the arm, the pose
+// network's own row stands (its own gate loses a frame it is unsure of); the background
+// difference's never does (alone it is wrong on unseen figures). A tracker that has had no pose
+// of its own for hybrid.restart_frames rows (lost, or its calibration refused) restarts from the
+// second opinion's joints once those have been steady for hybrid.confirm_frames rows. With
+// neither (no empty room and no pose model) the rows are lk's alone, as the first row says.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -17,6 +19,7 @@
 #include "common/arm_gate.h"
 #include "common/engine_internal.h"
 #include "hybrid/agreement.h"
+#include "hybrid/pose_opinion.h"
 
 namespace armmimic {
 namespace {
@@ -30,8 +33,9 @@ double Lower(double a, double b) {
 
 class HybridEngine final : public Engine {
  public:
-  HybridEngine(const HybridOptions& hybrid, const LkOptions& lk, const BgsubOptions& bgsub)
-      : o_(hybrid), lk_options_(lk), bgsub_options_(bgsub) {
+  HybridEngine(const HybridOptions& hybrid, const LkOptions& lk, const BgsubOptions& bgsub,
+               const PoseOptions& pose)
+      : o_(hybrid), lk_options_(lk), bgsub_options_(bgsub), pose_options_(pose) {
     // One standstill for both: the frames lk averages are the frames bgsub does.
     bgsub_options_.standstill_frames = lk_options_.standstill_frames;
   }
@@ -42,6 +46,8 @@ class HybridEngine final : public Engine {
     context_ = context;
     lk_ = internal::CreateLkEngine(lk_options_);
     bgsub_.reset();
+    pose_.reset();
+    alone_why_.clear();
     untracked_ = 0;
     steady_ = 0;
     restarts_ = 0;
@@ -55,6 +61,10 @@ class HybridEngine final : public Engine {
       own.wrist_px.reset();
       bgsub_ = internal::CreateBgsubEngine(bgsub_options_);
       if (Status st = bgsub_->Begin(own); !st) return st;
+      name_ = "the background difference";
+    } else {
+      pose_ = internal::PoseOpinion::Start(context, pose_options_, &alone_why_);
+      name_ = "the pose network";
     }
     first_row_ = true;
     return Status::Ok();
@@ -63,30 +73,39 @@ class HybridEngine final : public Engine {
   ArmMeasurement Process(const Frame& frame) override {
     if (!lk_) throw std::logic_error("hybrid: Process() before a successful Begin()");
     ArmMeasurement m = lk_->Process(frame);
-    if (!bgsub_) {
+    if (!bgsub_ && !pose_) {
       if (m.row() && first_row_) {
         first_row_ = false;
-        m.estimate = Join(m.estimate,
-                          "hybrid: no background and arm-length image, so no second opinion: "
-                          "the rows are the tracker's alone");
+        m.estimate =
+            Join(m.estimate, "hybrid: no background and arm-length image, and no pose network (" +
+                                 alone_why_ +
+                                 "), so no second opinion: the rows are the tracker's "
+                                 "alone");
       }
       return m;
     }
-    const ArmMeasurement b = bgsub_->Process(frame);
+    const ArmMeasurement b = bgsub_ ? bgsub_->Process(frame) : pose_->Process(frame);
     m.estimate = Join(m.estimate, b.estimate);
     if (!m.row()) return m;  // the standstill: both average it
     first_row_ = false;
-    // Only a tracker that has lost the arm restarts: one that tracks and disagrees is a second
-    // opinion to keep apart, and the rows it disagrees on are lost.
-    untracked_ = m.phase == MeasurementPhase::kOk ? 0 : untracked_ + 1;
+    // Only a tracker that has lost the arm restarts: one that tracks and disagrees with the
+    // background difference is a second opinion to keep apart, and the rows it disagrees on are
+    // lost. The pose network sees a real person better than a tracker that disagrees with it
+    // (which has drifted): those rows count as the tracker's own pose lost.
+    const bool tracked = m.phase == MeasurementPhase::kOk;
     Decide(b, &m);
+    const bool disagreed =
+        tracked && m.phase != MeasurementPhase::kOk && b.phase == MeasurementPhase::kOk;
+    untracked_ = tracked && !(pose_ && disagreed) ? 0 : untracked_ + 1;
     Steady(b);
     if (untracked_ >= o_.restart_frames && steady_ >= o_.confirm_frames) Restart(frame, b, &m);
     return m;
   }
 
   AngleMeta Describe() const override {
-    AngleMeta meta = {{"second_opinion", bgsub_ ? "bgsub" : "none"},
+    AngleMeta meta = {{"second_opinion", bgsub_  ? "bgsub"
+                                         : pose_ ? "pose"
+                                                 : "none"},
                       {"max_disagreement", FormatNumber(o_.max_disagreement_deg, 2)},
                       {"joint_px", FormatNumber(o_.joint_px, 2)},
                       {"restart_frames", std::to_string(o_.restart_frames)},
@@ -109,15 +128,19 @@ class HybridEngine final : public Engine {
     m.arm_hull = b.arm_hull;
     if (!m.body_box) m.body_box = b.body_box;
     if (m.phase != MeasurementPhase::kOk) {
+      if (pose_ && b.phase == MeasurementPhase::kOk) {
+        TakeOpinion(b, &m);
+        return;
+      }
       m.note = "the tracker: " + m.note;
       return;
     }
     if (b.phase == MeasurementPhase::kSetup) {
-      LoseRow(&m, "the background difference, the second opinion, is still taking the standstill");
+      LoseRow(&m, name_ + ", the second opinion, is still taking the standstill");
       return;
     }
     if (b.phase != MeasurementPhase::kOk) {
-      LoseRow(&m, "the background difference, the second opinion: " + b.note);
+      LoseRow(&m, name_ + ", the second opinion: " + b.note);
       return;
     }
     if (const std::string why = internal::Disagreement(m, b, o_); !why.empty()) {
@@ -132,7 +155,24 @@ class HybridEngine final : public Engine {
     m.confidence = Lower(m.confidence, b.confidence);
   }
 
-  // Counts the frames in a row the background difference has been ok, each pose within
+  // The pose network's own row where the tracker has lost the arm.
+  static void TakeOpinion(const ArmMeasurement& b, ArmMeasurement* m) {
+    const std::string tracker = m->note;
+    m->phase = b.phase;
+    m->upper_deg = b.upper_deg;
+    m->fore_deg = b.fore_deg;
+    m->bend_deg = b.bend_deg;
+    m->yaw_deg = b.yaw_deg;
+    m->upper_com_px = b.upper_com_px;
+    m->fore_com_px = b.fore_com_px;
+    m->shoulder_px = b.shoulder_px;
+    m->elbow_px = b.elbow_px;
+    m->wrist_px = b.wrist_px;
+    m->confidence = b.confidence;
+    m->note = "the pose network's row alone (the tracker: " + tracker + ")";
+  }
+
+  // Counts the frames in a row the second opinion has been ok, each pose within
   // max_disagreement_deg of the last.
   void Steady(const ArmMeasurement& b) {
     const bool ok = b.phase == MeasurementPhase::kOk && b.shoulder_px && b.elbow_px && b.wrist_px;
@@ -150,8 +190,8 @@ class HybridEngine final : public Engine {
   }
 
   // A tracker that has had no pose of its own for a while (lost, or never calibrated) starts
-  // again from the background difference's joints in this frame, as if they had been clicked. This
-  // frame stays lost: its pose is the background difference's alone.
+  // again from the second opinion's joints in this frame, as if they had been clicked. This
+  // frame's row stays what Decide made it: the tracker has no pose of its own in it.
   void Restart(const Frame& frame, const ArmMeasurement& b, ArmMeasurement* m) {
     EngineContext c = context_;
     c.shoulder_px = *b.shoulder_px;
@@ -163,7 +203,7 @@ class HybridEngine final : public Engine {
     lk_ = std::move(lk);
     untracked_ = 0;
     ++restarts_;
-    m->note += "; the tracker restarts from the background difference's joints (restart " +
+    m->note += "; the tracker restarts from " + name_ + "'s joints (restart " +
                std::to_string(restarts_) + ")";
   }
 
@@ -176,8 +216,12 @@ class HybridEngine final : public Engine {
   HybridOptions o_;
   LkOptions lk_options_;
   BgsubOptions bgsub_options_;
+  PoseOptions pose_options_;
   std::unique_ptr<Engine> lk_;
-  std::unique_ptr<Engine> bgsub_;  // the second opinion; null without a background
+  std::unique_ptr<Engine> bgsub_;                // the second opinion; null without a background
+  std::unique_ptr<internal::PoseOpinion> pose_;  // or this one, without a background
+  std::string name_;                             // the second opinion's, for notes
+  std::string alone_why_;                        // why neither could start
   bool first_row_ = true;
   EngineContext context_;        // the run's, for a restarted tracker
   int untracked_ = 0;            // rows in a row the tracker has had no pose of its own
@@ -192,8 +236,8 @@ class HybridEngine final : public Engine {
 namespace internal {
 
 std::unique_ptr<Engine> CreateHybridEngine(const HybridOptions& hybrid, const LkOptions& lk,
-                                           const BgsubOptions& bgsub) {
-  return std::make_unique<HybridEngine>(hybrid, lk, bgsub);
+                                           const BgsubOptions& bgsub, const PoseOptions& pose) {
+  return std::make_unique<HybridEngine>(hybrid, lk, bgsub, pose);
 }
 
 }  // namespace internal

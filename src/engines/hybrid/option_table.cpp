@@ -23,10 +23,10 @@ const std::vector<OptionField<HybridOptions>>& HybridOptionFields() {
               "directions may differ by atan(2 x this / its length) more"),
       Int<H>("restart_frames", &H::restart_frames, 5, 1, 100000, "Restart after",
              "frames in a row the tracker has had no pose of its own before it restarts from the "
-             "background difference's joints"),
+             "second opinion's joints"),
       Int<H>("confirm_frames", &H::confirm_frames, 5, 1, 1000, "Steady frames",
-             "frames in a row the background difference must be ok and steady to restart the "
-             "tracker from"),
+             "frames in a row the second opinion (the background difference, or the pose network "
+             "without one) must be ok and steady to restart the tracker from"),
   };
   return fields;
 }

@@ -162,8 +162,10 @@ TEST(HybridProtocol, ATrackerThatCannotCalibrateStartsFromTheBackgroundDifferenc
   EXPECT_EQ(hybrid.wrong, 0);
 }
 
-// Joints clicked on footage with no empty room: there is no second opinion, so the rows are the
-// tracker's own, exactly as the lk engine gives them, and the first row says so.
+// Joints clicked on footage with no empty room and no pose model (a model folder without it):
+// there is no second opinion, so the rows are the tracker's own, exactly as the lk engine gives
+// them, and the first row says so. (With the model, the pose network is the second opinion:
+// real_clip_test.cpp.)
 TEST(HybridProtocol, WithoutABackgroundTheRowsAreTheTrackersAlone) {
   synth::RandomArmSceneOptions so;
   so.seed = 8002;
@@ -178,6 +180,7 @@ TEST(HybridProtocol, WithoutABackgroundTheRowsAreTheTrackersAlone) {
   ctx.shoulder_px = t.shoulder_px;
   ctx.elbow_px = t.elbow_px;
   ctx.wrist_px = t.wrist_px;
+  ctx.model_dir = ::testing::TempDir() + "/no-pose-model-here";
   EngineOptions lk_options, hybrid_options;
   lk_options.kind = EngineKind::kLk;
   hybrid_options.kind = EngineKind::kHybrid;
