@@ -191,11 +191,13 @@ StandstillCalibration CalibrateFromStandstill(const cv::Mat& background, const c
                (cal.side > 0 ? "right" : "left") + ", not on the side named";
     return cal;
   }
-  const StraightArmColumns cols = MeasureStraightArm(arm, band, cal.side);
+  StraightArmColumns cols = MeasureStraightArm(arm, band, cal.side);
   if (!cols.ok) {
     cal.note = "the arm-length image: the straight arm is too small";
     return cal;
   }
+  // The fixed threshold loses an arm held out over a wall of nearly its colour.
+  cols.outer_x = ContinueStraightArm(arm_length, standstill, cols, cal.side);
   const double thick = cols.thick_px;
   const double r = std::max(1.0, 0.5 * thick);
   cal.half_width_px = r;

@@ -38,4 +38,15 @@ struct StraightArmColumns {
 // body, -1 to its left.
 StraightArmColumns MeasureStraightArm(const cv::Mat& arm, const cv::Rect& band, int side);
 
+// The straight arm's outer end where a fixed difference threshold lost it early: an arm held out
+// over a wall of nearly its own colour differs from the room there by less than the threshold,
+// though by more than the noise. Outwards from `cols`.outer_x, a column is the arm's while the
+// arm-length image's middle rows of the arm there are nearer the arm's own colour (each row's
+// mean over the last columns found) than the standstill's same pixels, relit by the light's
+// change between the two images (each channel's median ratio just above and below the arm).
+// Three columns in a row that are not end it. Both images CV_8UC3 of one size; returns the
+// outer end's column (cols.outer_x when nothing continues the arm).
+int ContinueStraightArm(const cv::Mat& arm_length, const cv::Mat& standstill,
+                        const StraightArmColumns& cols, int side);
+
 }  // namespace armmimic

@@ -75,16 +75,21 @@ TEST(StandstillCalibrationTest, FindsTheHangingArmOnBothGenerators) {
   }
   std::printf(
       "standstill calibration: %d of %d scenes, shoulder median %.1f px, wrist median "
-      "%.1f px, hanging direction median %.1f deg, wrong side %d, shoulder max %.1f px\n",
+      "%.1f px, hanging direction median %.1f deg, wrong side %d, shoulder max %.1f px, wrist max "
+      "%.1f px\n",
       e.calibrated, e.scenes, Median(e.shoulder_px), Median(e.wrist_px), Median(e.hanging_deg),
-      e.wrong_side, *std::max_element(e.shoulder_px.begin(), e.shoulder_px.end()));
+      e.wrong_side, *std::max_element(e.shoulder_px.begin(), e.shoulder_px.end()),
+      *std::max_element(e.wrist_px.begin(), e.wrist_px.end()));
   // A calibration the images do not support is refused (the run's rows are then lost), never
   // guessed: two of these twelve (a sleeve in the wall's colour) are.
   EXPECT_GE(e.calibrated, e.scenes - 3);
   EXPECT_EQ(e.wrong_side, 0);
   EXPECT_LT(Median(e.shoulder_px), 4.5);
   EXPECT_LT(Median(e.hanging_deg), 6.0);
-  EXPECT_LT(Median(e.wrist_px), 20.0);
+  // The straight arm followed on over a wall of nearly its colour (ContinueStraightArm) gives the
+  // reach, and so the wrist, its length: median 10.9 -> 8.6 px.
+  EXPECT_LT(Median(e.wrist_px), 10.0);
+  EXPECT_LT(*std::max_element(e.wrist_px.begin(), e.wrist_px.end()), 25.0);
   // A sleeve that hung over the torso's side in the shirt's colour shows only its outer part; its
   // middle put the shoulder 10 px out (random 1002) before the outer edge was taken for it.
   EXPECT_LT(*std::max_element(e.shoulder_px.begin(), e.shoulder_px.end()), 8.0);
