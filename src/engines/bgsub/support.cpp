@@ -5,6 +5,14 @@
 #include "armmimic/core/angles.h"
 
 namespace armmimic::bgsub {
+namespace {
+
+// How far out from rest_deg the standstill's arm is looked for when the line along it leaves the
+// standstill's person (kMaxHangFromDownDeg of the standstill calibration allows more, but there
+// the line is fitted to the arm's rows).
+constexpr int kMaxOutwardLeanDeg = 20;
+
+}  // namespace
 
 void FitSupport::Begin(const ArmCalibration& cal, double upper_px, double rest_deg,
                        const cv::Rect& rect, const cv::Mat& standstill_person,
@@ -15,9 +23,28 @@ void FitSupport::Begin(const ArmCalibration& cal, double upper_px, double rest_d
   shape_.upper_px = upper_px;
   shape_.fore_px = cal.reach_px - upper_px;
   shape_.upper_hw = shape_.fore_hw = cal.half_width_px;
-  const arm::ArmJoints rest = Joints(rest_deg, rest_deg);
-  rule_.Calibrate(
-      arm::MeasureSupport(standstill_person, standstill_person, cv::Point(), rest, shape_));
+  // The standstill's arm along rest_deg; where that line leaves the standstill's person (a thin
+  // arm hanging a few degrees out from the body), along the outward lean the person supports
+  // best. Only outward: inward the line runs onto the torso, which would support any calibration.
+  auto support_at = [&](double deg) {
+    return arm::MeasureSupport(standstill_person, standstill_person, cv::Point(), Joints(deg, deg),
+                               shape_);
+  };
+  double hang_deg = rest_deg;
+  arm::PoseSupport rest_support = support_at(rest_deg);
+  rule_.Calibrate(rest_support);
+  if (!rule_.calibrated()) {
+    for (int lean = 1; lean <= kMaxOutwardLeanDeg; ++lean) {
+      const double deg = rest_deg + cal.side * lean;
+      const arm::PoseSupport s = support_at(deg);
+      if (s.weaker() > rest_support.weaker()) {
+        rest_support = s;
+        hang_deg = deg;
+      }
+    }
+    rule_.Calibrate(rest_support);
+  }
+  const arm::ArmJoints rest = Joints(hang_deg, hang_deg);
   rest_region_ = cv::Mat::zeros(rect.size(), CV_8UC1);
   const cv::Point2d o(tl_);
   arm::DrawArm(rest_region_, {rest.shoulder - o, rest.elbow - o, rest.wrist - o}, shape_, 0);

@@ -165,6 +165,23 @@ TEST(HybridProtocol, ATrackerThatCannotCalibrateStartsFromTheBackgroundDifferenc
   EXPECT_EQ(hybrid.wrong, 0);
 }
 
+// A thin arm that hangs a few degrees out from the body (tuning scene capsule hard 3013, its arm
+// about 8 px wide): the line straight down from the shoulder left the standstill's person, so
+// the background difference's support rule could not be calibrated and every row of both
+// engines was lost. The standstill's arm is now looked for along the outward lean the person
+// supports best.
+TEST(HybridProtocol, AThinArmHangingALittleOutCalibratesTheSupportRule) {
+  const ProtocolRun bgsub = CapsuleScene(3013, synth::SceneTier::kHard, EngineKind::kBgsub);
+  const ProtocolRun hybrid = CapsuleScene(3013, synth::SceneTier::kHard, EngineKind::kHybrid);
+  Print("bgsub, capsule hard 3013", bgsub);
+  Print("hybrid, capsule hard 3013", hybrid);
+  EXPECT_GE(bgsub.coverage(), 0.9);
+  EXPECT_LE(bgsub.wrong_share(), 0.02);
+  EXPECT_GE(hybrid.coverage(), 0.9);
+  EXPECT_LE(hybrid.mae(), 3.0);
+  EXPECT_EQ(hybrid.wrong, 0);
+}
+
 // Joints clicked on footage with no empty room and no pose model (a model folder without it):
 // there is no second opinion, so the rows are the tracker's own, exactly as the lk engine gives
 // them, and the first row says so. (With the model, the pose network is the second opinion:
