@@ -135,7 +135,8 @@ void AnalysisFlags::Register(ArgParser& p, bool both_arms) {
   }
   AddRowFlag(p, Row(PoseOptionFields(), "network"), &e.pose, For("pose"));
   p.String("--model", &f.model_dir, "DIR",
-           "pose, lk/hybrid --auto-calibrate: the folder holding the network's files "
+           "pose, lk/hybrid --auto-calibrate, hybrid with no background (the network is its "
+           "second opinion): the folder holding the network's files "
            "(movenet-lightning.json and .bin; blazepose-full.json and .bin as well for "
            "--network blazepose)");
   p.Flag("--auto-calibrate", &f.auto_calibrate,
@@ -194,8 +195,11 @@ std::string AnalysisFlags::CheckFor(const ArgParser& p, const AnalysisOptions& o
            engine + " takes left or right";
   }
   const bool auto_calibrate = o.auto_calibrate || f_.auto_calibrate;
-  if (o.engine.kind != EngineKind::kPose && !auto_calibrate &&
-      (p.Given("--side") || p.Given("--model"))) {
+  // The hybrid engine with no empty room takes the network as its second opinion.
+  const bool model_used =
+      o.engine.kind == EngineKind::kPose || o.engine.kind == EngineKind::kHybrid || auto_calibrate;
+  if ((o.engine.kind != EngineKind::kPose && !auto_calibrate && p.Given("--side")) ||
+      (!model_used && p.Given("--model"))) {
     return std::string(p.Given("--side") ? "--side" : "--model") + " is used by --engine " +
            engine + " only with --auto-calibrate";
   }

@@ -89,5 +89,35 @@ TEST(CliHybrid, AnotherEnginesSettingOrFlagIsRefusedNamingIt) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("a.tsv")));
 }
 
+// Joints clicked on footage with no empty room: the pose network is the second opinion, and
+// --model names its folder (hybrid takes it without --auto-calibrate). A folder without the
+// network leaves the rows the tracker's alone, and the log says why, naming the missing file.
+TEST(CliHybrid, WithoutAnEmptyRoomTheModelFolderIsTheSecondOpinions) {
+  const std::string scene = test::SmallScene(9, 30);
+  synth::TruthFile truth;
+  ASSERT_TRUE(synth::ReadTruthFile(scene + "/truth.tsv", &truth).ok());
+  const synth::TruthRow* start = nullptr;
+  for (const synth::TruthRow& row : truth.rows) {
+    if (row.frame == 20) start = &row;
+  }
+  ASSERT_NE(start, nullptr);
+  auto xy = [](double x, double y) { return std::to_string(x) + "," + std::to_string(y); };
+  test::TempDir dir;
+  const std::string empty = dir.file("no-model");
+  std::filesystem::create_directory(empty);
+  const test::CliResult r = test::RunCli({"analyze", scene + "/scene.avi", "-o", dir.file("a.tsv"),
+                                          "--no-progress", "--engine", "hybrid", "--start", "20",
+                                          "--shoulder", xy(start->shoulder_x, start->shoulder_y),
+                                          "--elbow", xy(start->elbow_x, start->elbow_y), "--wrist",
+                                          xy(start->wrist_x, start->wrist_y), "--model", empty});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(Contains(r.err, "no pose network")) << r.err;
+  EXPECT_TRUE(Contains(r.err, "movenet-lightning.json not found")) << r.err;
+  AngleFile f;
+  ASSERT_TRUE(ReadAngleFile(dir.file("a.tsv"), &f).ok());
+  EXPECT_EQ(f.Meta("second_opinion"), "none");
+  EXPECT_EQ(f.rows.size(), 30u);
+}
+
 }  // namespace
 }  // namespace armmimic

@@ -58,7 +58,7 @@ ArmMeasurement PoseOpinion::Process(const Frame& frame) {
     m.estimate = std::string("the pose network's second opinion follows the person's ") +
                  (*right_ ? "right" : "left") + " arm, its shoulder " +
                  std::to_string(static_cast<int>(std::lround(std::min(dl, dr)))) +
-                 " px from the clicked one";
+                 " px from the shoulder the tracker starts from";
     return m;
   }
   return *right_ ? right : left;
