@@ -135,6 +135,8 @@ class EvidenceMap {
   cv::Mat low_, high_;  // the background's per-channel minimum and maximum over 3x3
   cv::Mat relit_;       // the region of the frame in the background's light
   std::vector<float> distances_;
+  cv::Mat dist_;                // CV_32F: each pixel's distance from the background
+  std::vector<float> squares_;  // one row's squared channel distances
 };
 
 }  // namespace armmimic::arm
