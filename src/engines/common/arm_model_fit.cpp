@@ -68,27 +68,41 @@ SegmentScore ScoreSegment(const EvidenceMap& evidence, const cv::Point2d& from_p
   const double* across = coarse ? kCoarse : kFine;
   const int n_across = coarse ? 2 : 4;
   const double flank = hw_px + std::max(2.0, 0.75 * hw_px);
+  // The offsets across the strip and to its flanks, the same at every step along it.
+  cv::Point2d inner[4];
+  for (int a = 0; a < n_across; ++a) inner[a] = across[a] * hw_px * n;
+  const cv::Point2d outer[2] = {-1 * flank * n, 1 * flank * n};
+  // A flank sample farther than the avoided half-width beyond the avoided segment's bounding box
+  // on either axis is surely not within it (the margin is far above rounding): the exact
+  // distance is then not needed.
+  const bool avoid = avoid_hw_px > 0;
+  const double reach = avoid_hw_px + 1e-3;
+  const double box_x0 = std::min(avoid_a.x, avoid_b.x) - reach;
+  const double box_x1 = std::max(avoid_a.x, avoid_b.x) + reach;
+  const double box_y0 = std::min(avoid_a.y, avoid_b.y) - reach;
+  const double box_y1 = std::max(avoid_a.y, avoid_b.y) + reach;
+  const double avoid2 = avoid_hw_px * avoid_hw_px;
+  const EvidenceMap::Sampler map(evidence);
   double inside = 0, flanks = 0;
-  int n_inside = 0, n_flank = 0;
+  int n_flank = 0;
   for (int k = 0; k < along; ++k) {
     const double t = (t0 + (t1 - t0) * (k + 0.5) / along) * length_px;
     const cv::Point2d p = from_px + t * u;
     for (int a = 0; a < n_across; ++a) {
-      const cv::Point2d q = p + across[a] * hw_px * n;
-      inside += evidence.At(q.x, q.y);
-      ++n_inside;
+      const cv::Point2d q = p + inner[a];
+      inside += map.At(q.x, q.y);
     }
-    for (int s = -1; s <= 1; s += 2) {
-      const cv::Point2d q = p + s * flank * n;
-      if (avoid_hw_px > 0 &&
-          SquaredDistanceToSegment(q, avoid_a, avoid_b) < avoid_hw_px * avoid_hw_px) {
+    for (const cv::Point2d& side : outer) {
+      const cv::Point2d q = p + side;
+      if (avoid && q.x > box_x0 && q.x < box_x1 && q.y > box_y0 && q.y < box_y1 &&
+          SquaredDistanceToSegment(q, avoid_a, avoid_b) < avoid2) {
         continue;
       }
-      flanks += evidence.At(q.x, q.y);
+      flanks += map.At(q.x, q.y);
       ++n_flank;
     }
   }
-  out.inside = inside / n_inside;
+  out.inside = inside / (along * n_across);
   out.score = out.inside - (n_flank > 0 ? flanks / n_flank : 0.0);
   return out;
 }
