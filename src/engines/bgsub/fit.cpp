@@ -218,9 +218,20 @@ void ArmFitter::ScoreUppers(const cv::Mat& weights, int from) const {
 int ArmFitter::Score(const cv::Mat& weights, int from, int deg,
                      const std::vector<Ray>& rays) const {
   const schar* w = weights.ptr<schar>() + from;
-  int sum = 0;
-  for (int off : rays[static_cast<std::size_t>(Wrap360(deg))].offsets) sum += w[off];
-  return sum;
+  const std::vector<int>& offsets = rays[static_cast<std::size_t>(Wrap360(deg))].offsets;
+  // Four running sums (integers: the order does not matter), so the loads overlap.
+  const int* off = offsets.data();
+  const std::size_t n = offsets.size();
+  int s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4) {
+    s0 += w[off[i]];
+    s1 += w[off[i + 1]];
+    s2 += w[off[i + 2]];
+    s3 += w[off[i + 3]];
+  }
+  for (; i < n; ++i) s0 += w[off[i]];
+  return (s0 + s1) + (s2 + s3);
 }
 
 void ArmFitter::Count(const cv::Mat& weights, int from, int deg, const std::vector<Ray>& rays,
