@@ -54,19 +54,38 @@ ArmJoints JointsOf(const ArmPose& pose, const ArmShape& shape) {
   return j;
 }
 
-SegmentScore ScoreSegment(const EvidenceMap& evidence, const cv::Point2d& from_px, double deg,
-                          double length_px, double hw_px, double t0, double t1, bool coarse,
-                          const cv::Point2d& avoid_a, const cv::Point2d& avoid_b,
-                          double avoid_hw_px) {
-  SegmentScore out;
+namespace {
+
+// A strip's steps along it, as distances from its start (pixels): the same in every direction,
+// so a search over directions takes them once.
+struct Steps {
+  int along = 0;  // 0: an empty strip
+  bool coarse = false;
+  double t[16] = {};
+};
+
+Steps StepsOf(double length_px, double t0, double t1, bool coarse) {
+  Steps s;
+  s.coarse = coarse;
   const double span = (t1 - t0) * length_px;
-  if (!(span > 0)) return out;
-  const cv::Point2d u = DirectionVector(deg), n(-u.y, u.x);
-  const int along = coarse ? 6 : std::clamp(static_cast<int>(span / 2.5), 6, 16);
+  if (!(span > 0)) return s;
+  s.along = coarse ? 6 : std::clamp(static_cast<int>(span / 2.5), 6, 16);
+  for (int k = 0; k < s.along; ++k) s.t[k] = (t0 + (t1 - t0) * (k + 0.5) / s.along) * length_px;
+  return s;
+}
+
+// ScoreSegment with its steps and its direction's unit vector `u` given.
+SegmentScore ScoreStrip(const EvidenceMap::Sampler& map, const Steps& steps,
+                        const cv::Point2d& from_px, const cv::Point2d& u, double hw_px,
+                        const cv::Point2d& avoid_a = {}, const cv::Point2d& avoid_b = {},
+                        double avoid_hw_px = 0) {
+  SegmentScore out;
+  if (steps.along == 0) return out;
+  const cv::Point2d n(-u.y, u.x);
   static constexpr double kFine[4] = {-0.6, -0.2, 0.2, 0.6};
   static constexpr double kCoarse[2] = {-0.4, 0.4};
-  const double* across = coarse ? kCoarse : kFine;
-  const int n_across = coarse ? 2 : 4;
+  const double* across = steps.coarse ? kCoarse : kFine;
+  const int n_across = steps.coarse ? 2 : 4;
   const double flank = hw_px + std::max(2.0, 0.75 * hw_px);
   // The offsets across the strip and to its flanks, the same at every step along it.
   cv::Point2d inner[4];
@@ -82,12 +101,10 @@ SegmentScore ScoreSegment(const EvidenceMap& evidence, const cv::Point2d& from_p
   const double box_y0 = std::min(avoid_a.y, avoid_b.y) - reach;
   const double box_y1 = std::max(avoid_a.y, avoid_b.y) + reach;
   const double avoid2 = avoid_hw_px * avoid_hw_px;
-  const EvidenceMap::Sampler map(evidence);
   double inside = 0, flanks = 0;
   int n_flank = 0;
-  for (int k = 0; k < along; ++k) {
-    const double t = (t0 + (t1 - t0) * (k + 0.5) / along) * length_px;
-    const cv::Point2d p = from_px + t * u;
+  for (int k = 0; k < steps.along; ++k) {
+    const cv::Point2d p = from_px + steps.t[k] * u;
     for (int a = 0; a < n_across; ++a) {
       const cv::Point2d q = p + inner[a];
       inside += map.At(q.x, q.y);
@@ -102,9 +119,33 @@ SegmentScore ScoreSegment(const EvidenceMap& evidence, const cv::Point2d& from_p
       ++n_flank;
     }
   }
-  out.inside = inside / (along * n_across);
+  out.inside = inside / (steps.along * n_across);
   out.score = out.inside - (n_flank > 0 ? flanks / n_flank : 0.0);
   return out;
+}
+
+// DirectionVector of the whole degrees -kTableDeg..kTableDeg, computed once: the wide search's
+// directions are all whole degrees.
+constexpr int kTableDeg = 360;
+const cv::Point2d& WholeDegreeDirection(int deg) {
+  static const std::vector<cv::Point2d> table = [] {
+    std::vector<cv::Point2d> t(2 * kTableDeg + 1);
+    for (int d = -kTableDeg; d <= kTableDeg; ++d) t[d + kTableDeg] = DirectionVector(d);
+    return t;
+  }();
+  return table[static_cast<std::size_t>(deg + kTableDeg)];
+}
+
+}  // namespace
+
+SegmentScore ScoreSegment(const EvidenceMap& evidence, const cv::Point2d& from_px, double deg,
+                          double length_px, double hw_px, double t0, double t1, bool coarse,
+                          const cv::Point2d& avoid_a, const cv::Point2d& avoid_b,
+                          double avoid_hw_px) {
+  const Steps steps = StepsOf(length_px, t0, t1, coarse);
+  if (steps.along == 0) return {};
+  return ScoreStrip(EvidenceMap::Sampler(evidence), steps, from_px, DirectionVector(deg), hw_px,
+                    avoid_a, avoid_b, avoid_hw_px);
 }
 
 PoseScore ScorePose(const EvidenceMap& evidence, const ArmPose& pose, const ArmShape& shape,
@@ -128,17 +169,19 @@ FitResult FitNear(const EvidenceMap& evidence, const ArmShape& shape, const ArmP
   const cv::Point2d s = predicted.shoulder;
   std::vector<double> total(static_cast<std::size_t>(nu * nb), -4.0);
   int best = -1;
+  const EvidenceMap::Sampler map(evidence);
+  const Steps upper_steps = StepsOf(shape.upper_px, kUpperFrom, kUpperTo, false);
+  const Steps fore_steps = StepsOf(shape.fore_px, kForeFrom, ForeTo(shape), false);
   for (int i = 0; i < nu; ++i) {
     const double up = predicted.upper_deg + (i - ru);
-    const SegmentScore su =
-        ScoreSegment(evidence, s, up, shape.upper_px, shape.upper_hw, kUpperFrom, kUpperTo);
-    const cv::Point2d elbow = s + shape.upper_px * DirectionVector(up);
+    const cv::Point2d u = DirectionVector(up);
+    const SegmentScore su = ScoreStrip(map, upper_steps, s, u, shape.upper_hw);
+    const cv::Point2d elbow = s + shape.upper_px * u;
     for (int j = 0; j < nb; ++j) {
       const double bend = bend0 + (j - rb);
       if (std::abs(bend) > kMaxBendDeg) continue;
-      const SegmentScore sf =
-          ScoreSegment(evidence, elbow, up + bend, shape.fore_px, shape.fore_hw, kForeFrom,
-                       ForeTo(shape), false, s, elbow, shape.upper_hw + 1);
+      const SegmentScore sf = ScoreStrip(map, fore_steps, elbow, DirectionVector(up + bend),
+                                         shape.fore_hw, s, elbow, shape.upper_hw + 1);
       const int k = i * nb + j;
       total[k] = su.score + sf.score;
       if (best < 0 || total[k] > total[best]) best = k;
@@ -170,16 +213,20 @@ std::vector<FitResult> FitAnywhere(const EvidenceMap& evidence, const ArmShape& 
   const int nu = static_cast<int>(360 / kWideUpperStep);
   const int nb = 2 * static_cast<int>(kMaxBendDeg / kWideBendStep) + 1;
   std::vector<double> total(static_cast<std::size_t>(nu * nb));
+  const EvidenceMap::Sampler map(evidence);
+  const Steps upper_steps = StepsOf(shape.upper_px, kUpperFrom, kUpperTo, true);
+  const Steps fore_steps = StepsOf(shape.fore_px, kForeFrom, ForeTo(shape), true);
+  // The grid's directions are whole degrees (whole steps from whole degrees).
+  static_assert(kWideUpperStep == 4 && kWideBendStep == 5 && kMaxBendDeg == 150);
   for (int i = 0; i < nu; ++i) {
-    const double up = -180 + kWideUpperStep * (i + 1);
-    const SegmentScore su = ScoreSegment(evidence, shoulder, up, shape.upper_px, shape.upper_hw,
-                                         kUpperFrom, kUpperTo, true);
-    const cv::Point2d elbow = shoulder + shape.upper_px * DirectionVector(up);
+    const int up = -180 + 4 * (i + 1);
+    const cv::Point2d& u = WholeDegreeDirection(up);
+    const SegmentScore su = ScoreStrip(map, upper_steps, shoulder, u, shape.upper_hw);
+    const cv::Point2d elbow = shoulder + shape.upper_px * u;
     for (int j = 0; j < nb; ++j) {
-      const double bend = -kMaxBendDeg + kWideBendStep * j;
-      const SegmentScore sf =
-          ScoreSegment(evidence, elbow, up + bend, shape.fore_px, shape.fore_hw, kForeFrom,
-                       ForeTo(shape), true, shoulder, elbow, shape.upper_hw + 1);
+      const int bend = -150 + 5 * j;
+      const SegmentScore sf = ScoreStrip(map, fore_steps, elbow, WholeDegreeDirection(up + bend),
+                                         shape.fore_hw, shoulder, elbow, shape.upper_hw + 1);
       total[static_cast<std::size_t>(i * nb + j)] = su.score + sf.score;
     }
   }
@@ -230,11 +277,12 @@ double ForeRivalScore(const EvidenceMap& evidence, const ArmShape& shape, const 
   const ArmJoints j = JointsOf(pose, shape);
   const double bend0 = AngleDiff(pose.fore_deg, pose.upper_deg);
   double best = -2;
+  const EvidenceMap::Sampler map(evidence);
+  const Steps steps = StepsOf(shape.fore_px, kForeFrom, 1, false);
   for (double bend = -kMaxBendDeg; bend <= kMaxBendDeg; bend += kStepDeg) {
     if (std::abs(bend - bend0) < apart_deg) continue;
-    const SegmentScore sf =
-        ScoreSegment(evidence, j.elbow, pose.upper_deg + bend, shape.fore_px, shape.fore_hw,
-                     kForeFrom, 1, false, j.shoulder, j.elbow, shape.upper_hw + 1);
+    const SegmentScore sf = ScoreStrip(map, steps, j.elbow, DirectionVector(pose.upper_deg + bend),
+                                       shape.fore_hw, j.shoulder, j.elbow, shape.upper_hw + 1);
     best = std::max(best, sf.score);
   }
   return best;
