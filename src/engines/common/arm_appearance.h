@@ -127,11 +127,21 @@ class EvidenceMap {
       const double fx = x - x0_, fy = y - y0_;
       if (!(fx >= 0 && fy >= 0 && fx < cols_m1_ && fy < rows_m1_)) return outside;
       const int ix = static_cast<int>(fx), iy = static_cast<int>(fy);
-      const float ax = static_cast<float>(fx - ix), ay = static_cast<float>(fy - iy);
+      return Blend(ix, iy, static_cast<float>(fx - ix), static_cast<float>(fy - iy));
+    }
+    // The blend of the map's pixels (ix, iy) to (ix + 1, iy + 1), weighted by the position's
+    // fractions `ax` and `ay` past them.
+    float Blend(int ix, int iy, float ax, float ay) const {
       const float* r0 = data_ + step_ * static_cast<std::size_t>(iy) + ix;
       const float* r1 = r0 + step_;
       return (1 - ay) * ((1 - ax) * r0[0] + ax * r0[1]) + ay * ((1 - ax) * r1[0] + ax * r1[1]);
     }
+    // The region's top-left corner (frame pixels) and its last columns' and rows' start: At
+    // samples where x - x0() lies in [0, cols_m1()) and y - y0() in [0, rows_m1()).
+    double x0() const { return x0_; }
+    double y0() const { return y0_; }
+    double cols_m1() const { return cols_m1_; }
+    double rows_m1() const { return rows_m1_; }
 
    private:
     const float* data_;

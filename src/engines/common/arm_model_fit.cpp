@@ -5,6 +5,10 @@
 
 #include "armmimic/core/angles.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace armmimic::arm {
 namespace {
 
@@ -56,6 +60,55 @@ ArmJoints JointsOf(const ArmPose& pose, const ArmShape& shape) {
 
 namespace {
 
+// A point's two coordinates, added and scaled as a pair where the processor has SSE2 (the same
+// IEEE operations on each coordinate), and the evidence sampled there.
+#if defined(__SSE2__)
+using Pair = __m128d;
+inline Pair PairOf(const cv::Point2d& p) { return _mm_set_pd(p.y, p.x); }
+inline Pair Add(Pair a, Pair b) { return _mm_add_pd(a, b); }
+inline Pair Scale(double t, Pair a) { return _mm_mul_pd(_mm_set1_pd(t), a); }
+inline double X(Pair p) { return _mm_cvtsd_f64(p); }
+inline double Y(Pair p) { return _mm_cvtsd_f64(_mm_unpackhi_pd(p, p)); }
+
+// EvidenceMap::Sampler::At(X(q), Y(q)), to the bit.
+class PairSampler {
+ public:
+  explicit PairSampler(const EvidenceMap& evidence)
+      : map_(evidence),
+        origin_(_mm_set_pd(map_.y0(), map_.x0())),
+        limit_(_mm_set_pd(map_.rows_m1(), map_.cols_m1())) {}
+  float At(Pair q) const {
+    const __m128d f = _mm_sub_pd(q, origin_);
+    const __m128d in = _mm_and_pd(_mm_cmpge_pd(f, _mm_setzero_pd()), _mm_cmplt_pd(f, limit_));
+    if (_mm_movemask_pd(in) != 3) return 0.f;
+    const __m128i i = _mm_cvttpd_epi32(f);
+    const __m128 a = _mm_cvtpd_ps(_mm_sub_pd(f, _mm_cvtepi32_pd(i)));
+    return map_.Blend(_mm_cvtsi128_si32(i), _mm_cvtsi128_si32(_mm_shuffle_epi32(i, 1)),
+                      _mm_cvtss_f32(a), _mm_cvtss_f32(_mm_shuffle_ps(a, a, 1)));
+  }
+
+ private:
+  EvidenceMap::Sampler map_;
+  __m128d origin_, limit_;
+};
+#else
+using Pair = cv::Point2d;
+inline Pair PairOf(const cv::Point2d& p) { return p; }
+inline Pair Add(const Pair& a, const Pair& b) { return a + b; }
+inline Pair Scale(double t, const Pair& a) { return t * a; }
+inline double X(const Pair& p) { return p.x; }
+inline double Y(const Pair& p) { return p.y; }
+
+class PairSampler {
+ public:
+  explicit PairSampler(const EvidenceMap& evidence) : map_(evidence) {}
+  float At(const Pair& q) const { return map_.At(q.x, q.y); }
+
+ private:
+  EvidenceMap::Sampler map_;
+};
+#endif
+
 // A strip's steps along it, as distances from its start (pixels): the same in every direction,
 // so a search over directions takes them once.
 struct Steps {
@@ -75,10 +128,9 @@ Steps StepsOf(double length_px, double t0, double t1, bool coarse) {
 }
 
 // ScoreSegment with its steps and its direction's unit vector `u` given.
-SegmentScore ScoreStrip(const EvidenceMap::Sampler& map, const Steps& steps,
-                        const cv::Point2d& from_px, const cv::Point2d& u, double hw_px,
-                        const cv::Point2d& avoid_a = {}, const cv::Point2d& avoid_b = {},
-                        double avoid_hw_px = 0) {
+SegmentScore ScoreStrip(const PairSampler& map, const Steps& steps, const cv::Point2d& from_px,
+                        const cv::Point2d& u, double hw_px, const cv::Point2d& avoid_a = {},
+                        const cv::Point2d& avoid_b = {}, double avoid_hw_px = 0) {
   SegmentScore out;
   if (steps.along == 0) return out;
   const cv::Point2d n(-u.y, u.x);
@@ -88,9 +140,10 @@ SegmentScore ScoreStrip(const EvidenceMap::Sampler& map, const Steps& steps,
   const int n_across = steps.coarse ? 2 : 4;
   const double flank = hw_px + std::max(2.0, 0.75 * hw_px);
   // The offsets across the strip and to its flanks, the same at every step along it.
-  cv::Point2d inner[4];
-  for (int a = 0; a < n_across; ++a) inner[a] = across[a] * hw_px * n;
-  const cv::Point2d outer[2] = {-1 * flank * n, 1 * flank * n};
+  Pair inner[4];
+  for (int a = 0; a < n_across; ++a) inner[a] = PairOf(across[a] * hw_px * n);
+  const Pair outer[2] = {PairOf(-1 * flank * n), PairOf(1 * flank * n)};
+  const Pair from = PairOf(from_px), along = PairOf(u);
   // A flank sample farther than the avoided half-width beyond the avoided segment's bounding box
   // on either axis is surely not within it (the margin is far above rounding): the exact
   // distance is then not needed.
@@ -104,18 +157,16 @@ SegmentScore ScoreStrip(const EvidenceMap::Sampler& map, const Steps& steps,
   double inside = 0, flanks = 0;
   int n_flank = 0;
   for (int k = 0; k < steps.along; ++k) {
-    const cv::Point2d p = from_px + steps.t[k] * u;
-    for (int a = 0; a < n_across; ++a) {
-      const cv::Point2d q = p + inner[a];
-      inside += map.At(q.x, q.y);
-    }
-    for (const cv::Point2d& side : outer) {
-      const cv::Point2d q = p + side;
-      if (avoid && q.x > box_x0 && q.x < box_x1 && q.y > box_y0 && q.y < box_y1 &&
-          SquaredDistanceToSegment(q, avoid_a, avoid_b) < avoid2) {
+    const Pair p = Add(from, Scale(steps.t[k], along));
+    for (int a = 0; a < n_across; ++a) inside += map.At(Add(p, inner[a]));
+    for (const Pair& side : outer) {
+      const Pair q = Add(p, side);
+      const double qx = X(q), qy = Y(q);
+      if (avoid && qx > box_x0 && qx < box_x1 && qy > box_y0 && qy < box_y1 &&
+          SquaredDistanceToSegment({qx, qy}, avoid_a, avoid_b) < avoid2) {
         continue;
       }
-      flanks += map.At(q.x, q.y);
+      flanks += map.At(q);
       ++n_flank;
     }
   }
@@ -144,8 +195,8 @@ SegmentScore ScoreSegment(const EvidenceMap& evidence, const cv::Point2d& from_p
                           double avoid_hw_px) {
   const Steps steps = StepsOf(length_px, t0, t1, coarse);
   if (steps.along == 0) return {};
-  return ScoreStrip(EvidenceMap::Sampler(evidence), steps, from_px, DirectionVector(deg), hw_px,
-                    avoid_a, avoid_b, avoid_hw_px);
+  return ScoreStrip(PairSampler(evidence), steps, from_px, DirectionVector(deg), hw_px, avoid_a,
+                    avoid_b, avoid_hw_px);
 }
 
 PoseScore ScorePose(const EvidenceMap& evidence, const ArmPose& pose, const ArmShape& shape,
@@ -169,7 +220,7 @@ FitResult FitNear(const EvidenceMap& evidence, const ArmShape& shape, const ArmP
   const cv::Point2d s = predicted.shoulder;
   std::vector<double> total(static_cast<std::size_t>(nu * nb), -4.0);
   int best = -1;
-  const EvidenceMap::Sampler map(evidence);
+  const PairSampler map(evidence);
   const Steps upper_steps = StepsOf(shape.upper_px, kUpperFrom, kUpperTo, false);
   const Steps fore_steps = StepsOf(shape.fore_px, kForeFrom, ForeTo(shape), false);
   for (int i = 0; i < nu; ++i) {
@@ -213,7 +264,7 @@ std::vector<FitResult> FitAnywhere(const EvidenceMap& evidence, const ArmShape& 
   const int nu = static_cast<int>(360 / kWideUpperStep);
   const int nb = 2 * static_cast<int>(kMaxBendDeg / kWideBendStep) + 1;
   std::vector<double> total(static_cast<std::size_t>(nu * nb));
-  const EvidenceMap::Sampler map(evidence);
+  const PairSampler map(evidence);
   const Steps upper_steps = StepsOf(shape.upper_px, kUpperFrom, kUpperTo, true);
   const Steps fore_steps = StepsOf(shape.fore_px, kForeFrom, ForeTo(shape), true);
   // The grid's directions are whole degrees (whole steps from whole degrees).
@@ -277,7 +328,7 @@ double ForeRivalScore(const EvidenceMap& evidence, const ArmShape& shape, const 
   const ArmJoints j = JointsOf(pose, shape);
   const double bend0 = AngleDiff(pose.fore_deg, pose.upper_deg);
   double best = -2;
-  const EvidenceMap::Sampler map(evidence);
+  const PairSampler map(evidence);
   const Steps steps = StepsOf(shape.fore_px, kForeFrom, 1, false);
   for (double bend = -kMaxBendDeg; bend <= kMaxBendDeg; bend += kStepDeg) {
     if (std::abs(bend - bend0) < apart_deg) continue;
