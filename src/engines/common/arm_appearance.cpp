@@ -344,14 +344,8 @@ void EvidenceMap::Compute(const cv::Mat& bgr, const LearntBackground& background
     const cv::Vec3b* in = relit_.ptr<cv::Vec3b>(y);
     const float* d = dist.ptr<float>(y);
     float* out = map_.ptr<float>(y);
-    for (int x = 0; x < region_.width; ++x) {
-      const float p = table[ColourModel::Index(in[x])];
-      if (d[x] < 0) {
-        out[x] = kUnknownShare * p;
-      } else {
-        out[x] = p * std::clamp((d[x] - lowf) * inv, 0.f, 1.f);
-      }
-    }
+    for (int x = 0; x < region_.width; ++x) out[x] = table[ColourModel::Index(in[x])];
+    EvidenceRow(d, out, region_.width, lowf, inv, kUnknownShare);
   }
 }
 

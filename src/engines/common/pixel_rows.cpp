@@ -71,4 +71,26 @@ void SquaredOutsideRow(const std::uint8_t* in, const float* lo, const float* hi,
   }
 }
 
+void EvidenceRow(const float* d, float* p, int n, float low, float inv, float unknown_share) {
+  int i = 0;
+#if defined(__SSE2__)
+  // std::clamp(v, 0, 1) is std::min(std::max(v, 0), 1); maxps(0, v) and minps(1, v) return v
+  // exactly where std::max(v, 0) and std::min(v, 1) do (NaNs and zeros of either sign included).
+  const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.f);
+  const __m128 low4 = _mm_set1_ps(low), inv4 = _mm_set1_ps(inv);
+  const __m128 share = _mm_set1_ps(unknown_share);
+  for (; i + 4 <= n; i += 4) {
+    const __m128 dv = _mm_loadu_ps(d + i), pv = _mm_loadu_ps(p + i);
+    const __m128 v = _mm_mul_ps(_mm_sub_ps(dv, low4), inv4);
+    const __m128 seen = _mm_mul_ps(pv, _mm_min_ps(one, _mm_max_ps(zero, v)));
+    const __m128 unknown = _mm_cmplt_ps(dv, zero);
+    _mm_storeu_ps(
+        p + i, _mm_or_ps(_mm_and_ps(unknown, _mm_mul_ps(share, pv)), _mm_andnot_ps(unknown, seen)));
+  }
+#endif
+  for (; i < n; ++i) {
+    p[i] = d[i] < 0 ? unknown_share * p[i] : p[i] * std::clamp((d[i] - low) * inv, 0.f, 1.f);
+  }
+}
+
 }  // namespace armmimic::arm

@@ -14,4 +14,9 @@ void DivideRow(const std::uint8_t* in, const float* gain, std::uint8_t* out, int
 // for i < n.
 void SquaredOutsideRow(const std::uint8_t* in, const float* lo, const float* hi, float* out, int n);
 
+// The evidence from each pixel's colour probability `p[i]` (overwritten) and its change `d[i]`
+// (< 0: the background is unknown there), for i < n:
+//   p[i] = d[i] < 0 ? unknown_share * p[i] : p[i] * std::clamp((d[i] - low) * inv, 0.f, 1.f).
+void EvidenceRow(const float* d, float* p, int n, float low, float inv, float unknown_share);
+
 }  // namespace armmimic::arm

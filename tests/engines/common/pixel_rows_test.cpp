@@ -79,5 +79,28 @@ TEST(PixelRowsTest, SquaredOutsideRowEqualsTheBranchingDistance) {
   }
 }
 
+TEST(PixelRowsTest, EvidenceRowEqualsTheBranchingExpression) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> change(-1.f, 60.f), prob(0.f, 1.f);
+  const float low = 9.5f, inv = 1.f / 12.f, share = 0.6f;
+  for (int n = 0; n <= 40; ++n) {
+    for (int trial = 0; trial < 20; ++trial) {
+      std::vector<float> d(n), p(n);
+      for (int i = 0; i < n; ++i) {
+        d[i] = i % 5 == 0 ? -1.f : (i % 7 == 0 ? low : change(rng));  // unknown; on the bound
+        p[i] = prob(rng);
+      }
+      std::vector<float> out = p;
+      EvidenceRow(d.data(), out.data(), n, low, inv, share);
+      for (int i = 0; i < n; ++i) {
+        const float want =
+            d[i] < 0 ? share * p[i] : p[i] * std::clamp((d[i] - low) * inv, 0.f, 1.f);
+        ASSERT_EQ(std::memcmp(&out[i], &want, sizeof want), 0)
+            << "n " << n << " i " << i << " got " << out[i] << " want " << want;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace armmimic::arm
