@@ -2,15 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <type_traits>
 
 #include "armmimic/core/angles.h"
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
+#include "common/pair_sampler.h"
 
 namespace armmimic::arm {
 namespace {
+
+using pairs::Add;
+using pairs::Pair;
+using pairs::PairOf;
+using pairs::PairSampler;
+using pairs::Scale;
+using pairs::X;
+using pairs::Y;
 
 // The strips: the upper arm from just past the shoulder (where it merges with the body) to the
 // elbow; the forearm from just past the elbow through the hand.
@@ -60,55 +67,6 @@ ArmJoints JointsOf(const ArmPose& pose, const ArmShape& shape) {
 
 namespace {
 
-// A point's two coordinates, added and scaled as a pair where the processor has SSE2 (the same
-// IEEE operations on each coordinate), and the evidence sampled there.
-#if defined(__SSE2__)
-using Pair = __m128d;
-inline Pair PairOf(const cv::Point2d& p) { return _mm_set_pd(p.y, p.x); }
-inline Pair Add(Pair a, Pair b) { return _mm_add_pd(a, b); }
-inline Pair Scale(double t, Pair a) { return _mm_mul_pd(_mm_set1_pd(t), a); }
-inline double X(Pair p) { return _mm_cvtsd_f64(p); }
-inline double Y(Pair p) { return _mm_cvtsd_f64(_mm_unpackhi_pd(p, p)); }
-
-// EvidenceMap::Sampler::At(X(q), Y(q)), to the bit.
-class PairSampler {
- public:
-  explicit PairSampler(const EvidenceMap& evidence)
-      : map_(evidence),
-        origin_(_mm_set_pd(map_.y0(), map_.x0())),
-        limit_(_mm_set_pd(map_.rows_m1(), map_.cols_m1())) {}
-  float At(Pair q) const {
-    const __m128d f = _mm_sub_pd(q, origin_);
-    const __m128d in = _mm_and_pd(_mm_cmpge_pd(f, _mm_setzero_pd()), _mm_cmplt_pd(f, limit_));
-    if (_mm_movemask_pd(in) != 3) return 0.f;
-    const __m128i i = _mm_cvttpd_epi32(f);
-    const __m128 a = _mm_cvtpd_ps(_mm_sub_pd(f, _mm_cvtepi32_pd(i)));
-    return map_.Blend(_mm_cvtsi128_si32(i), _mm_cvtsi128_si32(_mm_shuffle_epi32(i, 1)),
-                      _mm_cvtss_f32(a), _mm_cvtss_f32(_mm_shuffle_ps(a, a, 1)));
-  }
-
- private:
-  EvidenceMap::Sampler map_;
-  __m128d origin_, limit_;
-};
-#else
-using Pair = cv::Point2d;
-inline Pair PairOf(const cv::Point2d& p) { return p; }
-inline Pair Add(const Pair& a, const Pair& b) { return a + b; }
-inline Pair Scale(double t, const Pair& a) { return t * a; }
-inline double X(const Pair& p) { return p.x; }
-inline double Y(const Pair& p) { return p.y; }
-
-class PairSampler {
- public:
-  explicit PairSampler(const EvidenceMap& evidence) : map_(evidence) {}
-  float At(const Pair& q) const { return map_.At(q.x, q.y); }
-
- private:
-  EvidenceMap::Sampler map_;
-};
-#endif
-
 // A strip's steps along it, as distances from its start (pixels): the same in every direction,
 // so a search over directions takes them once.
 struct Steps {
@@ -127,12 +85,21 @@ Steps StepsOf(double length_px, double t0, double t1, bool coarse) {
   return s;
 }
 
-// ScoreSegment with its steps and its direction's unit vector `u` given.
-SegmentScore ScoreStrip(const PairSampler& map, const Steps& steps, const cv::Point2d& from_px,
-                        const cv::Point2d& u, double hw_px, const cv::Point2d& avoid_a = {},
-                        const cv::Point2d& avoid_b = {}, double avoid_hw_px = 0) {
-  SegmentScore out;
-  if (steps.along == 0) return out;
+// Evidence samples lie in [0, 1] (probabilities times shares, blended): a bound a little above,
+// and a margin far above the rounding of the sums, for a score that can no longer be reached.
+constexpr double kMostSample = 1.001, kReachMargin = 1e-6;
+
+// ScoreSegment with its steps and its direction's unit vector `u` given, into *out. With
+// kMayGiveUp, it gives up (false, *out unset) once the score can no longer reach `at_least`:
+// every fourth step, the samples still to take counted at their most inside the strip and at
+// their least on the flanks.
+template <bool kMayGiveUp>
+bool ScoreStripUnless(const PairSampler& map, const Steps& steps, const cv::Point2d& from_px,
+                      const cv::Point2d& u, double hw_px, const cv::Point2d& avoid_a,
+                      const cv::Point2d& avoid_b, double avoid_hw_px, double at_least,
+                      SegmentScore* out) {
+  *out = SegmentScore();
+  if (steps.along == 0) return true;
   const cv::Point2d n(-u.y, u.x);
   static constexpr double kFine[4] = {-0.6, -0.2, 0.2, 0.6};
   static constexpr double kCoarse[2] = {-0.4, 0.4};
@@ -169,9 +136,27 @@ SegmentScore ScoreStrip(const PairSampler& map, const Steps& steps, const cv::Po
       flanks += map.At(q);
       ++n_flank;
     }
+    if constexpr (kMayGiveUp) {
+      const int left = steps.along - 1 - k;
+      if ((k & 3) == 3 && left > 0) {
+        const double most_inside =
+            (inside + left * n_across * kMostSample) / (steps.along * n_across);
+        const int most_flank = n_flank + 2 * left;
+        const double least_flank = flanks / most_flank;
+        if (most_inside - least_flank < at_least - kReachMargin) return false;
+      }
+    }
   }
-  out.inside = inside / (steps.along * n_across);
-  out.score = out.inside - (n_flank > 0 ? flanks / n_flank : 0.0);
+  out->inside = inside / (steps.along * n_across);
+  out->score = out->inside - (n_flank > 0 ? flanks / n_flank : 0.0);
+  return true;
+}
+
+SegmentScore ScoreStrip(const PairSampler& map, const Steps& steps, const cv::Point2d& from_px,
+                        const cv::Point2d& u, double hw_px, const cv::Point2d& avoid_a = {},
+                        const cv::Point2d& avoid_b = {}, double avoid_hw_px = 0) {
+  SegmentScore out;
+  ScoreStripUnless<false>(map, steps, from_px, u, hw_px, avoid_a, avoid_b, avoid_hw_px, 0, &out);
   return out;
 }
 
@@ -218,24 +203,48 @@ FitResult FitNear(const EvidenceMap& evidence, const ArmShape& shape, const ArmP
   const int nu = 2 * ru + 1, nb = 2 * rb + 1;
   const double bend0 = AngleDiff(predicted.fore_deg, predicted.upper_deg);
   const cv::Point2d s = predicted.shoulder;
-  std::vector<double> total(static_cast<std::size_t>(nu * nb), -4.0);
-  int best = -1;
   const PairSampler map(evidence);
   const Steps upper_steps = StepsOf(shape.upper_px, kUpperFrom, kUpperTo, false);
   const Steps fore_steps = StepsOf(shape.fore_px, kForeFrom, ForeTo(shape), false);
+  // Each row's upper arm, scored once.
+  std::vector<double> upper(static_cast<std::size_t>(nu));
+  std::vector<cv::Point2d> elbows(static_cast<std::size_t>(nu));
   for (int i = 0; i < nu; ++i) {
+    const cv::Point2d u = DirectionVector(predicted.upper_deg + (i - ru));
+    upper[i] = ScoreStrip(map, upper_steps, s, u, shape.upper_hw).score;
+    elbows[i] = s + shape.upper_px * u;
+  }
+  // A cell's total; with kMayGiveUp, kGaveUp once it can no longer reach `bar`.
+  constexpr double kSkipped = -4, kGaveUp = -3;  // below any total (-2..2)
+  auto cell = [&](auto may_give_up, int i, int j, double bar) {
     const double up = predicted.upper_deg + (i - ru);
-    const cv::Point2d u = DirectionVector(up);
-    const SegmentScore su = ScoreStrip(map, upper_steps, s, u, shape.upper_hw);
-    const cv::Point2d elbow = s + shape.upper_px * u;
+    const double bend = bend0 + (j - rb);
+    if (std::abs(bend) > kMaxBendDeg) return kSkipped;
+    SegmentScore sf;
+    const cv::Point2d& elbow = elbows[i];
+    if (!ScoreStripUnless<decltype(may_give_up)::value>(
+            map, fore_steps, elbow, DirectionVector(up + bend), shape.fore_hw, s, elbow,
+            shape.upper_hw + 1, bar - upper[i], &sf)) {
+      return kGaveUp;
+    }
+    return upper[i] + sf.score;
+  };
+  using Exact = std::false_type;
+  using MayGiveUp = std::true_type;
+  // The predicted pose first: the best total reaches at least its own, so a cell that can no
+  // longer reach the best so far is given up (it is neither the best nor tied with it).
+  std::vector<double> total(static_cast<std::size_t>(nu * nb), kSkipped);
+  const int centre = ru * nb + rb;
+  total[centre] = cell(Exact(), ru, rb, 0);
+  double bar = total[centre] > kSkipped ? total[centre] : -std::numeric_limits<double>::infinity();
+  int best = -1;
+  for (int i = 0; i < nu; ++i) {
     for (int j = 0; j < nb; ++j) {
-      const double bend = bend0 + (j - rb);
-      if (std::abs(bend) > kMaxBendDeg) continue;
-      const SegmentScore sf = ScoreStrip(map, fore_steps, elbow, DirectionVector(up + bend),
-                                         shape.fore_hw, s, elbow, shape.upper_hw + 1);
       const int k = i * nb + j;
-      total[k] = su.score + sf.score;
+      if (k != centre) total[k] = cell(MayGiveUp(), i, j, bar);
+      if (total[k] <= kGaveUp) continue;
       if (best < 0 || total[k] > total[best]) best = k;
+      bar = std::max(bar, total[k]);
     }
   }
   FitResult r;
@@ -246,11 +255,16 @@ FitResult FitNear(const EvidenceMap& evidence, const ArmShape& shape, const ArmP
   }
   const int bi = best / nb, bj = best % nb;
   double di = bi - ru, dj = bj - rb;
-  auto at = [&](int i, int j) { return total[static_cast<std::size_t>(i * nb + j)]; };
-  if (bi > 0 && bi < nu - 1 && at(bi - 1, bj) > -4 && at(bi + 1, bj) > -4) {
+  // A neighbour of the best that was given up is scored in full.
+  auto at = [&](int i, int j) {
+    double& t = total[static_cast<std::size_t>(i * nb + j)];
+    if (t == kGaveUp) t = cell(Exact(), i, j, 0);
+    return t;
+  };
+  if (bi > 0 && bi < nu - 1 && at(bi - 1, bj) > kSkipped && at(bi + 1, bj) > kSkipped) {
     di += ParabolaPeak(at(bi - 1, bj), at(bi, bj), at(bi + 1, bj));
   }
-  if (bj > 0 && bj < nb - 1 && at(bi, bj - 1) > -4 && at(bi, bj + 1) > -4) {
+  if (bj > 0 && bj < nb - 1 && at(bi, bj - 1) > kSkipped && at(bi, bj + 1) > kSkipped) {
     dj += ParabolaPeak(at(bi, bj - 1), at(bi, bj), at(bi, bj + 1));
   }
   r.pose.upper_deg = Wrap180(predicted.upper_deg + di);
