@@ -105,14 +105,16 @@ ArmFitter::Ray ArmFitter::MakeRay(int stride, int deg, double t0, double t1, dou
   Ray ray;
   // Lines along the segment across most of its width: a ray off the arm's axis loses its outer
   // samples, so a straight arm is fitted along its axis and not bent within its own thickness.
-  std::vector<double> across{0};
-  if (half_width >= 2)
-    across = {-kAcrossOuter * half_width, -kAcrossInner * half_width, 0, kAcrossInner * half_width,
-              kAcrossOuter * half_width};
+  const bool wide = half_width >= 2;
+  const double across[5] = {-kAcrossOuter * half_width, -kAcrossInner * half_width, 0,
+                            kAcrossInner * half_width, kAcrossOuter * half_width};
+  const double* first = wide ? across : across + 2;
+  const int n_across = wide ? 5 : 1;
   const cv::Point2d d = DirectionVector(deg), n(-d.y, d.x);
+  if (t1 >= t0) ray.offsets.reserve(static_cast<std::size_t>(n_across * (t1 - t0 + 2)));
   for (double t = t0; t <= t1; t += 1.0) {
-    for (double a : across) {
-      const cv::Point2d p = d * t + n * a;
+    for (int k = 0; k < n_across; ++k) {
+      const cv::Point2d p = d * t + n * first[k];
       ray.offsets.push_back(cvRound(p.y) * stride + cvRound(p.x));
     }
   }
@@ -247,9 +249,15 @@ void ArmFitter::Count(const cv::Mat& weights, int from, int deg, const std::vect
 const cv::Mat& ArmFitter::WithoutUpper(const cv::Mat& weights, const cv::Point& origin, int deg,
                                        double len) const {
   // The buffer holds `weights` (copied once per Fit) but for the last cleared line, whose
-  // surroundings are copied back: a whole copy per call was a tenth of the engine's time.
-  if (cleared_.area() > 0) weights(cleared_).copyTo(without_upper_(cleared_));
+  // surroundings are copied back: a whole copy per call was a tenth of the engine's time. The
+  // same line again (a length that rounds to the same elbow) leaves it as it is.
   const cv::Point elbow = cv::Point2d(origin) + DirectionVector(deg) * len;
+  if (cleared_.area() > 0 && origin == cleared_from_ && elbow == cleared_to_) {
+    return without_upper_;
+  }
+  if (cleared_.area() > 0) weights(cleared_).copyTo(without_upper_(cleared_));
+  cleared_from_ = origin;
+  cleared_to_ = elbow;
   const int thickness = 2 * static_cast<int>(half_width_) + 1;
   cv::line(without_upper_, origin, elbow, cv::Scalar(0), thickness);
   const int margin = thickness + 2;  // more than the line's half-width and its round caps
