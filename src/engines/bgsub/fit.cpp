@@ -296,18 +296,43 @@ void ArmFitter::RefineScale(const cv::Mat& weights, const cv::Point& origin, Arm
   const double hw = half_width_;
   int best_score = std::numeric_limits<int>::min();
   double best_scale = fit->scale;
+  // A yaw's ray that starts where the full length's starts (the segment long enough against its
+  // width) is that ray's first samples: counted off it, not made again; the upper arm's sums are
+  // taken once.
+  const double upper_t0 = std::min(hw, 0.5 * upper_len_),
+               fore_t0 = std::min(0.5 * hw, 0.5 * fore_len_);
+  const Ray upper_full = MakeRay(stride_, u, upper_t0, upper_len_, hw);
+  const Ray fore_full = MakeRay(stride_, f, fore_t0, fore_len_, hw);
+  const int lines = hw >= 2 ? 5 : 1;  // MakeRay's lines across
+  auto samples = [lines](double t0, double t1) {
+    int n = 0;
+    for (double t = t0; t <= t1; t += 1.0) ++n;  // MakeRay's steps
+    return static_cast<std::size_t>(lines * n);
+  };
+  const schar* w = weights.ptr<schar>();
+  std::vector<int> upper_sums(upper_full.offsets.size() + 1, 0);
+  for (std::size_t i = 0; i < upper_full.offsets.size(); ++i) {
+    upper_sums[i + 1] = upper_sums[i] + w[from + upper_full.offsets[i]];
+  }
   for (int yaw = 0; yaw <= kMaxYawDeg; ++yaw) {
     const double scale = std::cos(RadFromDeg(yaw));
     const double ul = scale * upper_len_, fl = scale * fore_len_;
-    const Ray upper = MakeRay(stride_, u, std::min(hw, 0.5 * ul), ul, hw);
-    const Ray fore = MakeRay(stride_, f, std::min(0.5 * hw, 0.5 * fl), fl, hw);
+    const double ut0 = std::min(hw, 0.5 * ul), ft0 = std::min(0.5 * hw, 0.5 * fl);
     const cv::Point2d e = DirectionVector(u) * ul;
     const int elbow = from + cvRound(e.y) * stride_ + cvRound(e.x);
-    const schar* w = weights.ptr<schar>();
     const schar* wr = WithoutUpper(weights, origin, u, ul).ptr<schar>();
     int score = 0;
-    for (int off : upper.offsets) score += w[from + off];
-    for (int off : fore.offsets) score += wr[elbow + off];
+    if (ut0 == upper_t0) {
+      score += upper_sums[samples(ut0, ul)];
+    } else {
+      for (int off : MakeRay(stride_, u, ut0, ul, hw).offsets) score += w[from + off];
+    }
+    if (ft0 == fore_t0) {
+      const std::size_t n = samples(ft0, fl);
+      for (std::size_t i = 0; i < n; ++i) score += wr[elbow + fore_full.offsets[i]];
+    } else {
+      for (int off : MakeRay(stride_, f, ft0, fl, hw).offsets) score += wr[elbow + off];
+    }
     if (score > best_score) {
       best_score = score;
       best_scale = scale;
