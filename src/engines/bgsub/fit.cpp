@@ -105,14 +105,16 @@ ArmFitter::Ray ArmFitter::MakeRay(int stride, int deg, double t0, double t1, dou
   Ray ray;
   // Lines along the segment across most of its width: a ray off the arm's axis loses its outer
   // samples, so a straight arm is fitted along its axis and not bent within its own thickness.
-  std::vector<double> across{0};
-  if (half_width >= 2)
-    across = {-kAcrossOuter * half_width, -kAcrossInner * half_width, 0, kAcrossInner * half_width,
-              kAcrossOuter * half_width};
+  const bool wide = half_width >= 2;
+  const double across[5] = {-kAcrossOuter * half_width, -kAcrossInner * half_width, 0,
+                            kAcrossInner * half_width, kAcrossOuter * half_width};
+  const double* first = wide ? across : across + 2;
+  const int n_across = wide ? 5 : 1;
   const cv::Point2d d = DirectionVector(deg), n(-d.y, d.x);
+  if (t1 >= t0) ray.offsets.reserve(static_cast<std::size_t>(n_across * (t1 - t0 + 2)));
   for (double t = t0; t <= t1; t += 1.0) {
-    for (double a : across) {
-      const cv::Point2d p = d * t + n * a;
+    for (int k = 0; k < n_across; ++k) {
+      const cv::Point2d p = d * t + n * first[k];
       ray.offsets.push_back(cvRound(p.y) * stride + cvRound(p.x));
     }
   }
@@ -218,9 +220,20 @@ void ArmFitter::ScoreUppers(const cv::Mat& weights, int from) const {
 int ArmFitter::Score(const cv::Mat& weights, int from, int deg,
                      const std::vector<Ray>& rays) const {
   const schar* w = weights.ptr<schar>() + from;
-  int sum = 0;
-  for (int off : rays[static_cast<std::size_t>(Wrap360(deg))].offsets) sum += w[off];
-  return sum;
+  const std::vector<int>& offsets = rays[static_cast<std::size_t>(Wrap360(deg))].offsets;
+  // Four running sums (integers: the order does not matter), so the loads overlap.
+  const int* off = offsets.data();
+  const std::size_t n = offsets.size();
+  int s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4) {
+    s0 += w[off[i]];
+    s1 += w[off[i + 1]];
+    s2 += w[off[i + 2]];
+    s3 += w[off[i + 3]];
+  }
+  for (; i < n; ++i) s0 += w[off[i]];
+  return (s0 + s1) + (s2 + s3);
 }
 
 void ArmFitter::Count(const cv::Mat& weights, int from, int deg, const std::vector<Ray>& rays,
@@ -236,9 +249,15 @@ void ArmFitter::Count(const cv::Mat& weights, int from, int deg, const std::vect
 const cv::Mat& ArmFitter::WithoutUpper(const cv::Mat& weights, const cv::Point& origin, int deg,
                                        double len) const {
   // The buffer holds `weights` (copied once per Fit) but for the last cleared line, whose
-  // surroundings are copied back: a whole copy per call was a tenth of the engine's time.
-  if (cleared_.area() > 0) weights(cleared_).copyTo(without_upper_(cleared_));
+  // surroundings are copied back: a whole copy per call was a tenth of the engine's time. The
+  // same line again (a length that rounds to the same elbow) leaves it as it is.
   const cv::Point elbow = cv::Point2d(origin) + DirectionVector(deg) * len;
+  if (cleared_.area() > 0 && origin == cleared_from_ && elbow == cleared_to_) {
+    return without_upper_;
+  }
+  if (cleared_.area() > 0) weights(cleared_).copyTo(without_upper_(cleared_));
+  cleared_from_ = origin;
+  cleared_to_ = elbow;
   const int thickness = 2 * static_cast<int>(half_width_) + 1;
   cv::line(without_upper_, origin, elbow, cv::Scalar(0), thickness);
   const int margin = thickness + 2;  // more than the line's half-width and its round caps
@@ -277,18 +296,43 @@ void ArmFitter::RefineScale(const cv::Mat& weights, const cv::Point& origin, Arm
   const double hw = half_width_;
   int best_score = std::numeric_limits<int>::min();
   double best_scale = fit->scale;
+  // A yaw's ray that starts where the full length's starts (the segment long enough against its
+  // width) is that ray's first samples: counted off it, not made again; the upper arm's sums are
+  // taken once.
+  const double upper_t0 = std::min(hw, 0.5 * upper_len_),
+               fore_t0 = std::min(0.5 * hw, 0.5 * fore_len_);
+  const Ray upper_full = MakeRay(stride_, u, upper_t0, upper_len_, hw);
+  const Ray fore_full = MakeRay(stride_, f, fore_t0, fore_len_, hw);
+  const int lines = hw >= 2 ? 5 : 1;  // MakeRay's lines across
+  auto samples = [lines](double t0, double t1) {
+    int n = 0;
+    for (double t = t0; t <= t1; t += 1.0) ++n;  // MakeRay's steps
+    return static_cast<std::size_t>(lines * n);
+  };
+  const schar* w = weights.ptr<schar>();
+  std::vector<int> upper_sums(upper_full.offsets.size() + 1, 0);
+  for (std::size_t i = 0; i < upper_full.offsets.size(); ++i) {
+    upper_sums[i + 1] = upper_sums[i] + w[from + upper_full.offsets[i]];
+  }
   for (int yaw = 0; yaw <= kMaxYawDeg; ++yaw) {
     const double scale = std::cos(RadFromDeg(yaw));
     const double ul = scale * upper_len_, fl = scale * fore_len_;
-    const Ray upper = MakeRay(stride_, u, std::min(hw, 0.5 * ul), ul, hw);
-    const Ray fore = MakeRay(stride_, f, std::min(0.5 * hw, 0.5 * fl), fl, hw);
+    const double ut0 = std::min(hw, 0.5 * ul), ft0 = std::min(0.5 * hw, 0.5 * fl);
     const cv::Point2d e = DirectionVector(u) * ul;
     const int elbow = from + cvRound(e.y) * stride_ + cvRound(e.x);
-    const schar* w = weights.ptr<schar>();
     const schar* wr = WithoutUpper(weights, origin, u, ul).ptr<schar>();
     int score = 0;
-    for (int off : upper.offsets) score += w[from + off];
-    for (int off : fore.offsets) score += wr[elbow + off];
+    if (ut0 == upper_t0) {
+      score += upper_sums[samples(ut0, ul)];
+    } else {
+      for (int off : MakeRay(stride_, u, ut0, ul, hw).offsets) score += w[from + off];
+    }
+    if (ft0 == fore_t0) {
+      const std::size_t n = samples(ft0, fl);
+      for (std::size_t i = 0; i < n; ++i) score += wr[elbow + fore_full.offsets[i]];
+    } else {
+      for (int off : MakeRay(stride_, f, ft0, fl, hw).offsets) score += wr[elbow + off];
+    }
     if (score > best_score) {
       best_score = score;
       best_scale = scale;

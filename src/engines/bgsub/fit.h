@@ -102,6 +102,7 @@ class ArmFitter {
   double upper_len_ = 0, fore_len_ = 0, half_width_ = 0;
   mutable cv::Mat without_upper_;  // WithoutUpper's buffer: Fit's weights but for `cleared_`
   mutable cv::Rect cleared_;       // around the line WithoutUpper cleared last
+  mutable cv::Point cleared_from_, cleared_to_;         // that line's ends
   mutable std::vector<std::vector<int>> upper_scores_;  // ScoreUppers' result, per lengths_
   std::vector<Lengths> lengths_;  // the calibrated lengths first, then shorter ones
 };

@@ -8,6 +8,7 @@
 #include "armmimic/core/angles.h"
 #include "common/light_gain.h"
 #include "common/order_statistic.h"
+#include "common/pixel_rows.h"
 
 namespace armmimic::arm {
 namespace {
@@ -297,9 +298,7 @@ void EvidenceMap::Compute(const cv::Mat& bgr, const LearntBackground& background
     const cv::Vec3b* in = bgr.ptr<cv::Vec3b>(y + region_.y) + region_.x;
     cv::Vec3b* px = relit_.ptr<cv::Vec3b>(y);
     const cv::Vec3f* g = gain.ptr<cv::Vec3f>(y);
-    for (int x = 0; x < region_.width; ++x) {
-      for (int c = 0; c < 3; ++c) px[x][c] = cv::saturate_cast<uchar>(in[x][c] / g[x][c]);
-    }
+    DivideRow(in[0].val, g[0].val, px[0].val, 3 * region_.width);
   }
   const cv::Mat b = background.image()(region_);
   const cv::Mat kernel = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3));
@@ -307,10 +306,12 @@ void EvidenceMap::Compute(const cv::Mat& bgr, const LearntBackground& background
   cv::dilate(b, high_, kernel);
   // The distance of every pixel from its background neighbourhood; the background pixels' own
   // distances (away from the arm) set how much change is noise in this frame.
-  cv::Mat dist(region_.size(), CV_32F);
+  dist_.create(region_.size(), CV_32F);
+  cv::Mat& dist = dist_;
   // The noise below is max(kMinChange, a quantile of the sampled distances): only the distances
   // above kMinChange can move it, so only they are kept, and the rest counted.
   distances_.clear();
+  squares_.resize(static_cast<std::size_t>(3 * region_.width));
   std::size_t sampled = 0;
   for (int y = 0; y < region_.height; ++y) {
     const cv::Vec3b* in = relit_.ptr<cv::Vec3b>(y);
@@ -319,18 +320,15 @@ void EvidenceMap::Compute(const cv::Mat& bgr, const LearntBackground& background
     const uchar* known = background.known().ptr<uchar>(y + region_.y) + region_.x;
     const uchar* ign = ignore.empty() ? nullptr : ignore.ptr<uchar>(y + region_.y) + region_.x;
     float* d = dist.ptr<float>(y);
+    // Each channel's squared distance from its background neighbourhood, the row at once.
+    float* sq = squares_.data();
+    SquaredOutsideRow(in[0].val, lo[0].val, hi[0].val, sq, 3 * region_.width);
     for (int x = 0; x < region_.width; ++x) {
       if (!known[x]) {
         d[x] = -1;
         continue;
       }
-      float s = 0;
-      for (int c = 0; c < 3; ++c) {
-        const float v = in[x][c];
-        const float e = v < lo[x][c] ? lo[x][c] - v : (v > hi[x][c] ? v - hi[x][c] : 0.f);
-        s += e * e;
-      }
-      d[x] = std::sqrt(s);
+      d[x] = std::sqrt(sq[3 * x] + sq[3 * x + 1] + sq[3 * x + 2]);
       if ((x & 1) == 0 && (y & 1) == 0 && !(ign && ign[x])) {
         ++sampled;
         if (d[x] > kMinChange) distances_.push_back(d[x]);
@@ -346,14 +344,8 @@ void EvidenceMap::Compute(const cv::Mat& bgr, const LearntBackground& background
     const cv::Vec3b* in = relit_.ptr<cv::Vec3b>(y);
     const float* d = dist.ptr<float>(y);
     float* out = map_.ptr<float>(y);
-    for (int x = 0; x < region_.width; ++x) {
-      const float p = table[ColourModel::Index(in[x])];
-      if (d[x] < 0) {
-        out[x] = kUnknownShare * p;
-      } else {
-        out[x] = p * std::clamp((d[x] - lowf) * inv, 0.f, 1.f);
-      }
-    }
+    for (int x = 0; x < region_.width; ++x) out[x] = table[ColourModel::Index(in[x])];
+    EvidenceRow(d, out, region_.width, lowf, inv, kUnknownShare);
   }
 }
 

@@ -112,15 +112,45 @@ class EvidenceMap {
   // arm's last known place).
   void Compute(const cv::Mat& bgr, const LearntBackground& background, const ColourModel& colour,
                const cv::Rect& region, const cv::Mat& ignore);
+  // What At reads, held in a few plain values, for a loop that samples many times.
+  class Sampler {
+   public:
+    explicit Sampler(const EvidenceMap& e)
+        : data_(e.map_.empty() ? nullptr : e.map_.ptr<float>(0)),
+          step_(e.map_.step1()),
+          x0_(e.region_.x),
+          y0_(e.region_.y),
+          cols_m1_(e.cols_m1_),
+          rows_m1_(e.rows_m1_) {}
+    // Bilinear sample at a frame position; `outside` beyond the region.
+    float At(double x, double y, float outside = 0.f) const {
+      const double fx = x - x0_, fy = y - y0_;
+      if (!(fx >= 0 && fy >= 0 && fx < cols_m1_ && fy < rows_m1_)) return outside;
+      const int ix = static_cast<int>(fx), iy = static_cast<int>(fy);
+      return Blend(ix, iy, static_cast<float>(fx - ix), static_cast<float>(fy - iy));
+    }
+    // The blend of the map's pixels (ix, iy) to (ix + 1, iy + 1), weighted by the position's
+    // fractions `ax` and `ay` past them.
+    float Blend(int ix, int iy, float ax, float ay) const {
+      const float* r0 = data_ + step_ * static_cast<std::size_t>(iy) + ix;
+      const float* r1 = r0 + step_;
+      return (1 - ay) * ((1 - ax) * r0[0] + ax * r0[1]) + ay * ((1 - ax) * r1[0] + ax * r1[1]);
+    }
+    // The region's top-left corner (frame pixels) and its last columns' and rows' start: At
+    // samples where x - x0() lies in [0, cols_m1()) and y - y0() in [0, rows_m1()).
+    double x0() const { return x0_; }
+    double y0() const { return y0_; }
+    double cols_m1() const { return cols_m1_; }
+    double rows_m1() const { return rows_m1_; }
+
+   private:
+    const float* data_;
+    std::size_t step_;  // floats a row
+    double x0_, y0_, cols_m1_, rows_m1_;
+  };
   // Bilinear sample at a frame position; `outside` beyond the region.
   float At(double x, double y, float outside = 0.f) const {
-    const double fx = x - region_.x, fy = y - region_.y;
-    if (!(fx >= 0 && fy >= 0 && fx < cols_m1_ && fy < rows_m1_)) return outside;
-    const int ix = static_cast<int>(fx), iy = static_cast<int>(fy);
-    const float ax = static_cast<float>(fx - ix), ay = static_cast<float>(fy - iy);
-    const float* r0 = map_.ptr<float>(iy) + ix;
-    const float* r1 = map_.ptr<float>(iy + 1) + ix;
-    return (1 - ay) * ((1 - ax) * r0[0] + ax * r0[1]) + ay * ((1 - ax) * r1[0] + ax * r1[1]);
+    return Sampler(*this).At(x, y, outside);
   }
   const cv::Mat& map() const { return map_; }
   const cv::Rect& region() const { return region_; }
@@ -135,6 +165,8 @@ class EvidenceMap {
   cv::Mat low_, high_;  // the background's per-channel minimum and maximum over 3x3
   cv::Mat relit_;       // the region of the frame in the background's light
   std::vector<float> distances_;
+  cv::Mat dist_;                // CV_32F: each pixel's distance from the background
+  std::vector<float> squares_;  // one row's squared channel distances
 };
 
 }  // namespace armmimic::arm

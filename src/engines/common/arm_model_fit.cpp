@@ -2,11 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <type_traits>
 
 #include "armmimic/core/angles.h"
+#include "common/pair_sampler.h"
 
 namespace armmimic::arm {
 namespace {
+
+using pairs::Add;
+using pairs::Pair;
+using pairs::PairOf;
+using pairs::PairSampler;
+using pairs::Scale;
+using pairs::X;
+using pairs::Y;
 
 // The strips: the upper arm from just past the shoulder (where it merges with the body) to the
 // elbow; the forearm from just past the elbow through the hand.
@@ -54,43 +65,123 @@ ArmJoints JointsOf(const ArmPose& pose, const ArmShape& shape) {
   return j;
 }
 
+namespace {
+
+// A strip's steps along it, as distances from its start (pixels): the same in every direction,
+// so a search over directions takes them once.
+struct Steps {
+  int along = 0;  // 0: an empty strip
+  bool coarse = false;
+  double t[16] = {};
+};
+
+Steps StepsOf(double length_px, double t0, double t1, bool coarse) {
+  Steps s;
+  s.coarse = coarse;
+  const double span = (t1 - t0) * length_px;
+  if (!(span > 0)) return s;
+  s.along = coarse ? 6 : std::clamp(static_cast<int>(span / 2.5), 6, 16);
+  for (int k = 0; k < s.along; ++k) s.t[k] = (t0 + (t1 - t0) * (k + 0.5) / s.along) * length_px;
+  return s;
+}
+
+// Evidence samples lie in [0, 1] (probabilities times shares, blended): a bound a little above,
+// and a margin far above the rounding of the sums, for a score that can no longer be reached.
+constexpr double kMostSample = 1.001, kReachMargin = 1e-6;
+
+// ScoreSegment with its steps and its direction's unit vector `u` given, into *out. With
+// kMayGiveUp, it gives up (false, *out unset) once the score can no longer reach `at_least`:
+// every fourth step, the samples still to take counted at their most inside the strip and at
+// their least on the flanks.
+template <bool kMayGiveUp>
+bool ScoreStripUnless(const PairSampler& map, const Steps& steps, const cv::Point2d& from_px,
+                      const cv::Point2d& u, double hw_px, const cv::Point2d& avoid_a,
+                      const cv::Point2d& avoid_b, double avoid_hw_px, double at_least,
+                      SegmentScore* out) {
+  *out = SegmentScore();
+  if (steps.along == 0) return true;
+  const cv::Point2d n(-u.y, u.x);
+  static constexpr double kFine[4] = {-0.6, -0.2, 0.2, 0.6};
+  static constexpr double kCoarse[2] = {-0.4, 0.4};
+  const double* across = steps.coarse ? kCoarse : kFine;
+  const int n_across = steps.coarse ? 2 : 4;
+  const double flank = hw_px + std::max(2.0, 0.75 * hw_px);
+  // The offsets across the strip and to its flanks, the same at every step along it.
+  Pair inner[4];
+  for (int a = 0; a < n_across; ++a) inner[a] = PairOf(across[a] * hw_px * n);
+  const Pair outer[2] = {PairOf(-1 * flank * n), PairOf(1 * flank * n)};
+  const Pair from = PairOf(from_px), along = PairOf(u);
+  // A flank sample farther than the avoided half-width beyond the avoided segment's bounding box
+  // on either axis is surely not within it (the margin is far above rounding): the exact
+  // distance is then not needed.
+  const bool avoid = avoid_hw_px > 0;
+  const double reach = avoid_hw_px + 1e-3;
+  const double box_x0 = std::min(avoid_a.x, avoid_b.x) - reach;
+  const double box_x1 = std::max(avoid_a.x, avoid_b.x) + reach;
+  const double box_y0 = std::min(avoid_a.y, avoid_b.y) - reach;
+  const double box_y1 = std::max(avoid_a.y, avoid_b.y) + reach;
+  const double avoid2 = avoid_hw_px * avoid_hw_px;
+  double inside = 0, flanks = 0;
+  int n_flank = 0;
+  for (int k = 0; k < steps.along; ++k) {
+    const Pair p = Add(from, Scale(steps.t[k], along));
+    for (int a = 0; a < n_across; ++a) inside += map.At(Add(p, inner[a]));
+    for (const Pair& side : outer) {
+      const Pair q = Add(p, side);
+      const double qx = X(q), qy = Y(q);
+      if (avoid && qx > box_x0 && qx < box_x1 && qy > box_y0 && qy < box_y1 &&
+          SquaredDistanceToSegment({qx, qy}, avoid_a, avoid_b) < avoid2) {
+        continue;
+      }
+      flanks += map.At(q);
+      ++n_flank;
+    }
+    if constexpr (kMayGiveUp) {
+      const int left = steps.along - 1 - k;
+      if ((k & 3) == 3 && left > 0) {
+        const double most_inside =
+            (inside + left * n_across * kMostSample) / (steps.along * n_across);
+        const int most_flank = n_flank + 2 * left;
+        const double least_flank = flanks / most_flank;
+        if (most_inside - least_flank < at_least - kReachMargin) return false;
+      }
+    }
+  }
+  out->inside = inside / (steps.along * n_across);
+  out->score = out->inside - (n_flank > 0 ? flanks / n_flank : 0.0);
+  return true;
+}
+
+SegmentScore ScoreStrip(const PairSampler& map, const Steps& steps, const cv::Point2d& from_px,
+                        const cv::Point2d& u, double hw_px, const cv::Point2d& avoid_a = {},
+                        const cv::Point2d& avoid_b = {}, double avoid_hw_px = 0) {
+  SegmentScore out;
+  ScoreStripUnless<false>(map, steps, from_px, u, hw_px, avoid_a, avoid_b, avoid_hw_px, 0, &out);
+  return out;
+}
+
+// DirectionVector of the whole degrees -kTableDeg..kTableDeg, computed once: the wide search's
+// directions are all whole degrees.
+constexpr int kTableDeg = 360;
+const cv::Point2d& WholeDegreeDirection(int deg) {
+  static const std::vector<cv::Point2d> table = [] {
+    std::vector<cv::Point2d> t(2 * kTableDeg + 1);
+    for (int d = -kTableDeg; d <= kTableDeg; ++d) t[d + kTableDeg] = DirectionVector(d);
+    return t;
+  }();
+  return table[static_cast<std::size_t>(deg + kTableDeg)];
+}
+
+}  // namespace
+
 SegmentScore ScoreSegment(const EvidenceMap& evidence, const cv::Point2d& from_px, double deg,
                           double length_px, double hw_px, double t0, double t1, bool coarse,
                           const cv::Point2d& avoid_a, const cv::Point2d& avoid_b,
                           double avoid_hw_px) {
-  SegmentScore out;
-  const double span = (t1 - t0) * length_px;
-  if (!(span > 0)) return out;
-  const cv::Point2d u = DirectionVector(deg), n(-u.y, u.x);
-  const int along = coarse ? 6 : std::clamp(static_cast<int>(span / 2.5), 6, 16);
-  static constexpr double kFine[4] = {-0.6, -0.2, 0.2, 0.6};
-  static constexpr double kCoarse[2] = {-0.4, 0.4};
-  const double* across = coarse ? kCoarse : kFine;
-  const int n_across = coarse ? 2 : 4;
-  const double flank = hw_px + std::max(2.0, 0.75 * hw_px);
-  double inside = 0, flanks = 0;
-  int n_inside = 0, n_flank = 0;
-  for (int k = 0; k < along; ++k) {
-    const double t = (t0 + (t1 - t0) * (k + 0.5) / along) * length_px;
-    const cv::Point2d p = from_px + t * u;
-    for (int a = 0; a < n_across; ++a) {
-      const cv::Point2d q = p + across[a] * hw_px * n;
-      inside += evidence.At(q.x, q.y);
-      ++n_inside;
-    }
-    for (int s = -1; s <= 1; s += 2) {
-      const cv::Point2d q = p + s * flank * n;
-      if (avoid_hw_px > 0 &&
-          SquaredDistanceToSegment(q, avoid_a, avoid_b) < avoid_hw_px * avoid_hw_px) {
-        continue;
-      }
-      flanks += evidence.At(q.x, q.y);
-      ++n_flank;
-    }
-  }
-  out.inside = inside / n_inside;
-  out.score = out.inside - (n_flank > 0 ? flanks / n_flank : 0.0);
-  return out;
+  const Steps steps = StepsOf(length_px, t0, t1, coarse);
+  if (steps.along == 0) return {};
+  return ScoreStrip(PairSampler(evidence), steps, from_px, DirectionVector(deg), hw_px, avoid_a,
+                    avoid_b, avoid_hw_px);
 }
 
 PoseScore ScorePose(const EvidenceMap& evidence, const ArmPose& pose, const ArmShape& shape,
@@ -112,22 +203,48 @@ FitResult FitNear(const EvidenceMap& evidence, const ArmShape& shape, const ArmP
   const int nu = 2 * ru + 1, nb = 2 * rb + 1;
   const double bend0 = AngleDiff(predicted.fore_deg, predicted.upper_deg);
   const cv::Point2d s = predicted.shoulder;
-  std::vector<double> total(static_cast<std::size_t>(nu * nb), -4.0);
+  const PairSampler map(evidence);
+  const Steps upper_steps = StepsOf(shape.upper_px, kUpperFrom, kUpperTo, false);
+  const Steps fore_steps = StepsOf(shape.fore_px, kForeFrom, ForeTo(shape), false);
+  // Each row's upper arm, scored once.
+  std::vector<double> upper(static_cast<std::size_t>(nu));
+  std::vector<cv::Point2d> elbows(static_cast<std::size_t>(nu));
+  for (int i = 0; i < nu; ++i) {
+    const cv::Point2d u = DirectionVector(predicted.upper_deg + (i - ru));
+    upper[i] = ScoreStrip(map, upper_steps, s, u, shape.upper_hw).score;
+    elbows[i] = s + shape.upper_px * u;
+  }
+  // A cell's total; with kMayGiveUp, kGaveUp once it can no longer reach `bar`.
+  constexpr double kSkipped = -4, kGaveUp = -3;  // below any total (-2..2)
+  auto cell = [&](auto may_give_up, int i, int j, double bar) {
+    const double up = predicted.upper_deg + (i - ru);
+    const double bend = bend0 + (j - rb);
+    if (std::abs(bend) > kMaxBendDeg) return kSkipped;
+    SegmentScore sf;
+    const cv::Point2d& elbow = elbows[i];
+    if (!ScoreStripUnless<decltype(may_give_up)::value>(
+            map, fore_steps, elbow, DirectionVector(up + bend), shape.fore_hw, s, elbow,
+            shape.upper_hw + 1, bar - upper[i], &sf)) {
+      return kGaveUp;
+    }
+    return upper[i] + sf.score;
+  };
+  using Exact = std::false_type;
+  using MayGiveUp = std::true_type;
+  // The predicted pose first: the best total reaches at least its own, so a cell that can no
+  // longer reach the best so far is given up (it is neither the best nor tied with it).
+  std::vector<double> total(static_cast<std::size_t>(nu * nb), kSkipped);
+  const int centre = ru * nb + rb;
+  total[centre] = cell(Exact(), ru, rb, 0);
+  double bar = total[centre] > kSkipped ? total[centre] : -std::numeric_limits<double>::infinity();
   int best = -1;
   for (int i = 0; i < nu; ++i) {
-    const double up = predicted.upper_deg + (i - ru);
-    const SegmentScore su =
-        ScoreSegment(evidence, s, up, shape.upper_px, shape.upper_hw, kUpperFrom, kUpperTo);
-    const cv::Point2d elbow = s + shape.upper_px * DirectionVector(up);
     for (int j = 0; j < nb; ++j) {
-      const double bend = bend0 + (j - rb);
-      if (std::abs(bend) > kMaxBendDeg) continue;
-      const SegmentScore sf =
-          ScoreSegment(evidence, elbow, up + bend, shape.fore_px, shape.fore_hw, kForeFrom,
-                       ForeTo(shape), false, s, elbow, shape.upper_hw + 1);
       const int k = i * nb + j;
-      total[k] = su.score + sf.score;
+      if (k != centre) total[k] = cell(MayGiveUp(), i, j, bar);
+      if (total[k] <= kGaveUp) continue;
       if (best < 0 || total[k] > total[best]) best = k;
+      bar = std::max(bar, total[k]);
     }
   }
   FitResult r;
@@ -138,11 +255,16 @@ FitResult FitNear(const EvidenceMap& evidence, const ArmShape& shape, const ArmP
   }
   const int bi = best / nb, bj = best % nb;
   double di = bi - ru, dj = bj - rb;
-  auto at = [&](int i, int j) { return total[static_cast<std::size_t>(i * nb + j)]; };
-  if (bi > 0 && bi < nu - 1 && at(bi - 1, bj) > -4 && at(bi + 1, bj) > -4) {
+  // A neighbour of the best that was given up is scored in full.
+  auto at = [&](int i, int j) {
+    double& t = total[static_cast<std::size_t>(i * nb + j)];
+    if (t == kGaveUp) t = cell(Exact(), i, j, 0);
+    return t;
+  };
+  if (bi > 0 && bi < nu - 1 && at(bi - 1, bj) > kSkipped && at(bi + 1, bj) > kSkipped) {
     di += ParabolaPeak(at(bi - 1, bj), at(bi, bj), at(bi + 1, bj));
   }
-  if (bj > 0 && bj < nb - 1 && at(bi, bj - 1) > -4 && at(bi, bj + 1) > -4) {
+  if (bj > 0 && bj < nb - 1 && at(bi, bj - 1) > kSkipped && at(bi, bj + 1) > kSkipped) {
     dj += ParabolaPeak(at(bi, bj - 1), at(bi, bj), at(bi, bj + 1));
   }
   r.pose.upper_deg = Wrap180(predicted.upper_deg + di);
@@ -156,16 +278,20 @@ std::vector<FitResult> FitAnywhere(const EvidenceMap& evidence, const ArmShape& 
   const int nu = static_cast<int>(360 / kWideUpperStep);
   const int nb = 2 * static_cast<int>(kMaxBendDeg / kWideBendStep) + 1;
   std::vector<double> total(static_cast<std::size_t>(nu * nb));
+  const PairSampler map(evidence);
+  const Steps upper_steps = StepsOf(shape.upper_px, kUpperFrom, kUpperTo, true);
+  const Steps fore_steps = StepsOf(shape.fore_px, kForeFrom, ForeTo(shape), true);
+  // The grid's directions are whole degrees (whole steps from whole degrees).
+  static_assert(kWideUpperStep == 4 && kWideBendStep == 5 && kMaxBendDeg == 150);
   for (int i = 0; i < nu; ++i) {
-    const double up = -180 + kWideUpperStep * (i + 1);
-    const SegmentScore su = ScoreSegment(evidence, shoulder, up, shape.upper_px, shape.upper_hw,
-                                         kUpperFrom, kUpperTo, true);
-    const cv::Point2d elbow = shoulder + shape.upper_px * DirectionVector(up);
+    const int up = -180 + 4 * (i + 1);
+    const cv::Point2d& u = WholeDegreeDirection(up);
+    const SegmentScore su = ScoreStrip(map, upper_steps, shoulder, u, shape.upper_hw);
+    const cv::Point2d elbow = shoulder + shape.upper_px * u;
     for (int j = 0; j < nb; ++j) {
-      const double bend = -kMaxBendDeg + kWideBendStep * j;
-      const SegmentScore sf =
-          ScoreSegment(evidence, elbow, up + bend, shape.fore_px, shape.fore_hw, kForeFrom,
-                       ForeTo(shape), true, shoulder, elbow, shape.upper_hw + 1);
+      const int bend = -150 + 5 * j;
+      const SegmentScore sf = ScoreStrip(map, fore_steps, elbow, WholeDegreeDirection(up + bend),
+                                         shape.fore_hw, shoulder, elbow, shape.upper_hw + 1);
       total[static_cast<std::size_t>(i * nb + j)] = su.score + sf.score;
     }
   }
@@ -216,11 +342,12 @@ double ForeRivalScore(const EvidenceMap& evidence, const ArmShape& shape, const 
   const ArmJoints j = JointsOf(pose, shape);
   const double bend0 = AngleDiff(pose.fore_deg, pose.upper_deg);
   double best = -2;
+  const PairSampler map(evidence);
+  const Steps steps = StepsOf(shape.fore_px, kForeFrom, 1, false);
   for (double bend = -kMaxBendDeg; bend <= kMaxBendDeg; bend += kStepDeg) {
     if (std::abs(bend - bend0) < apart_deg) continue;
-    const SegmentScore sf =
-        ScoreSegment(evidence, j.elbow, pose.upper_deg + bend, shape.fore_px, shape.fore_hw,
-                     kForeFrom, 1, false, j.shoulder, j.elbow, shape.upper_hw + 1);
+    const SegmentScore sf = ScoreStrip(map, steps, j.elbow, DirectionVector(pose.upper_deg + bend),
+                                       shape.fore_hw, j.shoulder, j.elbow, shape.upper_hw + 1);
     best = std::max(best, sf.score);
   }
   return best;

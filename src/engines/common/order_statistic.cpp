@@ -36,15 +36,22 @@ float KthSmallest(float* first, std::size_t n, std::size_t k) {
       n = below;
       continue;
     }
-    // The rest are at least the pivot: those equal to it come next, then the larger ones. The
-    // pivot is one of the values, so each round leaves fewer.
-    const std::size_t equal =
-        Partition(first + below, n - below, [pivot](float v) { return v <= pivot; });
+    // The rest are at least the pivot. While some were below it, the rest are fewer: the next
+    // round takes them as they are.
+    if (below > 0) {
+      first += below;
+      n -= below;
+      k -= below;
+      continue;
+    }
+    // None below: those equal to the pivot come first, then the larger ones. The pivot is one of
+    // the values, so the round leaves fewer.
+    const std::size_t equal = Partition(first, n, [pivot](float v) { return v <= pivot; });
     if (equal == 0) return pivot;  // a NaN pivot: nothing equals it, and no round would end
-    if (k < below + equal) return pivot;
-    first += below + equal;
-    n -= below + equal;
-    k -= below + equal;
+    if (k < equal) return pivot;
+    first += equal;
+    n -= equal;
+    k -= equal;
   }
   std::nth_element(first, first + k, first + n);
   return first[k];
