@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
 #include <vector>
 
 namespace armmimic {
@@ -24,6 +23,34 @@ double Quantile(std::vector<double> v, double q) {
   auto at = v.begin() + static_cast<std::ptrdiff_t>(std::lround(q * (v.size() - 1)));
   std::nth_element(v.begin(), at, v.end());
   return *at;
+}
+
+// Each channel's median ratio of `a` over `b` over the pixels of `rows` (y values) in columns
+// [x0, x1]: the light's change from `b` to `a` there (1 where too dark to tell).
+std::array<double, 3> LightRatio(const cv::Mat& a, const cv::Mat& b, const std::vector<int>& rows,
+                                 int x0, int x1) {
+  std::array<std::vector<double>, 3> ratios;
+  for (int y : rows) {
+    if (y < 0 || y >= a.rows) continue;
+    for (int x = std::max(0, x0); x <= std::min(a.cols - 1, x1); ++x) {
+      const cv::Vec3b& pa = a.at<cv::Vec3b>(y, x);
+      const cv::Vec3b& pb = b.at<cv::Vec3b>(y, x);
+      for (int c = 0; c < 3; ++c) {
+        if (pb[c] >= 16) ratios[static_cast<std::size_t>(c)].push_back(double(pa[c]) / pb[c]);
+      }
+    }
+  }
+  std::array<double, 3> gain{1, 1, 1};
+  for (int c = 0; c < 3; ++c) {
+    const double q = Quantile(ratios[static_cast<std::size_t>(c)], 0.5);
+    if (std::isfinite(q)) gain[static_cast<std::size_t>(c)] = q;
+  }
+  return gain;
+}
+
+// The largest channel difference of two colours.
+double MaxChannel(const cv::Vec3d& a, const cv::Vec3d& b) {
+  return std::max({std::abs(a[0] - b[0]), std::abs(a[1] - b[1]), std::abs(a[2] - b[2])});
 }
 
 }  // namespace
@@ -80,38 +107,6 @@ StraightArmColumns MeasureStraightArm(const cv::Mat& arm, const cv::Rect& band, 
   out.ok = true;
   return out;
 }
-
-namespace {
-
-// Each channel's median ratio of `a` over `b` over the pixels of `rows` (y values) in columns
-// [x0, x1]: the light's change from `b` to `a` there (1 where too dark to tell).
-std::array<double, 3> LightRatio(const cv::Mat& a, const cv::Mat& b, const std::vector<int>& rows,
-                                 int x0, int x1) {
-  std::array<std::vector<double>, 3> ratios;
-  for (int y : rows) {
-    if (y < 0 || y >= a.rows) continue;
-    for (int x = std::max(0, x0); x <= std::min(a.cols - 1, x1); ++x) {
-      const cv::Vec3b& pa = a.at<cv::Vec3b>(y, x);
-      const cv::Vec3b& pb = b.at<cv::Vec3b>(y, x);
-      for (int c = 0; c < 3; ++c) {
-        if (pb[c] >= 16) ratios[static_cast<std::size_t>(c)].push_back(double(pa[c]) / pb[c]);
-      }
-    }
-  }
-  std::array<double, 3> gain{1, 1, 1};
-  for (int c = 0; c < 3; ++c) {
-    const double q = Quantile(ratios[static_cast<std::size_t>(c)], 0.5);
-    if (std::isfinite(q)) gain[static_cast<std::size_t>(c)] = q;
-  }
-  return gain;
-}
-
-// The largest channel difference of two colours.
-double MaxChannel(const cv::Vec3d& a, const cv::Vec3d& b) {
-  return std::max({std::abs(a[0] - b[0]), std::abs(a[1] - b[1]), std::abs(a[2] - b[2])});
-}
-
-}  // namespace
 
 int ContinueStraightArm(const cv::Mat& arm_length, const cv::Mat& standstill,
                         const StraightArmColumns& cols, int side) {
