@@ -1,6 +1,8 @@
 #include "common/order_statistic.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace armmimic::arm {
 namespace {
@@ -55,6 +57,13 @@ float KthSmallest(float* first, std::size_t n, std::size_t k) {
   }
   std::nth_element(first, first + k, first + n);
   return first[k];
+}
+
+double NearestRankQuantile(std::vector<double> values, double q) {
+  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
+  auto at = values.begin() + static_cast<std::ptrdiff_t>(std::lround(q * (values.size() - 1)));
+  std::nth_element(values.begin(), at, values.end());
+  return *at;
 }
 
 }  // namespace armmimic::arm

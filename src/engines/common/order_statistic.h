@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 namespace armmimic::arm {
 
@@ -11,5 +12,9 @@ namespace armmimic::arm {
 // Reorders [first, first + n) as it goes. With a NaN among them the result is one of the values
 // or NaN, and the call returns.
 float KthSmallest(float* first, std::size_t n, std::size_t k);
+
+// The value at rank round(q (n - 1)) of `values` in ascending order (q in [0, 1]; the median at
+// 0.5), by std::nth_element; NaN when there are none. For the calibrations' few hundred values.
+double NearestRankQuantile(std::vector<double> values, double q);
 
 }  // namespace armmimic::arm

@@ -11,6 +11,7 @@
 
 #include "armmimic/core/angle_file.h"
 #include "common/colour_difference.h"
+#include "common/order_statistic.h"
 #include "common/straight_arm.h"
 
 namespace armmimic {
@@ -53,13 +54,6 @@ const Part* Largest(const std::vector<Part>& parts) {
     if (!best || p.area > best->area) best = &p;
   }
   return best;
-}
-
-double Quantile(std::vector<double> v, double q) {
-  if (v.empty()) return kNaN;
-  auto at = v.begin() + static_cast<std::ptrdiff_t>(std::lround(q * (v.size() - 1)));
-  std::nth_element(v.begin(), at, v.end());
-  return *at;
 }
 
 void Open3(cv::Mat* mask) {
@@ -138,9 +132,9 @@ void FitAxis(const std::vector<cv::Point2d>& points, double y0, double* a, doubl
       }
     }
   }
-  *b = Quantile(slopes, 0.5);
+  *b = arm::NearestRankQuantile(slopes, 0.5);
   for (const cv::Point2d& p : points) intercepts.push_back(p.x - *b * (p.y - y0));
-  *a = Quantile(intercepts, 0.5);
+  *a = arm::NearestRankQuantile(intercepts, 0.5);
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include "common/order_statistic.h"
+
 namespace armmimic {
 namespace {
 
@@ -17,13 +19,6 @@ constexpr double kBandShare = 0.3;
 constexpr int kColourColumns = 8;
 constexpr int kEndColumns = 3;
 constexpr double kLightRowsOff = 1.5;
-
-double Quantile(std::vector<double> v, double q) {
-  if (v.empty()) return kNaN;
-  auto at = v.begin() + static_cast<std::ptrdiff_t>(std::lround(q * (v.size() - 1)));
-  std::nth_element(v.begin(), at, v.end());
-  return *at;
-}
 
 // Each channel's median ratio of `a` over `b` over the pixels of `rows` (y values) in columns
 // [x0, x1]: the light's change from `b` to `a` there (1 where too dark to tell).
@@ -42,7 +37,7 @@ std::array<double, 3> LightRatio(const cv::Mat& a, const cv::Mat& b, const std::
   }
   std::array<double, 3> gain{1, 1, 1};
   for (int c = 0; c < 3; ++c) {
-    const double q = Quantile(ratios[static_cast<std::size_t>(c)], 0.5);
+    const double q = arm::NearestRankQuantile(ratios[static_cast<std::size_t>(c)], 0.5);
     if (std::isfinite(q)) gain[static_cast<std::size_t>(c)] = q;
   }
   return gain;
@@ -97,11 +92,11 @@ StraightArmColumns MeasureStraightArm(const cv::Mat& arm, const cv::Rect& band, 
   if (side < 0) std::reverse(cols.begin(), cols.end());
   std::vector<double> heights, mids;
   for (const Column& c : cols) heights.push_back(c.count);
-  out.thick_px = Quantile(heights, kThickQuantile);
+  out.thick_px = arm::NearestRankQuantile(heights, kThickQuantile);
   for (const Column& c : cols) {
     if (c.count >= kFullShare * out.thick_px) mids.push_back(0.5 * (c.top + c.bottom));
   }
-  out.axis_y = Quantile(mids, 0.5);
+  out.axis_y = arm::NearestRankQuantile(mids, 0.5);
   out.inner_x = cols.front().x;
   out.outer_x = cols.back().x;
   out.ok = true;

@@ -69,5 +69,16 @@ TEST(KthSmallestTest, ReturnsOneOfTheValuesWithANaNAmongThem) {
   }
 }
 
+// The calibrations' quantile: the value at rank round(q (n - 1)), whatever the order given.
+TEST(NearestRankQuantileTest, TakesTheNearestRank) {
+  const std::vector<double> v = {7, 1, 9, 3, 5};  // sorted: 1 3 5 7 9
+  EXPECT_EQ(NearestRankQuantile(v, 0.0), 1);
+  EXPECT_EQ(NearestRankQuantile(v, 0.5), 5);
+  EXPECT_EQ(NearestRankQuantile(v, 0.8), 7);  // rank round(3.2) = 3
+  EXPECT_EQ(NearestRankQuantile(v, 1.0), 9);
+  EXPECT_EQ(NearestRankQuantile({4, 2, 8, 6}, 0.5), 6);  // rank round(1.5) = 2
+  EXPECT_TRUE(std::isnan(NearestRankQuantile({}, 0.5)));
+}
+
 }  // namespace
 }  // namespace armmimic::arm
