@@ -79,6 +79,14 @@ UpperMeasurement Upper(const cv::Mat& gray, const CylinderView& cyl, const Marke
   return MeasureUpperMarker(gray, cyl, cal.upper, yaw, options.upper_tolerance);
 }
 
+// Do both sides of one lower marker turn the joint as far? Their sizes must agree as closely as
+// two markers' yaws must to be read as a pair (SolveYaw): within agreement_sigmas of their
+// spreads, and a degree.
+bool SameSize(const YawHypothesis& a, const YawHypothesis& b, const MarkerOptions& options) {
+  const double gap = std::abs(std::abs(a.yaw) - std::abs(b.yaw));
+  return gap <= options.agreement_sigmas * std::hypot(a.sigma, b.sigma) + RadFromDeg(1);
+}
+
 }  // namespace
 
 MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration& cal,
@@ -151,6 +159,18 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
         const int t = telling[0] ? 0 : 1;
         if (uppers[t]->support >= kSupportMargin * uppers[1 - t]->support) alive[1 - t] = false;
       }
+    }
+    if (alive[0] && alive[1] && SameSize(yaw.hypotheses[0], yaw.hypotheses[1], options) &&
+        cal.lower.single_sized) {
+      // Either side, and both turn the joint as far (the marker near the front, between where
+      // the two sides put it): the size of the yaw is known, its sign is not.
+      out.ok = true;
+      out.yaw = 0.5 * (std::abs(yaw.hypotheses[0].yaw) + std::abs(yaw.hypotheses[1].yaw));
+      out.sign_known = false;
+      out.note =
+          "yaw from one lower marker, which could be either: both turn the joint as far; sign "
+          "unknown; no bend: the upper marker's place depends on the sign";
+      return out;
     }
     if (alive[0] == alive[1]) {
       out.note = alive[0] ? "one lower marker shows, and it could be either"

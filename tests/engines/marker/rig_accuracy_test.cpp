@@ -218,6 +218,19 @@ TEST(MarkerRigAccuracy, NearZeroPairsOfUnsureReferences) {
   EXPECT_EQ(t.signed_off, 0) << t.log;
 }
 
+// One lower marker that could be either, the upper marker found for neither side, and both sides
+// turning the joint as far (medium 126, view 2: yaw -45.4, the marker near the front between
+// where the two sides put it): the size is read and the sign is nan, not guessed (the view was
+// lost before).
+TEST(MarkerRigAccuracy, EitherSideOfTheSameSizeGivesTheSizeWithoutASign) {
+  RigTally t;
+  RunRig("medium", 126, 4, &t);
+  EXPECT_EQ(t.ok, 4) << t.log;
+  EXPECT_GE(t.unsigned_rows, 1) << t.log;
+  EXPECT_LE(t.yaw_max, 1) << t.log;
+  EXPECT_EQ(t.signed_off, 0) << t.log;
+}
+
 TEST(MarkerRigAccuracy, HardRigs) {
   RigTally t;
   for (uint64_t seed : {601, 602, 603}) RunRig("hard", seed, 5, &t);
