@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
+#include "arm_errors.h"
 #include "armmimic/core/angles.h"
 #include "armmimic/engines/engine.h"
 #include "armmimic/synth/arm_scene.h"
@@ -61,10 +62,9 @@ RunStats RunScene(const synth::ArmSceneOptions& so, bool thesis_mode = false) {
     ++st.rows;
     if (m.phase != MeasurementPhase::kOk) continue;
     ++st.ok;
-    const double du = std::fabs(AngleDiff(m.upper_deg, t.upper_deg));
-    const double df = std::fabs(AngleDiff(m.fore_deg, t.fore_deg));
-    st.wrong += std::max(du, df) > 15;
-    for (double e : {du, df}) {
+    const test::SegmentErrors errors = test::ErrorsAgainst(m, t);
+    st.wrong += errors.wrong();
+    for (double e : {errors.upper, errors.fore}) {
       st.sum_err += e;
       ++st.n_err;
       if (e > st.max_err) st.max_err = e, st.max_frame = i;

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
+#include "arm_errors.h"
 #include "armmimic/core/angles.h"
 #include "armmimic/engines/engine.h"
 #include "armmimic/synth/random_arm_scene.h"
@@ -66,10 +67,9 @@ SceneRun RunRandom(uint64_t seed, synth::SceneTier tier, bool thesis_mode = fals
     ++run.motion;
     if (m.phase != MeasurementPhase::kOk) continue;
     ++run.ok;
-    const double du = std::fabs(AngleDiff(m.upper_deg, t.upper_deg));
-    const double df = std::fabs(AngleDiff(m.fore_deg, t.fore_deg));
-    run.sum_err += 0.5 * (du + df);
-    run.wrong += std::max(du, df) > 15;
+    const test::SegmentErrors e = test::ErrorsAgainst(m, t);
+    run.sum_err += e.mean();
+    run.wrong += e.wrong();
   }
   std::printf(
       "  seed %llu %s: sleeves %s, camouflage %s, off-centre %.2f, above head %d: "

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
+#include "arm_errors.h"
 #include "armmimic/core/angles.h"
 #include "armmimic/engines/engine.h"
 #include "armmimic/synth/arm_scene.h"
@@ -55,9 +56,7 @@ Counts RunEdited(const synth::ArmSceneRenderer& scene, const cv::Mat& arm_length
     if (m.phase != MeasurementPhase::kOk) continue;
     ++c.ok;
     c.edited_ok += edited;
-    const double du = std::fabs(AngleDiff(m.upper_deg, t.upper_deg));
-    const double df = std::fabs(AngleDiff(m.fore_deg, t.fore_deg));
-    c.wrong += std::max(du, df) > 15;
+    c.wrong += test::ErrorsAgainst(m, t).wrong();
   }
   std::printf("  %d rows, %d ok, %d confidently wrong; %d edited, %d of them ok\n", c.rows, c.ok,
               c.wrong, c.edited, c.edited_ok);

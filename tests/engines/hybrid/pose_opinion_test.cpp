@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "arm_errors.h"
 #include "armmimic/core/angles.h"
 #include "armmimic/engines/engine.h"
 #include "armmimic/synth/arm_scene.h"
@@ -61,10 +62,9 @@ HybridRun RunHybrid(const cv::Point2d& shift) {
     ++run.rows;
     if (m.phase != MeasurementPhase::kOk) continue;
     ++run.ok;
-    const double du = std::abs(AngleDiff(m.upper_deg, truth.upper_deg));
-    const double df = std::abs(AngleDiff(m.fore_deg, truth.fore_deg));
-    run.sum += 0.5 * (du + df);
-    run.wrong += std::max(du, df) > 15;
+    const test::SegmentErrors e = test::ErrorsAgainst(m, truth);
+    run.sum += e.mean();
+    run.wrong += e.wrong();
   }
   return run;
 }

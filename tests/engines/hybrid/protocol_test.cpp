@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
+#include "arm_errors.h"
 #include "armmimic/core/angles.h"
 #include "armmimic/engines/engine.h"
 #include "armmimic/synth/capsule_arm_scene.h"
@@ -81,10 +82,9 @@ ProtocolRun RunProtocol(const synth::ArmSceneSource& scene, int quality, EngineK
     ++run.motion;
     if (a.phase != MeasurementPhase::kOk) continue;
     ++run.ok;
-    const double du = std::fabs(AngleDiff(a.upper_deg, t.upper_deg));
-    const double df = std::fabs(AngleDiff(a.fore_deg, t.fore_deg));
-    run.sum_err += 0.5 * (du + df);
-    run.wrong += std::max(du, df) > 15;
+    const test::SegmentErrors e = test::ErrorsAgainst(a, t);
+    run.sum_err += e.mean();
+    run.wrong += e.wrong();
   }
   return run;
 }
