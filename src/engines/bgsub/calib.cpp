@@ -9,6 +9,7 @@
 
 #include "armmimic/core/geometry.h"
 #include "bgsub/masks.h"
+#include "common/order_statistic.h"
 #include "common/straight_arm.h"
 
 namespace armmimic::bgsub {
@@ -16,13 +17,6 @@ namespace {
 
 // A region of the standstill's difference this many times smaller than the torso is a speck.
 constexpr int kBodyPartShare = 25;
-
-double MedianOf(std::vector<double> v) {
-  if (v.empty()) return kNaN;
-  auto at = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), at, v.end());
-  return *at;
-}
 
 // The standing body: the largest region of the standstill's difference from the empty room.
 void FindBody(const PixelModel& pixels, ArmCalibration* cal) {
@@ -123,7 +117,7 @@ double HangingArmAxis(const ArmCalibration& cal, int inner_x, double length) {
     }
   }
   if (edges.size() < 3) return kNaN;
-  return MedianOf(edges) - cal.side * r;
+  return arm::NearestRankQuantile(edges, 0.5) - cal.side * r;
 }
 
 }  // namespace

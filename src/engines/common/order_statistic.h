@@ -14,7 +14,8 @@ namespace armmimic::arm {
 float KthSmallest(float* first, std::size_t n, std::size_t k);
 
 // The value at rank round(q (n - 1)) of `values` in ascending order (q in [0, 1]; the median at
-// 0.5), by std::nth_element; NaN when there are none. For the calibrations' few hundred values.
+// 0.5), by std::nth_element; NaN when there are none. For a few hundred values at most (the
+// calibrations' edges and slopes, a frame's feature motions).
 double NearestRankQuantile(std::vector<double> values, double q);
 
 }  // namespace armmimic::arm

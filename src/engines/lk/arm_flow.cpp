@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "armmimic/core/angles.h"
+#include "common/order_statistic.h"
 
 namespace armmimic::lk {
 namespace {
@@ -22,13 +23,6 @@ constexpr double kBodyInner = 0.3, kBodyOuter = 1.2;
 constexpr double kBelowShoulder = 0.25;  // of the upper arm: the ring's top, below the shoulder
 constexpr double kOffArmPx = 2;          // beyond the half-width: off the arm
 constexpr int kMinBodyFeatures = 4;
-
-double Median(std::vector<double> v) {
-  if (v.empty()) return kNaN;
-  const std::size_t mid = v.size() / 2;
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(mid), v.end());
-  return v[mid];
-}
 
 // The hand's end: the forearm's features reach over the hand.
 cv::Point2d HandEnd(const arm::ArmJoints& j, const arm::ArmShape& shape) {
@@ -62,7 +56,9 @@ FlowCue ArmFlow::Track(const cv::Mat& gray, const arm::ArmPose& pose, const arm:
     dy.push_back(f.p.y - f.prev.y);
   }
   cue.body_count = static_cast<int>(dx.size());
-  if (cue.body_count >= kMinBodyFeatures) cue.shoulder_shift = {Median(dx), Median(dy)};
+  if (cue.body_count >= kMinBodyFeatures) {
+    cue.shoulder_shift = {arm::NearestRankQuantile(dx, 0.5), arm::NearestRankQuantile(dy, 0.5)};
+  }
   const arm::ArmJoints then = arm::JointsOf(pose, shape);
   const cv::Point2d shoulder_now = pose.shoulder + cue.shoulder_shift;
   std::vector<double> turns[2];
@@ -75,7 +71,7 @@ FlowCue ArmFlow::Track(const cv::Mat& gray, const arm::ArmPose& pose, const arm:
     turns[0].push_back(AngleDiff(DirectionDeg(shoulder_now, b), DirectionDeg(then.shoulder, a)));
   }
   cue.upper_count = static_cast<int>(turns[0].size());
-  cue.upper_turn_deg = Median(turns[0]);
+  cue.upper_turn_deg = arm::NearestRankQuantile(turns[0], 0.5);
   const double upper_now =
       pose.upper_deg + (std::isfinite(cue.upper_turn_deg) ? cue.upper_turn_deg : 0.0);
   const cv::Point2d elbow_now = shoulder_now + shape.upper_px * DirectionVector(upper_now);
@@ -86,7 +82,7 @@ FlowCue ArmFlow::Track(const cv::Mat& gray, const arm::ArmPose& pose, const arm:
     turns[1].push_back(AngleDiff(DirectionDeg(elbow_now, b), DirectionDeg(then.elbow, a)));
   }
   cue.fore_count = static_cast<int>(turns[1].size());
-  cue.fore_turn_deg = Median(turns[1]);
+  cue.fore_turn_deg = arm::NearestRankQuantile(turns[1], 0.5);
   return cue;
 }
 
