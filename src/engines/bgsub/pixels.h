@@ -4,7 +4,11 @@
 // more than that pixel's noise allows. Before comparing, the light is matched: a frame's gain over
 // the standstill is measured per colour channel in blocks of the image (robust medians), smoothed
 // and interpolated, so that a lighting drift, a flicker, a colour cast or a soft shadow passing
-// over the wall and the person changes the reference instead of making the pixels differ.
+// over the wall and the person changes the reference instead of making the pixels differ. A
+// sharp shadow (the arm's or the body's, on a wall just behind) is narrower than those blocks: a
+// pixel darker than the reference by one factor in every channel, over a patch whose texture
+// the reference shows and the frame keeps, is the room in shadow and does not differ. On a plain
+// wall a shadow cannot be told from a sleeve of the wall's colour, and still differs.
 // Private to src/engines.
 #pragma once
 
