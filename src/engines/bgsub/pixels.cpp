@@ -35,10 +35,16 @@ constexpr double kOutlier = 0.08;
 // times the noise) can a darker pixel be told from an arm of the room's colour, which hides the
 // texture; on a plain wall nothing is called a shadow.
 constexpr double kShadowMin = 0.3, kShadowMax = 0.92;  // the darkening factor
-constexpr double kShadowChroma = 0.08;                 // channels' factors within this of their mean
-constexpr int kShadowPatch = 7;                        // the texture's patch, pixels a side
+constexpr double kShadowChroma = 0.08;  // channels' factors within this of their mean
+constexpr int kShadowPatch = 7;         // the texture's patch, pixels a side
 constexpr double kTextureNoise = 2.0;
 constexpr double kTextureKept = 0.7;  // correlation of the patch with the reference's
+// Below this the texture is lost (in between: a patch across the shadow's own edge).
+constexpr double kTextureLost = 0.3;
+// A region of candidates is a shadow where this share of its textured pixels keep the texture,
+// and at least kMinKeptPixels do.
+constexpr double kShadowRegionShare = 0.75;
+constexpr int kMinKeptPixels = 10;
 
 float Median(std::vector<float>* v) {
   if (v->empty()) return 1.0f;
@@ -78,7 +84,11 @@ void Exceeds(const cv::Mat& bgr, const cv::Mat& reference, const cv::Mat& thresh
 }
 
 // Clears from `mask` (CV_8UC1 of `frame`'s size) the pixels of `frame` that are `reference`
-// (CV_8UC3, the same size) in shadow. `noise` in grey levels.
+// (CV_8UC3, the same size) in shadow. `noise` in grey levels. A pixel darkened by one factor with
+// its colour kept is a candidate; where the reference shows texture, the patch says whether the
+// texture is kept (the room in shadow) or lost (something in front of it). A connected region of
+// candidates whose textured pixels mostly keep it is a shadow as a whole, its plain pixels too
+// (a shadow on dots or bricks also falls between them).
 void ClearShadows(const cv::Mat& frame, const cv::Mat& reference, double noise, cv::Mat* mask) {
   if (cv::countNonZero(*mask) == 0) return;
   cv::Mat f, r;
@@ -94,8 +104,11 @@ void ClearShadows(const cv::Mat& frame, const cv::Mat& reference, double noise, 
   cv::boxFilter(r.mul(r), mrr, CV_32F, k);
   cv::boxFilter(f.mul(r), mfr, CV_32F, k);
   const double min_var = kTextureNoise * kTextureNoise * std::max(1.0, noise * noise);
+  // 0: no candidate; 1: a candidate on plain reference; 2: texture kept; 3: texture lost.
+  cv::Mat kind = cv::Mat::zeros(frame.size(), CV_8U);
   for (int y = 0; y < frame.rows; ++y) {
-    uchar* m = mask->ptr<uchar>(y);
+    const uchar* m = mask->ptr<uchar>(y);
+    uchar* kd = kind.ptr<uchar>(y);
     const cv::Vec3b* fp = frame.ptr<cv::Vec3b>(y);
     const cv::Vec3b* rp = reference.ptr<cv::Vec3b>(y);
     for (int x = 0; x < frame.cols; ++x) {
@@ -109,11 +122,37 @@ void ClearShadows(const cv::Mat& frame, const cv::Mat& reference, double noise, 
       bool kept = true;
       for (int c = 0; c < 3; ++c) kept &= std::fabs(ratio[c] - mean) <= kShadowChroma * mean;
       if (!kept) continue;
+      kd[x] = 1;
       const double vr = mrr.at<float>(y, x) - mr.at<float>(y, x) * mr.at<float>(y, x);
       const double vf = mff.at<float>(y, x) - mf.at<float>(y, x) * mf.at<float>(y, x);
-      if (vr < min_var || vf <= 0) continue;
+      if (vr < min_var) continue;
       const double cov = mfr.at<float>(y, x) - mf.at<float>(y, x) * mr.at<float>(y, x);
-      if (cov / std::sqrt(vr * vf) >= kTextureKept) m[x] = 0;
+      const double ncc = vf > 0 ? cov / std::sqrt(vr * vf) : 0;
+      if (ncc >= kTextureKept) kd[x] = 2;
+      if (ncc < kTextureLost) kd[x] = 3;
+    }
+  }
+  cv::Mat labels;
+  const int n = cv::connectedComponents(kind > 0, labels, 8, CV_32S);
+  std::vector<int> kept(static_cast<std::size_t>(n), 0), lost(static_cast<std::size_t>(n), 0);
+  for (int y = 0; y < frame.rows; ++y) {
+    const uchar* kd = kind.ptr<uchar>(y);
+    const int* l = labels.ptr<int>(y);
+    for (int x = 0; x < frame.cols; ++x) {
+      if (kd[x] == 2) ++kept[static_cast<std::size_t>(l[x])];
+      if (kd[x] == 3) ++lost[static_cast<std::size_t>(l[x])];
+    }
+  }
+  for (int y = 0; y < frame.rows; ++y) {
+    uchar* m = mask->ptr<uchar>(y);
+    const uchar* kd = kind.ptr<uchar>(y);
+    const int* l = labels.ptr<int>(y);
+    for (int x = 0; x < frame.cols; ++x) {
+      if (kd[x] == 0 || kd[x] == 3) continue;
+      const std::size_t c = static_cast<std::size_t>(l[x]);
+      if (kd[x] == 2 ||
+          (kept[c] >= kMinKeptPixels && kept[c] >= kShadowRegionShare * (kept[c] + lost[c])))
+        m[x] = 0;
     }
   }
 }
@@ -278,11 +317,9 @@ void PixelModel::Compare(const cv::Mat& bgr, const cv::Rect& rect, const cv::Mat
   cv::multiply(standstill_f_(rect), gain, scaled_f_);
   scaled_f_.convertTo(scaled_, CV_8UC3);
   Exceeds(frame, scaled_, threshold, &diff_, &any_, moved);
-  ClearShadows(frame, scaled_, noise_, moved);
   cv::multiply(background_f_(rect), gain, scaled_f_);
   scaled_f_.convertTo(scaled_, CV_8UC3);
   Exceeds(frame, scaled_, threshold, &diff_, &any_, person);
-  ClearShadows(frame, scaled_, noise_, person);
 }
 
 void PixelModel::SetThird(const cv::Mat& bgr) {
@@ -317,6 +354,7 @@ void PixelModel::Differ(const cv::Mat& bgr, const cv::Mat& reference, cv::Mat* m
       *mask &= one;
     }
   }
+  ClearShadows(bgr, scaled, noise_, mask);
 }
 
 }  // namespace armmimic::bgsub
