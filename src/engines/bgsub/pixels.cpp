@@ -30,6 +30,22 @@ constexpr double kAgree = 0.06;
 constexpr double kMinAgreeing = 0.4;
 constexpr double kOutlier = 0.08;
 
+// A shadow: the reference darkened by one factor in every channel (the colour kept) and its
+// texture kept. Only where the reference shows texture (a patch's spread at least kTextureNoise
+// times the noise) can a darker pixel be told from an arm of the room's colour, which hides the
+// texture; on a plain wall nothing is called a shadow.
+constexpr double kShadowMin = 0.3, kShadowMax = 0.92;  // the darkening factor
+constexpr double kShadowChroma = 0.08;  // channels' factors within this of their mean
+constexpr int kShadowPatch = 7;         // the texture's patch, pixels a side
+constexpr double kTextureNoise = 2.0;
+constexpr double kTextureKept = 0.7;  // correlation of the patch with the reference's
+// Below this the texture is lost (in between: a patch across the shadow's own edge).
+constexpr double kTextureLost = 0.3;
+// A region of candidates is a shadow where this share of its textured pixels keep the texture,
+// and at least kMinKeptPixels do.
+constexpr double kShadowRegionShare = 0.75;
+constexpr int kMinKeptPixels = 10;
+
 float Median(std::vector<float>* v) {
   if (v->empty()) return 1.0f;
   return arm::KthSmallest(v->data(), v->size(), v->size() / 2);
@@ -65,6 +81,80 @@ void Exceeds(const cv::Mat& bgr, const cv::Mat& reference, const cv::Mat& thresh
   // Any channel over: every grey weight is positive.
   cv::cvtColor(*diff, *any, cv::COLOR_BGR2GRAY);
   cv::threshold(*any, *mask, 0, 255, cv::THRESH_BINARY);
+}
+
+// Clears from `mask` (CV_8UC1 of `frame`'s size) the pixels of `frame` that are `reference`
+// (CV_8UC3, the same size) in shadow. `noise` in grey levels. A pixel darkened by one factor with
+// its colour kept is a candidate; where the reference shows texture, the patch says whether the
+// texture is kept (the room in shadow) or lost (something in front of it). A connected region of
+// candidates whose textured pixels mostly keep it is a shadow as a whole, its plain pixels too
+// (a shadow on dots or bricks also falls between them).
+void ClearShadows(const cv::Mat& frame, const cv::Mat& reference, double noise, cv::Mat* mask) {
+  if (cv::countNonZero(*mask) == 0) return;
+  cv::Mat f, r;
+  cv::cvtColor(frame, f, cv::COLOR_BGR2GRAY);
+  cv::cvtColor(reference, r, cv::COLOR_BGR2GRAY);
+  f.convertTo(f, CV_32F);
+  r.convertTo(r, CV_32F);
+  const cv::Size k(kShadowPatch, kShadowPatch);
+  cv::Mat mf, mr, mff, mrr, mfr;
+  cv::boxFilter(f, mf, CV_32F, k);
+  cv::boxFilter(r, mr, CV_32F, k);
+  cv::boxFilter(f.mul(f), mff, CV_32F, k);
+  cv::boxFilter(r.mul(r), mrr, CV_32F, k);
+  cv::boxFilter(f.mul(r), mfr, CV_32F, k);
+  const double min_var = kTextureNoise * kTextureNoise * std::max(1.0, noise * noise);
+  // 0: no candidate; 1: a candidate on plain reference; 2: texture kept; 3: texture lost.
+  cv::Mat kind = cv::Mat::zeros(frame.size(), CV_8U);
+  for (int y = 0; y < frame.rows; ++y) {
+    const uchar* m = mask->ptr<uchar>(y);
+    uchar* kd = kind.ptr<uchar>(y);
+    const cv::Vec3b* fp = frame.ptr<cv::Vec3b>(y);
+    const cv::Vec3b* rp = reference.ptr<cv::Vec3b>(y);
+    for (int x = 0; x < frame.cols; ++x) {
+      if (!m[x]) continue;
+      double ratio[3], mean = 0;
+      for (int c = 0; c < 3; ++c) {
+        ratio[c] = (fp[x][c] + 1.0) / (rp[x][c] + 1.0);
+        mean += ratio[c] / 3;
+      }
+      if (mean < kShadowMin || mean > kShadowMax) continue;
+      bool kept = true;
+      for (int c = 0; c < 3; ++c) kept &= std::fabs(ratio[c] - mean) <= kShadowChroma * mean;
+      if (!kept) continue;
+      kd[x] = 1;
+      const double vr = mrr.at<float>(y, x) - mr.at<float>(y, x) * mr.at<float>(y, x);
+      const double vf = mff.at<float>(y, x) - mf.at<float>(y, x) * mf.at<float>(y, x);
+      if (vr < min_var) continue;
+      const double cov = mfr.at<float>(y, x) - mf.at<float>(y, x) * mr.at<float>(y, x);
+      const double ncc = vf > 0 ? cov / std::sqrt(vr * vf) : 0;
+      if (ncc >= kTextureKept) kd[x] = 2;
+      if (ncc < kTextureLost) kd[x] = 3;
+    }
+  }
+  cv::Mat labels;
+  const int n = cv::connectedComponents(kind > 0, labels, 8, CV_32S);
+  std::vector<int> kept(static_cast<std::size_t>(n), 0), lost(static_cast<std::size_t>(n), 0);
+  for (int y = 0; y < frame.rows; ++y) {
+    const uchar* kd = kind.ptr<uchar>(y);
+    const int* l = labels.ptr<int>(y);
+    for (int x = 0; x < frame.cols; ++x) {
+      if (kd[x] == 2) ++kept[static_cast<std::size_t>(l[x])];
+      if (kd[x] == 3) ++lost[static_cast<std::size_t>(l[x])];
+    }
+  }
+  for (int y = 0; y < frame.rows; ++y) {
+    uchar* m = mask->ptr<uchar>(y);
+    const uchar* kd = kind.ptr<uchar>(y);
+    const int* l = labels.ptr<int>(y);
+    for (int x = 0; x < frame.cols; ++x) {
+      if (kd[x] == 0 || kd[x] == 3) continue;
+      const std::size_t c = static_cast<std::size_t>(l[x]);
+      if (kd[x] == 2 ||
+          (kept[c] >= kMinKeptPixels && kept[c] >= kShadowRegionShare * (kept[c] + lost[c])))
+        m[x] = 0;
+    }
+  }
 }
 
 // Blocks without a gain take their valid neighbours' mean (repeatedly), then `fallback`; a block
@@ -248,6 +338,7 @@ void PixelModel::StandstillPerson(cv::Mat* mask) const {
   cv::Mat scaled, diff, any;
   cv::multiply(background_, standstill_gain_, scaled);
   Exceeds(standstill_, scaled, threshold_, &diff, &any, mask);
+  ClearShadows(standstill_, scaled, noise_, mask);
 }
 
 void PixelModel::Differ(const cv::Mat& bgr, const cv::Mat& reference, cv::Mat* mask) const {
@@ -263,6 +354,7 @@ void PixelModel::Differ(const cv::Mat& bgr, const cv::Mat& reference, cv::Mat* m
       *mask &= one;
     }
   }
+  ClearShadows(bgr, scaled, noise_, mask);
 }
 
 }  // namespace armmimic::bgsub

@@ -4,7 +4,13 @@
 // more than that pixel's noise allows. Before comparing, the light is matched: a frame's gain over
 // the standstill is measured per colour channel in blocks of the image (robust medians), smoothed
 // and interpolated, so that a lighting drift, a flicker, a colour cast or a soft shadow passing
-// over the wall and the person changes the reference instead of making the pixels differ.
+// over the wall and the person changes the reference instead of making the pixels differ. The
+// calibration's differences (the standstill's standing body, the arm-length image's straight arm)
+// leave out the room in shadow: a sharp shadow on a wall just behind is narrower than those
+// blocks, and would widen the body and lengthen the arm. A pixel darker than the reference by one
+// factor in every channel, over a patch whose texture the reference shows and the image keeps,
+// is such a shadow, and so is a region of such pixels whose textured pixels keep it. On a plain
+// wall a shadow cannot be told from a sleeve of the wall's colour, and still differs.
 // Private to src/engines.
 #pragma once
 
@@ -37,10 +43,11 @@ class PixelModel {
   // After Compare on the same frame: the pixels of `bgr`'s part `rect` that differ from the third
   // reference in this frame's light (CV_8UC1 0/255, size of `rect`).
   void CompareThird(const cv::Mat& bgr, const cv::Rect& rect, cv::Mat* differs);
-  // The person of the standstill: pixels of the standstill that differ from the empty room.
+  // The person of the standstill: pixels of the standstill that differ from the empty room (the
+  // room in shadow left out).
   void StandstillPerson(cv::Mat* mask) const;
   // Pixels of `bgr` (a whole image, e.g. the arm-length image) that differ from `reference`
-  // (background() or standstill()), one gain per channel removed.
+  // (background() or standstill()), one gain per channel removed; the room in shadow left out.
   void Differ(const cv::Mat& bgr, const cv::Mat& reference, cv::Mat* mask) const;
 
  private:
