@@ -104,7 +104,9 @@ void ClearShadows(const cv::Mat& frame, const cv::Mat& reference, double noise, 
   cv::boxFilter(r.mul(r), mrr, CV_32F, k);
   cv::boxFilter(f.mul(r), mfr, CV_32F, k);
   const double min_var = kTextureNoise * kTextureNoise * std::max(1.0, noise * noise);
-  // 0: no candidate; 1: a candidate on plain reference; 2: texture kept; 3: texture lost.
+  // What each pixel of the mask is: no candidate; a candidate on plain reference; a candidate
+  // whose patch keeps the reference's texture; one whose patch loses it.
+  enum : uchar { kNoCandidate = 0, kPlain, kTextureKeptHere, kTextureLostHere };
   cv::Mat kind = cv::Mat::zeros(frame.size(), CV_8U);
   for (int y = 0; y < frame.rows; ++y) {
     const uchar* m = mask->ptr<uchar>(y);
@@ -119,28 +121,30 @@ void ClearShadows(const cv::Mat& frame, const cv::Mat& reference, double noise, 
         mean += ratio[c] / 3;
       }
       if (mean < kShadowMin || mean > kShadowMax) continue;
-      bool kept = true;
-      for (int c = 0; c < 3; ++c) kept &= std::fabs(ratio[c] - mean) <= kShadowChroma * mean;
-      if (!kept) continue;
-      kd[x] = 1;
+      bool same_colour = true;
+      for (int c = 0; c < 3; ++c) {
+        same_colour &= std::fabs(ratio[c] - mean) <= kShadowChroma * mean;
+      }
+      if (!same_colour) continue;
+      kd[x] = kPlain;
       const double vr = mrr.at<float>(y, x) - mr.at<float>(y, x) * mr.at<float>(y, x);
       const double vf = mff.at<float>(y, x) - mf.at<float>(y, x) * mf.at<float>(y, x);
       if (vr < min_var) continue;
       const double cov = mfr.at<float>(y, x) - mf.at<float>(y, x) * mr.at<float>(y, x);
       const double ncc = vf > 0 ? cov / std::sqrt(vr * vf) : 0;
-      if (ncc >= kTextureKept) kd[x] = 2;
-      if (ncc < kTextureLost) kd[x] = 3;
+      if (ncc >= kTextureKept) kd[x] = kTextureKeptHere;
+      if (ncc < kTextureLost) kd[x] = kTextureLostHere;
     }
   }
   cv::Mat labels;
-  const int n = cv::connectedComponents(kind > 0, labels, 8, CV_32S);
+  const int n = cv::connectedComponents(kind != kNoCandidate, labels, 8, CV_32S);
   std::vector<int> kept(static_cast<std::size_t>(n), 0), lost(static_cast<std::size_t>(n), 0);
   for (int y = 0; y < frame.rows; ++y) {
     const uchar* kd = kind.ptr<uchar>(y);
     const int* l = labels.ptr<int>(y);
     for (int x = 0; x < frame.cols; ++x) {
-      if (kd[x] == 2) ++kept[static_cast<std::size_t>(l[x])];
-      if (kd[x] == 3) ++lost[static_cast<std::size_t>(l[x])];
+      if (kd[x] == kTextureKeptHere) ++kept[static_cast<std::size_t>(l[x])];
+      if (kd[x] == kTextureLostHere) ++lost[static_cast<std::size_t>(l[x])];
     }
   }
   for (int y = 0; y < frame.rows; ++y) {
@@ -148,9 +152,9 @@ void ClearShadows(const cv::Mat& frame, const cv::Mat& reference, double noise, 
     const uchar* kd = kind.ptr<uchar>(y);
     const int* l = labels.ptr<int>(y);
     for (int x = 0; x < frame.cols; ++x) {
-      if (kd[x] == 0 || kd[x] == 3) continue;
+      if (kd[x] == kNoCandidate || kd[x] == kTextureLostHere) continue;
       const std::size_t c = static_cast<std::size_t>(l[x]);
-      if (kd[x] == 2 ||
+      if (kd[x] == kTextureKeptHere ||
           (kept[c] >= kMinKeptPixels && kept[c] >= kShadowRegionShare * (kept[c] + lost[c])))
         m[x] = 0;
     }
