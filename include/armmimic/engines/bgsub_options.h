@@ -22,6 +22,7 @@ struct BgsubOptions {
   // --- The default path (docs/bgsub.md), used only when thesis_mode is false ---
   double rest_deg = -90;             // the standstill pose: arms hanging (thesis 5.2.2)
   double upper_arm_fraction = 0.45;  // upper arm / (shoulder-to-fingertip reach)
+  int max_bend_deg = 150;            // forearms searched within this of the upper arm's direction
 
   // --- Honest status (arm_gate.h), used only when thesis_mode is false ---
   double max_speed_deg_s = 600;  // a segment turning faster than this is a wrong pick: lost

@@ -163,7 +163,7 @@ class BgsubEngine final : public Engine {
     const double upper = options_.upper_arm_fraction * cal_.reach_px;
     evidence_.Begin(cal_, region_.size(), options_.rest_deg);
     fitter_.Begin(static_cast<int>(evidence_.weights().step1()), upper, cal_.reach_px - upper,
-                  cal_.half_width_px);
+                  cal_.half_width_px, options_.max_bend_deg);
     cv::Mat person, uncovered;
     pixels_.StandstillPerson(&person);
     pixels_.Differ(arm_length_bgr_, pixels_.standstill(), &uncovered);

@@ -178,8 +178,10 @@ ArmFitter::Lengths ArmFitter::MakeLengths(double scale) const {
   return l;
 }
 
-void ArmFitter::Begin(int stride, double upper_len, double fore_len, double half_width) {
+void ArmFitter::Begin(int stride, double upper_len, double fore_len, double half_width,
+                      int max_bend_deg) {
   stride_ = stride;
+  max_bend_deg_ = max_bend_deg;
   upper_len_ = upper_len;
   fore_len_ = fore_len;
   half_width_ = half_width;
@@ -361,14 +363,16 @@ ArmFit ArmFitter::FitLengths(const cv::Mat& weights, const cv::Point& origin, co
     const cv::Point2d e = DirectionVector(deg) * l.upper;
     return from + cvRound(e.y) * stride_ + cvRound(e.x);
   };
-  // Each peak's forearm scores (u - 160 .. u + 160 by 2), kept for the best other pose below.
+  // Each peak's forearm scores (u - max_bend .. u + max_bend by 2), kept for the best other pose
+  // below.
+  const int bend = max_bend_deg_;
   std::vector<std::pair<int, std::vector<int>>> fore_scores;
   for (int u : Peaks(up, 4, 4)) {
     const int e = elbow_at(u);
     const cv::Mat& rest = WithoutUpper(weights, origin, u, l.upper);
     Pose best{u, u, std::numeric_limits<int>::min() / 2};
     fore_scores.emplace_back(u, std::vector<int>());
-    for (int f = u - 160; f <= u + 160; f += 2) {
+    for (int f = u - bend; f <= u + bend; f += 2) {
       const int s = Score(rest, e, f, l.fore_rays);
       fore_scores.back().second.push_back(s);
       if (better(s, u, f, best)) best = {u, Wrap360(f), s};
@@ -387,6 +391,7 @@ ArmFit ArmFitter::FitLengths(const cv::Mat& weights, const cv::Point& origin, co
     const cv::Mat& rest = WithoutUpper(weights, origin, u, l.upper);
     for (int df = -2; df <= 2; ++df) {
       const int f = Wrap360(coarse.fore + df);
+      if (std::abs(AngleDiff(f, u)) > bend) continue;
       const int s = up[static_cast<std::size_t>(u)] + Score(rest, e, f, l.fore_rays);
       if (better(s, u, f, best)) best = {u, f, s};
     }
@@ -402,7 +407,7 @@ ArmFit ArmFitter::FitLengths(const cv::Mat& weights, const cv::Point& origin, co
     if (u == best.up) known = &scores;
   }
   const cv::Mat& rest = known ? weights : WithoutUpper(weights, origin, best.up, l.upper);
-  for (int f = best.up - 160, k = 0; f <= best.up + 160; f += 2, ++k) {
+  for (int f = best.up - bend, k = 0; f <= best.up + bend; f += 2, ++k) {
     if (std::abs(AngleDiff(f, best.fore)) <= 15) continue;
     const int s = known ? (*known)[static_cast<std::size_t>(k)] : Score(rest, e, f, l.fore_rays);
     second = std::max(second, up[static_cast<std::size_t>(best.up)] + s);

@@ -56,8 +56,9 @@ struct ArmFit {
 
 class ArmFitter {
  public:
-  // `stride` is the weights' row step; lengths in pixels.
-  void Begin(int stride, double upper_len, double fore_len, double half_width);
+  // `stride` is the weights' row step; lengths in pixels. Forearms are searched within
+  // `max_bend_deg` of the upper arm's direction (an elbow bends so far and no further).
+  void Begin(int stride, double upper_len, double fore_len, double half_width, int max_bend_deg);
   ArmFit Fit(const cv::Mat& weights, const cv::Point& origin) const;
 
  private:
@@ -99,6 +100,7 @@ class ArmFitter {
                               double len) const;
 
   int stride_ = 0;
+  int max_bend_deg_ = 150;
   double upper_len_ = 0, fore_len_ = 0, half_width_ = 0;
   mutable cv::Mat without_upper_;  // WithoutUpper's buffer: Fit's weights but for `cleared_`
   mutable cv::Rect cleared_;       // around the line WithoutUpper cleared last

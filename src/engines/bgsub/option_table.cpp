@@ -42,6 +42,9 @@ const std::vector<OptionField<BgsubOptions>>& BgsubOptionFields() {
               "the standstill pose's direction, degrees (arms hanging: -90)"),
       Real<B>("upper_arm_fraction", &B::upper_arm_fraction, 0.45, 0.11, 0.89, 2,
               "Upper-arm fraction", "upper arm / shoulder-to-fingertip reach"),
+      Int<B>("max_bend_deg", &B::max_bend_deg, 150, 90, 180, "Largest bend",
+             "the forearm is not searched folded further back onto the upper arm, degrees "
+             "(an elbow flexes to about 150)"),
       Real<B>("max_speed_deg_s", &B::max_speed_deg_s, 600, 10, 100000, 0, "Fastest arm turn",
               "a segment turning faster than this, degrees a second, is a wrong pick: lost"),
       Real<B>("min_support", &B::min_support, 0.5, 0, 1, 2, "Minimum support",
