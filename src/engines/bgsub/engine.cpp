@@ -93,7 +93,8 @@ class BgsubEngine final : public Engine {
     gate.max_speed_deg_s = options_.max_speed_deg_s;
     gate.min_support = options_.min_support;
     gate.confirm_frames = options_.confirm_frames;
-    gate.start_confirmed = false;  // until the standstill gives the rest pose (or a first run)
+    gate.start_confirmed = false;   // until the standstill gives the rest pose (or a first run)
+    gate.confirm_after_gap = true;  // each frame is fitted on its own: no tracker carries the arm
     gate_ = ArmGate(gate);
     begun_ = true;
     return Status::Ok();

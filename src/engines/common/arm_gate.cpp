@@ -13,6 +13,7 @@ void ArmGate::Reset() {
   have_last_ = false;
   run_length_ = 0;
   frame_dt_ = 0;
+  seen_ = false;
 }
 
 void ArmGate::Anchor(double upper_deg, double fore_deg, double time_s) {
@@ -50,6 +51,15 @@ void ArmGate::Lose(ArmMeasurement* m, const std::string& why) {
 }
 
 void ArmGate::Review(ArmMeasurement* m, double support) {
+  // The frame step: the smallest time between frames reviewed, with a pose or without.
+  if (seen_ && m->time_s > seen_time_s_) {
+    const double dt = m->time_s - seen_time_s_;
+    frame_dt_ = frame_dt_ > 0 ? std::min(frame_dt_, dt) : dt;
+  }
+  if (std::isfinite(m->time_s)) {
+    seen_ = true;
+    seen_time_s_ = m->time_s;
+  }
   if (m->phase != MeasurementPhase::kOk) {
     run_length_ = 0;
     return;
@@ -66,6 +76,14 @@ void ArmGate::Review(ArmMeasurement* m, double support) {
   if (have_last_ && now.time_s > last_.time_s) {
     const double dt = now.time_s - last_.time_s;
     frame_dt_ = frame_dt_ > 0 ? std::min(frame_dt_, dt) : dt;
+  }
+  if (o_.confirm_after_gap && confirmed_ && have_last_ && frame_dt_ > 0 &&
+      now.time_s - last_.time_s > 1.5 * frame_dt_ && Reach(now.time_s - last_.time_s) >= 180) {
+    // Frames without a pose since the last accepted one, so many that an arm could have turned
+    // anywhere: the speed check vouches for nothing, and the pose needs agreeing frames as after
+    // a rejected jump.
+    confirmed_ = false;
+    run_length_ = 0;
   }
   if (confirmed_) {
     if (!have_last_ || Consistent(last_, now)) {

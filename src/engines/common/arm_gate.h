@@ -4,7 +4,10 @@
 // between them (still images, whose time stamps do not advance, have no speed to check).
 // Otherwise the frame is `lost`, with the reason in the note. After a rejected
 // jump the gate re-acquires the arm by itself once a few consecutive, mutually consistent
-// candidates with good support agree, so a wrong lock is not taken on the first frame.
+// candidates with good support agree, so a wrong lock is not taken on the first frame. For an
+// engine that measures each frame on its own (no tracker carrying the arm through frames it does
+// not report), so it does after a gap long enough for an arm to turn anywhere (half a turn at the
+// fastest speed): there the speed check says nothing about the new pose.
 #pragma once
 
 #include <string>
@@ -21,6 +24,9 @@ struct ArmGateOptions {
   double min_support = 0.3;      // below: the evidence does not carry an estimate
   int confirm_frames = 3;        // agreeing candidates before the gate trusts a new lock
   bool start_confirmed = true;   // the first candidate is trusted (a calibrated start pose)
+  // After frames without a pose, so many that the arm could have turned anywhere, the next
+  // candidate needs confirm_frames agreeing ones (an engine without a tracker of its own).
+  bool confirm_after_gap = false;
 };
 
 class ArmGate {
@@ -49,10 +55,12 @@ class ArmGate {
   ArmGateOptions o_;
   bool confirmed_ = false;  // the last accepted pose is trusted
   bool have_last_ = false;
-  Pose last_;            // last accepted pose
-  Pose run_last_;        // last candidate of the current agreeing run (while unconfirmed)
-  int run_length_ = 0;   // agreeing candidates so far
-  double frame_dt_ = 0;  // smallest time step seen between candidates
+  Pose last_;               // last accepted pose
+  Pose run_last_;           // last candidate of the current agreeing run (while unconfirmed)
+  int run_length_ = 0;      // agreeing candidates so far
+  double frame_dt_ = 0;     // smallest time step seen between frames
+  bool seen_ = false;       // a frame reviewed since Reset()
+  double seen_time_s_ = 0;  // its time
 };
 
 }  // namespace armmimic

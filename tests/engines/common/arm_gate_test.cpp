@@ -31,6 +31,13 @@ bool Ok(ArmGate* gate, int frame, double upper_deg, double fore_deg, double supp
   return m.phase == MeasurementPhase::kOk;
 }
 
+// A frame without a pose (the engine found none, or refused it) at `frame`'s time.
+void Lost(ArmGate* gate, int frame) {
+  ArmMeasurement m = Candidate(frame, std::nan(""), std::nan(""));
+  m.phase = MeasurementPhase::kLost;
+  gate->Review(&m, std::nan(""));
+}
+
 TEST(ArmGate, SmoothMotionUpToTheSpeedLimitStaysOk) {
   ArmGate gate;  // 600 deg/s: 20 degrees a frame at 30 fps
   double upper = -90;
@@ -82,9 +89,37 @@ TEST(ArmGate, ALongGapAllowsAProportionallyLargerMove) {
   ASSERT_TRUE(Ok(&gate, 0, -90, -90));
   ArmMeasurement lost;
   lost.phase = MeasurementPhase::kLost;
-  for (int f = 1; f < 10; ++f) gate.Review(&lost, std::nan(""));
-  // 10 frames at 30 fps: up to 200 degrees of turn are reachable.
-  EXPECT_TRUE(Ok(&gate, 10, 60, 60));
+  for (int f = 1; f < 6; ++f) gate.Review(&lost, std::nan(""));
+  // 6 frames at 30 fps: up to 120 degrees of turn are reachable.
+  EXPECT_TRUE(Ok(&gate, 6, 20, 20));
+}
+
+TEST(ArmGate, AfterAGapLongEnoughToTurnAnywhereAPoseNeedsAgreeingFrames) {
+  ArmGateOptions o;
+  o.confirm_frames = 3;
+  o.confirm_after_gap = true;
+  ArmGate gate(o);
+  ASSERT_TRUE(Ok(&gate, 0, -90, -90));
+  ASSERT_TRUE(Ok(&gate, 1, -89, -89));
+  for (int f = 2; f < 12; ++f) Lost(&gate, f);
+  // 11 frames at 30 fps since the last pose: 220 degrees at 600 deg/s, any pose. Even one next to
+  // the last accepted pose is not vouched for by it.
+  EXPECT_FALSE(Ok(&gate, 12, -88, -88));
+  EXPECT_FALSE(Ok(&gate, 13, -87, -87));
+  EXPECT_TRUE(Ok(&gate, 14, -86, -86));
+  // A wrong reading that does not hold for the agreeing frames is never trusted.
+  ArmGate other(o);
+  ASSERT_TRUE(Ok(&other, 0, -90, -90));
+  for (int f = 1; f < 12; ++f) Lost(&other, f);
+  EXPECT_FALSE(Ok(&other, 12, 180, -88));
+  Lost(&other, 13);
+  EXPECT_FALSE(Ok(&other, 14, -60, -60));
+  // A tracker's gate (the tracker carries the arm through the gap) takes the pose as before.
+  o.confirm_after_gap = false;
+  ArmGate tracker(o);
+  ASSERT_TRUE(Ok(&tracker, 0, -90, -90));
+  for (int f = 1; f < 12; ++f) Lost(&tracker, f);
+  EXPECT_TRUE(Ok(&tracker, 12, -88, -88));
 }
 
 TEST(ArmGate, AnUncalibratedStartNeedsAgreeingFrames) {
