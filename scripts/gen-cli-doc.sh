@@ -36,6 +36,12 @@ own `--help` texts by `scripts/gen-cli-doc.sh`.
   `--progress` / `--no-progress` (default: a progress bar when stderr is a terminal),
   `--version`.
 - `--help` works on every subcommand.
+- **The end of a run** (unless `-q`): `analyze` prints its rows, how many are `ok` and `lost`,
+  the time and the output; where rows were lost, a second line names the three most frequent
+  reasons with their rows, the note the desktop application shows on each lost frame reduced to
+  its reason (details in brackets dropped, numbers written as N): `analyze: lost rows: the
+  forearm lies on pixels that show no arm now (81); the upper arm lies on pixels that show no arm
+  now (6); re-acquiring (2)`.
 - **Outputs** (angle files, images, `.val` programs, summaries, journals, logs) are written
   into what the path names, never over it:
   - a regular file, or a new one, is written to a temporary beside it and renamed into place,

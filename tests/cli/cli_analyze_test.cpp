@@ -58,6 +58,31 @@ TEST(CliAnalyze, MjpgSceneMeetsTheAccuracyTarget) {
   EXPECT_LE(report.summary.overall.mae, 3.0) << synth::FormatScoreSummary(report);
 }
 
+// The report names why rows were lost, with their count: here an arm-length image that shows
+// no arm (the empty room's own mean) leaves bgsub without a calibration on every row.
+TEST(CliAnalyze, TheReportSaysWhyRowsWereLost) {
+  const std::string dir = SceneDir();
+  const std::string bg = dir + "/empty-room.png";
+  ASSERT_EQ(
+      test::RunCli({"-q", "background", dir + "/scene.avi", "-o", bg, "--frames", "45"}).exit_code,
+      0);
+  const test::CliResult r =
+      test::RunCli({"analyze", dir + "/scene.avi", "-o", dir + "/no-arm.tsv", "--engine", "bgsub",
+                    "--background", bg, "--arm-length", bg, "--start", "45", "--no-progress"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(Contains(r.err, "analyze: 90 rows (0 ok, 90 lost)")) << r.err;
+  EXPECT_TRUE(Contains(r.err,
+                       "analyze: lost rows: arm-length image: no arm differs from the "
+                       "standstill (90)\n"))
+      << r.err;
+  // A run with every row ok names no reason.
+  const test::CliResult ok = test::RunCli(
+      {"analyze", dir + "/scene.avi", "-o", dir + "/ok.tsv", "--engine", "bgsub",
+       "--background-frames", "45", "--arm-length", dir + "/armlength.png", "--start", "45"});
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_EQ(Contains(ok.err, "lost rows:"), !Contains(ok.err, " 0 lost)")) << ok.err;
+}
+
 // Every parameter is recorded in the header under its --param name, and a run with exactly
 // those recorded settings makes the same file: the header says how to redo it.
 TEST(CliAnalyze, ChangedParametersAreRecordedAndReproduceTheFile) {
