@@ -8,7 +8,6 @@
 
 #include "armmimic/core/output_file.h"
 #include "armmimic/core/text.h"
-#include "armmimic/engines/lost_reasons.h"
 #include "interrupt.h"
 #include "progress.h"
 
@@ -26,7 +25,6 @@ struct Outcome {
   Status status;
   AnalysisSummary summary;
   int frames_read = 0;
-  LostReasons lost;  // why the lost rows were lost
 };
 
 // How many of the most frequent reasons a report names.
@@ -49,9 +47,6 @@ Outcome Run(const AnalysisOptions& o, const std::string& output, const std::stri
     if (global.quiet) return;
     bar.Finish();  // clears the bar line; the next update draws it again
     std::cerr << "analyze: estimated: " << text << "\n";
-  };
-  cb.on_measurement = [&](const Frame&, const ArmMeasurement& m) {
-    if (m.row()) out.lost.Add(m);
   };
   out.status = AnalyzeToFile(o, output, cb, &out.summary);
   bar.Finish();
@@ -102,8 +97,9 @@ void Report(const AnalysisOptions& o, const std::string& output, const Outcome& 
       }
       std::cerr << "\n";
     }
-    if (r.lost.lost() > 0)
-      std::cerr << "analyze: lost rows: " << r.lost.Text(kReasonsShown) << "\n";
+    if (s.lost > 0) {
+      std::cerr << "analyze: lost rows: " << s.lost_reasons.Text(kReasonsShown) << "\n";
+    }
   }
 }
 

@@ -172,23 +172,30 @@ QString AnalysisJob::adoptResultTexts(const QStringList& texts, const AnalysisOp
 
 QString AnalysisJob::describeResult(bool cancelled) const {
   const QString done = cancelled ? tr("cancelled") : tr("done");
+  // Where the lost rows went: the three most frequent reasons, as the CLI's report names them.
+  const QString why =
+      summary_.lost > 0
+          ? tr("; lost rows: %1").arg(QString::fromStdString(summary_.lost_reasons.Text(3)))
+          : QString();
   if (summary_.arms.size() == 2) {
     const AnalysisSummary::ArmRows &left = summary_.arms[0], &right = summary_.arms[1];
     return tr("Analysis %1: %2 rows per arm, left %3 ok, %4 lost, right %5 ok, %6 lost in %7 s")
-        .arg(done)
-        .arg(left.frames)
-        .arg(left.ok)
-        .arg(left.lost)
-        .arg(right.ok)
-        .arg(right.lost)
-        .arg(summary_.seconds, 0, 'f', 2);
+               .arg(done)
+               .arg(left.frames)
+               .arg(left.ok)
+               .arg(left.lost)
+               .arg(right.ok)
+               .arg(right.lost)
+               .arg(summary_.seconds, 0, 'f', 2) +
+           why;
   }
   return tr("Analysis %1: %2 rows, %3 ok, %4 lost in %5 s")
-      .arg(done)
-      .arg(summary_.frames)
-      .arg(summary_.ok)
-      .arg(summary_.lost)
-      .arg(summary_.seconds, 0, 'f', 2);
+             .arg(done)
+             .arg(summary_.frames)
+             .arg(summary_.ok)
+             .arg(summary_.lost)
+             .arg(summary_.seconds, 0, 'f', 2) +
+         why;
 }
 
 bool AnalysisJob::start(const AnalysisOptions& options, bool live) {

@@ -70,7 +70,7 @@ class AnalysisJob : public QObject {
   // both arms, to the arm files of `path` (A.left.tsv and A.right.tsv for A.tsv, ArmOutputPaths).
   // Returns "" or what went wrong, naming the file.
   QString exportResult(const QString& path) const;
-  // "Analysis done: 40 rows, 38 ok, 2 lost in 0.25 s"
+  // "Analysis done: 40 rows, 38 ok, 2 lost in 0.25 s; lost rows: no arm (2)"
   QString describeResult(bool cancelled) const;
   // Takes an angle file made elsewhere (File > Open angle file) as the result: export copies it.
   void adoptResult(const QString& path);

@@ -103,6 +103,21 @@ TEST_F(AnalysisExportTest, BgsubOverlayFollowsTruthAndExportEqualsCli) {
   EXPECT_EQ(static_cast<int>(file.rows.size()), s.motion_frames);
 }
 
+// The end-of-run message says why rows were lost, as the CLI's report does: here an arm-length
+// image that shows no arm (the empty room itself) leaves bgsub without a calibration.
+TEST_F(AnalysisExportTest, TheEndOfRunMessageSaysWhyRowsWereLost) {
+  const GuiScenes& s = scenes();
+  MainWindow w;
+  AnalysisOptions o = s.BgsubProtocol();
+  o.arm_length_path = s.background();
+  Run(w, {QString::fromStdString(s.video())}, o);
+  EXPECT_EQ(w.job()->summary().lost, s.motion_frames);
+  const std::string expected = "lost rows: arm-length image: no arm differs from the standstill (" +
+                               std::to_string(s.motion_frames) + ")";
+  EXPECT_NE(w.log()->text().toStdString().find(expected), std::string::npos)
+      << w.log()->text().toStdString();
+}
+
 TEST_F(AnalysisExportTest, LkExportEqualsCli) {
   const GuiScenes& s = scenes();
   MainWindow w;

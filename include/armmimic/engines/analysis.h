@@ -18,6 +18,7 @@
 #include "armmimic/core/status.h"
 #include "armmimic/core/video_source.h"
 #include "armmimic/engines/engine_options.h"
+#include "armmimic/engines/lost_reasons.h"
 #include "armmimic/engines/measurement.h"
 #include "armmimic/engines/pose_options.h"
 
@@ -81,7 +82,8 @@ struct AnalysisSummary {
     int frames = 0, ok = 0, lost = 0;
   };
   std::vector<ArmRows> arms;
-  double seconds = 0;  // wall time of the whole run
+  LostReasons lost_reasons;  // why the lost rows were lost, every arm's
+  double seconds = 0;        // wall time of the whole run
   bool cancelled = false;
   VideoInfo video;      // as opened (frame_count: what the file announces)
   int last_frame = -1;  // index of the last frame read, -1 if none

@@ -128,6 +128,7 @@ void CountRows(const ArmMeasurement& m, AnalysisSummary* summary) {
     (ok ? rows.ok : rows.lost)++;
     (ok ? summary->ok : summary->lost)++;
   }
+  summary->lost_reasons.Add(m);
 }
 
 using RowSink = std::function<Status(const ArmMeasurement&)>;
