@@ -14,6 +14,7 @@ void ArmGate::Reset() {
   run_length_ = 0;
   frame_dt_ = 0;
   seen_ = false;
+  after_gap_s_ = 0;
 }
 
 void ArmGate::Anchor(double upper_deg, double fore_deg, double time_s) {
@@ -84,6 +85,7 @@ void ArmGate::Review(ArmMeasurement* m, double support) {
     // a rejected jump.
     confirmed_ = false;
     run_length_ = 0;
+    after_gap_s_ = now.time_s - last_.time_s;
   }
   if (confirmed_) {
     if (!have_last_ || Consistent(last_, now)) {
@@ -95,6 +97,7 @@ void ArmGate::Review(ArmMeasurement* m, double support) {
                                  std::abs(AngleDiff(now.bend_deg, last_.bend_deg)));
     const double dt = now.time_s - last_.time_s;
     confirmed_ = false;
+    after_gap_s_ = 0;
     run_last_ = now;
     run_length_ = 1;
     Lose(m, "jump of " + FormatNumber(turn, 0) + " deg in " + FormatNumber(dt, 3) +
@@ -112,8 +115,10 @@ void ArmGate::Review(ArmMeasurement* m, double support) {
     m->note = "re-acquired; " + m->note;
     return;
   }
-  Lose(m, "re-acquiring (" + std::to_string(run_length_) + "/" + std::to_string(o_.confirm_frames) +
-              " agreeing frames)");
+  const std::string gap =
+      after_gap_s_ > 0 ? " after " + FormatNumber(after_gap_s_, 2) + " s without a pose" : "";
+  Lose(m, "re-acquiring" + gap + " (" + std::to_string(run_length_) + "/" +
+              std::to_string(o_.confirm_frames) + " agreeing frames)");
 }
 
 }  // namespace armmimic

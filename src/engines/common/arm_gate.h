@@ -61,6 +61,7 @@ class ArmGate {
   double frame_dt_ = 0;     // smallest time step seen between frames
   bool seen_ = false;       // a frame reviewed since Reset()
   double seen_time_s_ = 0;  // its time
+  double after_gap_s_ = 0;  // unconfirmed by a gap this long (0: by a jump, or at the start)
 };
 
 }  // namespace armmimic

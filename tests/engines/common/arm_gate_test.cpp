@@ -104,7 +104,10 @@ TEST(ArmGate, AfterAGapLongEnoughToTurnAnywhereAPoseNeedsAgreeingFrames) {
   for (int f = 2; f < 12; ++f) Lost(&gate, f);
   // 11 frames at 30 fps since the last pose: 220 degrees at 600 deg/s, any pose. Even one next to
   // the last accepted pose is not vouched for by it.
-  EXPECT_FALSE(Ok(&gate, 12, -88, -88));
+  ArmMeasurement first = Candidate(12, -88, -88);
+  gate.Review(&first, 1);
+  EXPECT_EQ(first.phase, MeasurementPhase::kLost);
+  EXPECT_EQ(first.note, "re-acquiring after 0.37 s without a pose (1/3 agreeing frames)");
   EXPECT_FALSE(Ok(&gate, 13, -87, -87));
   EXPECT_TRUE(Ok(&gate, 14, -86, -86));
   // A wrong reading that does not hold for the agreeing frames is never trusted.
