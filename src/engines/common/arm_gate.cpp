@@ -13,7 +13,7 @@ void ArmGate::Reset() {
   have_last_ = false;
   run_length_ = 0;
   frame_dt_ = 0;
-  seen_ = false;
+  missed_ = 0;
   after_gap_s_ = 0;
 }
 
@@ -24,6 +24,7 @@ void ArmGate::Anchor(double upper_deg, double fore_deg, double time_s) {
   have_last_ = true;
   confirmed_ = true;
   run_length_ = 0;
+  missed_ = 0;
 }
 
 double ArmGate::Reach(double dt_s) const {
@@ -52,21 +53,14 @@ void ArmGate::Lose(ArmMeasurement* m, const std::string& why) {
 }
 
 void ArmGate::Review(ArmMeasurement* m, double support) {
-  // The frame step: the smallest time between frames reviewed, with a pose or without.
-  if (seen_ && m->time_s > seen_time_s_) {
-    const double dt = m->time_s - seen_time_s_;
-    frame_dt_ = frame_dt_ > 0 ? std::min(frame_dt_, dt) : dt;
-  }
-  if (std::isfinite(m->time_s)) {
-    seen_ = true;
-    seen_time_s_ = m->time_s;
-  }
   if (m->phase != MeasurementPhase::kOk) {
     run_length_ = 0;
+    ++missed_;
     return;
   }
   if (std::isfinite(support) && support < o_.min_support) {
     run_length_ = 0;
+    ++missed_;
     Lose(m, "evidence too weak (support " + FormatNumber(support, 2) + ")");
     return;
   }
@@ -78,8 +72,8 @@ void ArmGate::Review(ArmMeasurement* m, double support) {
     const double dt = now.time_s - last_.time_s;
     frame_dt_ = frame_dt_ > 0 ? std::min(frame_dt_, dt) : dt;
   }
-  if (o_.confirm_after_gap && confirmed_ && have_last_ && frame_dt_ > 0 &&
-      now.time_s - last_.time_s > 1.5 * frame_dt_ && Reach(now.time_s - last_.time_s) >= 180) {
+  if (o_.confirm_after_gap && confirmed_ && have_last_ && missed_ > 0 &&
+      Reach(now.time_s - last_.time_s) >= 180) {
     // Frames without a pose since the last accepted one, so many that an arm could have turned
     // anywhere: the speed check vouches for nothing, and the pose needs agreeing frames as after
     // a rejected jump.
@@ -91,6 +85,7 @@ void ArmGate::Review(ArmMeasurement* m, double support) {
     if (!have_last_ || Consistent(last_, now)) {
       last_ = now;
       have_last_ = true;
+      missed_ = 0;
       return;
     }
     const double turn = std::max(std::abs(AngleDiff(now.upper_deg, last_.upper_deg)),
@@ -98,6 +93,7 @@ void ArmGate::Review(ArmMeasurement* m, double support) {
     const double dt = now.time_s - last_.time_s;
     confirmed_ = false;
     after_gap_s_ = 0;
+    ++missed_;
     run_last_ = now;
     run_length_ = 1;
     Lose(m, "jump of " + FormatNumber(turn, 0) + " deg in " + FormatNumber(dt, 3) +
@@ -112,9 +108,11 @@ void ArmGate::Review(ArmMeasurement* m, double support) {
     run_length_ = 0;
     last_ = now;
     have_last_ = true;
+    missed_ = 0;
     m->note = "re-acquired; " + m->note;
     return;
   }
+  ++missed_;
   const std::string gap =
       after_gap_s_ > 0 ? " after " + FormatNumber(after_gap_s_, 2) + " s without a pose" : "";
   Lose(m, "re-acquiring" + gap + " (" + std::to_string(run_length_) + "/" +

@@ -24,8 +24,9 @@ struct ArmGateOptions {
   double min_support = 0.3;      // below: the evidence does not carry an estimate
   int confirm_frames = 3;        // agreeing candidates before the gate trusts a new lock
   bool start_confirmed = true;   // the first candidate is trusted (a calibrated start pose)
-  // After frames without a pose, so many that the arm could have turned anywhere, the next
-  // candidate needs confirm_frames agreeing ones (an engine without a tracker of its own).
+  // After frames without a pose, over a time in which the arm could have turned anywhere, the
+  // next candidate needs confirm_frames agreeing ones (an engine without a tracker of its own).
+  // Frames that come slowly, each with a pose, are no gap.
   bool confirm_after_gap = false;
 };
 
@@ -58,9 +59,8 @@ class ArmGate {
   Pose last_;               // last accepted pose
   Pose run_last_;           // last candidate of the current agreeing run (while unconfirmed)
   int run_length_ = 0;      // agreeing candidates so far
-  double frame_dt_ = 0;     // smallest time step seen between frames
-  bool seen_ = false;       // a frame reviewed since Reset()
-  double seen_time_s_ = 0;  // its time
+  double frame_dt_ = 0;     // smallest time step seen between candidates
+  int missed_ = 0;          // frames reviewed since the last accepted pose, none accepted
   double after_gap_s_ = 0;  // unconfirmed by a gap this long (0: by a jump, or at the start)
 };
 

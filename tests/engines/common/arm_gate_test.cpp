@@ -117,6 +117,15 @@ TEST(ArmGate, AfterAGapLongEnoughToTurnAnywhereAPoseNeedsAgreeingFrames) {
   EXPECT_FALSE(Ok(&other, 12, 180, -88));
   Lost(&other, 13);
   EXPECT_FALSE(Ok(&other, 14, -60, -60));
+  // Frames that come slowly (a live source falling behind) but each with a pose are no gap: the
+  // speed check vouches for every one.
+  ArmGate slow(o);
+  for (int f = 0; f < 5; ++f) {
+    ArmMeasurement m = Candidate(f, -90 + 5 * f, -90 + 5 * f);
+    m.time_s = 0.4 * f;
+    slow.Review(&m, 1);
+    EXPECT_EQ(m.phase, MeasurementPhase::kOk) << "frame " << f << ": " << m.note;
+  }
   // A tracker's gate (the tracker carries the arm through the gap) takes the pose as before.
   o.confirm_after_gap = false;
   ArmGate tracker(o);
