@@ -27,9 +27,6 @@ struct Outcome {
   int frames_read = 0;
 };
 
-// How many of the most frequent reasons a report names.
-constexpr std::size_t kReasonsShown = 3;
-
 // Runs one analysis with a progress bar labelled `label`; `quiet` drops the estimate notes.
 Outcome Run(const AnalysisOptions& o, const std::string& output, const std::string& label,
             const GlobalOptions& global) {
@@ -98,7 +95,7 @@ void Report(const AnalysisOptions& o, const std::string& output, const Outcome& 
       std::cerr << "\n";
     }
     if (s.lost > 0) {
-      std::cerr << "analyze: lost rows: " << s.lost_reasons.Text(kReasonsShown) << "\n";
+      std::cerr << "analyze: lost rows: " << s.lost_reasons.Text(LostReasons::kReported) << "\n";
     }
   }
 }

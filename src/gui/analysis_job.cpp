@@ -172,10 +172,11 @@ QString AnalysisJob::adoptResultTexts(const QStringList& texts, const AnalysisOp
 
 QString AnalysisJob::describeResult(bool cancelled) const {
   const QString done = cancelled ? tr("cancelled") : tr("done");
-  // Where the lost rows went: the three most frequent reasons, as the CLI's report names them.
+  // Where the lost rows went: the most frequent reasons, as the CLI's report names them.
   const QString why =
       summary_.lost > 0
-          ? tr("; lost rows: %1").arg(QString::fromStdString(summary_.lost_reasons.Text(3)))
+          ? tr("; lost rows: %1")
+                .arg(QString::fromStdString(summary_.lost_reasons.Text(LostReasons::kReported)))
           : QString();
   if (summary_.arms.size() == 2) {
     const AnalysisSummary::ArmRows &left = summary_.arms[0], &right = summary_.arms[1];

@@ -4,6 +4,7 @@
 // most frequent ones after a run, so an operator sees what the coverage went to.
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <string>
 #include <utility>
@@ -15,9 +16,13 @@ namespace armmimic {
 
 class LostReasons {
  public:
+  // How many reasons the shells' end-of-run reports name (the CLI's and the desktop
+  // application's alike).
+  static constexpr std::size_t kReported = 3;
+
   // Counts the lost rows of `m` (each arm's, with the pose engine's side both).
   void Add(const ArmMeasurement& m);
-  int lost() const { return lost_; }
+  int lost() const;  // the lost rows counted
   // The reasons, most frequent first (ties in alphabetical order).
   std::vector<std::pair<std::string, int>> Ranked() const;
   // One line, the `top` most frequent reasons with their rows: "the forearm lies on pixels that
@@ -31,7 +36,6 @@ class LostReasons {
 
  private:
   std::map<std::string, int> counts_;
-  int lost_ = 0;
 };
 
 }  // namespace armmimic

@@ -100,7 +100,7 @@ class ArmFitter {
                               double len) const;
 
   int stride_ = 0;
-  int max_bend_deg_ = 150;
+  int max_bend_deg_ = 0;
   double upper_len_ = 0, fore_len_ = 0, half_width_ = 0;
   mutable cv::Mat without_upper_;  // WithoutUpper's buffer: Fit's weights but for `cleared_`
   mutable cv::Rect cleared_;       // around the line WithoutUpper cleared last

@@ -13,7 +13,7 @@ void ArmGate::Reset() {
   have_last_ = false;
   run_length_ = 0;
   frame_dt_ = 0;
-  missed_ = 0;
+  missed_ = false;
   after_gap_s_ = 0;
 }
 
@@ -24,7 +24,7 @@ void ArmGate::Anchor(double upper_deg, double fore_deg, double time_s) {
   have_last_ = true;
   confirmed_ = true;
   run_length_ = 0;
-  missed_ = 0;
+  missed_ = false;
 }
 
 double ArmGate::Reach(double dt_s) const {
@@ -55,12 +55,12 @@ void ArmGate::Lose(ArmMeasurement* m, const std::string& why) {
 void ArmGate::Review(ArmMeasurement* m, double support) {
   if (m->phase != MeasurementPhase::kOk) {
     run_length_ = 0;
-    ++missed_;
+    missed_ = true;
     return;
   }
   if (std::isfinite(support) && support < o_.min_support) {
     run_length_ = 0;
-    ++missed_;
+    missed_ = true;
     Lose(m, "evidence too weak (support " + FormatNumber(support, 2) + ")");
     return;
   }
@@ -72,7 +72,7 @@ void ArmGate::Review(ArmMeasurement* m, double support) {
     const double dt = now.time_s - last_.time_s;
     frame_dt_ = frame_dt_ > 0 ? std::min(frame_dt_, dt) : dt;
   }
-  if (o_.confirm_after_gap && confirmed_ && have_last_ && missed_ > 0 &&
+  if (o_.confirm_after_gap && confirmed_ && have_last_ && missed_ &&
       Reach(now.time_s - last_.time_s) >= 180) {
     // Frames without a pose since the last accepted one, so many that an arm could have turned
     // anywhere: the speed check vouches for nothing, and the pose needs agreeing frames as after
@@ -85,7 +85,7 @@ void ArmGate::Review(ArmMeasurement* m, double support) {
     if (!have_last_ || Consistent(last_, now)) {
       last_ = now;
       have_last_ = true;
-      missed_ = 0;
+      missed_ = false;
       return;
     }
     const double turn = std::max(std::abs(AngleDiff(now.upper_deg, last_.upper_deg)),
@@ -93,7 +93,6 @@ void ArmGate::Review(ArmMeasurement* m, double support) {
     const double dt = now.time_s - last_.time_s;
     confirmed_ = false;
     after_gap_s_ = 0;
-    ++missed_;
     run_last_ = now;
     run_length_ = 1;
     Lose(m, "jump of " + FormatNumber(turn, 0) + " deg in " + FormatNumber(dt, 3) +
@@ -108,11 +107,10 @@ void ArmGate::Review(ArmMeasurement* m, double support) {
     run_length_ = 0;
     last_ = now;
     have_last_ = true;
-    missed_ = 0;
+    missed_ = false;
     m->note = "re-acquired; " + m->note;
     return;
   }
-  ++missed_;
   const std::string gap =
       after_gap_s_ > 0 ? " after " + FormatNumber(after_gap_s_, 2) + " s without a pose" : "";
   Lose(m, "re-acquiring" + gap + " (" + std::to_string(run_length_) + "/" +

@@ -60,7 +60,7 @@ class ArmGate {
   Pose run_last_;           // last candidate of the current agreeing run (while unconfirmed)
   int run_length_ = 0;      // agreeing candidates so far
   double frame_dt_ = 0;     // smallest time step seen between candidates
-  int missed_ = 0;          // frames reviewed since the last accepted pose, none accepted
+  bool missed_ = false;     // a frame without a pose since the last accepted one
   double after_gap_s_ = 0;  // unconfirmed by a gap this long (0: by a jump, or at the start)
 };
 

@@ -40,8 +40,13 @@ void LostReasons::Add(const ArmMeasurement& m) {
   for (const ArmMeasurement* arm : m.Arms()) {
     if (arm->phase != MeasurementPhase::kLost) continue;
     ++counts_[Reason(arm->note)];
-    ++lost_;
   }
+}
+
+int LostReasons::lost() const {
+  int n = 0;
+  for (const auto& [reason, count] : counts_) n += count;
+  return n;
 }
 
 std::vector<std::pair<std::string, int>> LostReasons::Ranked() const {
@@ -60,10 +65,11 @@ std::string LostReasons::Text(std::size_t top) const {
             ")";
     shown += ranked[i].second;
   }
-  if (shown < lost_) {
+  const int all = lost();
+  if (shown < all) {
     const std::size_t others = ranked.size() - top;
     text += "; " + std::to_string(others) + " other reason" + (others == 1 ? "" : "s") + " (" +
-            std::to_string(lost_ - shown) + ")";
+            std::to_string(all - shown) + ")";
   }
   return text;
 }
