@@ -40,7 +40,8 @@ function(armmimic_add_test_suite)
   add_executable(${T_NAME} ${_srcs} ${PROJECT_SOURCE_DIR}/tests/common/test_main.cpp
     ${PROJECT_SOURCE_DIR}/tests/common/test_util.cpp)
   target_include_directories(${T_NAME} PRIVATE ${PROJECT_SOURCE_DIR}/tests/common)
-  target_link_libraries(${T_NAME} PRIVATE ${T_DEPS} GTest::gtest)
+  # The suites make and check videos and images with OpenCV's own codecs.
+  target_link_libraries(${T_NAME} PRIVATE ${T_DEPS} opencv_imgcodecs opencv_videoio GTest::gtest)
   target_compile_definitions(${T_NAME} PRIVATE
     ARMMIMIC_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     ARMMIMIC_CLI_PATH="$<TARGET_FILE:armmimic-cli>")

@@ -96,11 +96,13 @@ fetch_model() {
   } >"$dir/README"
 }
 
-# armmimic-cli: compiler, CMake, Qt Core + SerialPort (moc from qt6-base-dev-tools), OpenCV, Eigen.
+# armmimic-cli: compiler, CMake, Qt Core + SerialPort (moc from qt6-base-dev-tools), OpenCV, Eigen,
+# and FFmpeg and libpng, which read videos and PNG images without OpenCV's codecs.
 CLI_PACKAGES=(
   cmake ninja-build g++ pkg-config
   qt6-base-dev qt6-base-dev-tools qt6-serialport-dev
   libopencv-dev libeigen3-dev
+  libavformat-dev libavcodec-dev libswscale-dev libavutil-dev libpng-dev
 )
 # The rest of the build: the GUI, the test and benchmark libraries, and the package tools
 # (help2man makes the man pages; dpkg-dev and file let `cpack -G DEB` find library dependencies).

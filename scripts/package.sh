@@ -65,7 +65,7 @@ check_contents() {
     exit 1
   fi
 }
-check_contents "$deb" ./usr/bin/armmimic ./usr/bin/armmimic-cli \
+check_contents "$deb" ./usr/bin/armmimic ./usr/bin/armmimic-cli ./usr/lib/armmimic/armmimic-cvio.so \
   ./usr/share/applications/armmimic.desktop ./usr/share/icons/hicolor/scalable/apps/armmimic.svg \
   ./usr/share/man/man1/armmimic-cli.1.gz ./usr/share/man/man1/armmimic.1.gz
 echo "$deb: $(du -k "$deb" | cut -f1) KiB; depends: $(dpkg-deb -f "$deb" Depends);" \

@@ -9,10 +9,11 @@
 
 #include <sys/stat.h>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "armmimic/core/output_file.h"
+#include "cvio_loader.h"
+#include "png_reader.h"
 
 namespace armmimic {
 namespace {
@@ -70,13 +71,19 @@ Status ReadImage(const std::string& path, cv::Mat* bgr) {
   }
   if (st.st_size == 0) return Status::Error(path + ": empty file (0 bytes), not an image");
   cv::Mat raw;
-  try {
-    raw = cv::imread(path, cv::IMREAD_UNCHANGED);
-  } catch (const cv::Exception& e) {
-    return Status::Error(path + ": cannot decode image (" + e.msg + ")");
-  }
-  if (raw.empty()) {
-    return Status::Error(path + ": not a readable image (unknown format or corrupt data)");
+  std::string why;
+  if (internal::LooksLikePng(path)) {
+    // PNG, the format of backgrounds and arm-length images, without the codec module.
+    if (!internal::ReadPng(path, &raw, &why)) {
+      return Status::Error(path + ": not a readable image (corrupt PNG data: " + why + ")");
+    }
+  } else {
+    Status loaded;
+    const cvio::Api* api = internal::CvioModule(&loaded);
+    if (!api) return Status::Error(path + ": cannot decode image (" + loaded.message() + ")");
+    if (!api->read_image(path, &raw, &why)) {
+      return Status::Error(path + ": not a readable image (" + why + ")");
+    }
   }
   cv::Mat out;
   Status s = ToBgr8(raw, path, &out);
@@ -92,18 +99,34 @@ Status WriteImageAtomically(const std::string& path, const cv::Mat& image) {
   if (ext.empty()) {
     return Status::Error(path + ": no file extension; use .png, .jpg, .bmp, .tif, .pgm or .ppm");
   }
-  if (!cv::haveImageWriter("x" + ext)) {
-    return Status::Error(path + ": cannot write images with extension " + ext);
-  }
-  std::vector<uchar> bytes;
-  try {
-    if (!cv::imencode(ext, image, bytes)) {
-      return Status::Error(path + ": encoding as " + ext + " failed");
-    }
-  } catch (const cv::Exception& e) {
-    return Status::Error(path + ": encoding as " + ext + " failed (" + e.msg + ")");
+  std::vector<unsigned char> bytes;
+  if (Status st = EncodeImage(ext, image, {}, &bytes); !st) {
+    return Status::Error(path + ": " + st.message());
   }
   return WriteOutputFile(path, std::string(bytes.begin(), bytes.end()));
+}
+
+Status EncodeImage(const std::string& ext, const cv::Mat& image, const std::vector<int>& params,
+                   std::vector<unsigned char>* bytes) {
+  Status loaded;
+  const cvio::Api* api = internal::CvioModule(&loaded);
+  if (!api) return Status::Error("cannot encode images (" + loaded.message() + ")");
+  if (!api->have_image_writer(ext)) {
+    return Status::Error("cannot write images with extension " + ext);
+  }
+  std::string why;
+  if (!api->encode_image(ext, image, params, bytes, &why)) {
+    return Status::Error("encoding as " + ext + " failed (" + why + ")");
+  }
+  return Status::Ok();
+}
+
+Status DecodeImage(const std::vector<unsigned char>& bytes, cv::Mat* bgr) {
+  Status loaded;
+  const cvio::Api* api = internal::CvioModule(&loaded);
+  if (!api) return Status::Error("cannot decode images (" + loaded.message() + ")");
+  if (!api->decode_image(bytes, bgr)) return Status::Error("the encoded image does not decode");
+  return Status::Ok();
 }
 
 }  // namespace armmimic

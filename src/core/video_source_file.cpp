@@ -1,10 +1,10 @@
-// VideoSource over a video file, decoded by OpenCV's FFmpeg backend.
+// VideoSource over a video file, decoded by FFmpeg (ffmpeg_reader.h).
 #include <cmath>
 #include <cstdlib>
 
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
+#include "ffmpeg_reader.h"
 #include "video_source_impl.h"
 
 namespace armmimic::internal {
@@ -15,17 +15,6 @@ namespace {
 constexpr int kRetriesAfterFailure = 3;
 // Forward seeks up to this many frames decode their way there instead of asking the demuxer.
 constexpr int kMaxDecodeForward = 64;
-
-std::string FourccText(double value) {
-  const int v = static_cast<int>(value);
-  std::string s;
-  for (int i = 0; i < 4; ++i) {
-    const char c = static_cast<char>((v >> (8 * i)) & 0xFF);
-    if (c >= 32 && c < 127) s += c;
-  }
-  while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s;
-}
 
 // Converts a decoded frame to 8-bit BGR in place; false for a layout we cannot use.
 bool ToBgr(cv::Mat* img) {
@@ -60,12 +49,10 @@ class VideoFileSource : public VideoSource {
     if (!ToBgr(&first)) return Status::Error(info_.path + ": unsupported pixel layout");
     info_.kind = SourceKind::kVideo;
     info_.size = first.size();
-    const double fps = cap_.get(cv::CAP_PROP_FPS);
+    const double fps = reader_.fps();
     info_.fps = std::isfinite(fps) && fps > 0 && fps < 1000 ? fps : 0;
-    const double count = cap_.get(cv::CAP_PROP_FRAME_COUNT);
-    info_.frame_count =
-        std::isfinite(count) && count >= 1 ? static_cast<int>(std::lround(count)) : -1;
-    info_.codec = FourccText(cap_.get(cv::CAP_PROP_FOURCC));
+    info_.frame_count = reader_.frame_count() >= 1 ? reader_.frame_count() : -1;
+    info_.codec = reader_.fourcc();
     // Keep the proving frame for the first Read() rather than rewinding the demuxer.
     pending_ = first;
     pending_index_ = 0;
@@ -134,14 +121,7 @@ class VideoFileSource : public VideoSource {
     }
     pending_.release();
     if (index < cap_next_ || index - cap_next_ > kMaxDecodeForward) {
-      bool placed = false;
-      try {
-        placed = cap_.set(cv::CAP_PROP_POS_FRAMES, index) &&
-                 std::lround(cap_.get(cv::CAP_PROP_POS_FRAMES)) == index;
-      } catch (const cv::Exception&) {
-        placed = false;
-      }
-      if (placed) {
+      if (reader_.SeekTo(index)) {
         cap_next_ = next_ = index;
         return Status::Ok();
       }
@@ -151,7 +131,7 @@ class VideoFileSource : public VideoSource {
       cap_next_ = 0;
     }
     while (cap_next_ < index) {
-      if (!cap_.grab()) {
+      if (!reader_.Grab()) {
         const int reached = cap_next_;
         next_ = cap_next_;
         return Status::Error(info_.path + ": cannot seek to frame " + std::to_string(index) +
@@ -165,32 +145,20 @@ class VideoFileSource : public VideoSource {
 
  private:
   Status OpenCapture() {
-    QuietFfmpegLog();
-    cap_.release();
-    bool opened = false;
-    try {
-      opened = cap_.open(info_.path, cv::CAP_FFMPEG);
-    } catch (const cv::Exception& e) {
-      return Status::Error(info_.path + ": cannot open as a video (" + e.msg + ")");
-    }
-    if (!opened) {
+    std::string why;
+    if (!reader_.Open(info_.path, &why)) {
       return Status::Error(info_.path +
                            ": cannot open as a video (not a video file, damaged header, or a "
-                           "codec this build cannot decode)");
+                           "codec this build cannot decode: " +
+                           why + ")");
     }
     return Status::Ok();
   }
 
-  bool Decode(cv::Mat* img) {
-    try {
-      return cap_.read(*img) && !img->empty();
-    } catch (const cv::Exception&) {
-      return false;
-    }
-  }
+  bool Decode(cv::Mat* img) { return reader_.Read(img) && !img->empty(); }
 
   VideoInfo info_;
-  cv::VideoCapture cap_;
+  FfmpegReader reader_;
   cv::Mat pending_;  // a frame already decoded, to be returned when next_ == pending_index_
   int pending_index_ = -1;
   int next_ = 0;      // index of the frame the next Read() returns

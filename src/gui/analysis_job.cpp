@@ -5,8 +5,7 @@
 #include <QElapsedTimer>
 #include <QFileInfo>
 
-#include <opencv2/imgcodecs.hpp>
-
+#include "armmimic/core/image_io.h"
 #include "armmimic/core/output_file.h"
 #include "video_player.h"
 
@@ -39,12 +38,12 @@ void AnalysisWorker::estimateBackground(const QStringList& inputs, int start, in
   Status st = EstimateBackground(list, start, count, &background, cb);
   if (st && cancel_->load()) st = Status::Error("background estimation cancelled");
   if (st) {
-    std::vector<uchar> png;
+    std::vector<unsigned char> png;
     const std::string path = output_path.toStdString();
     std::string ext = QFileInfo(output_path).suffix().toLower().toStdString();
     if (ext.empty()) ext = "png";
-    if (!cv::imencode("." + ext, background, png)) {
-      st = Status::Error(path + ": cannot encode the background as ." + ext);
+    if (Status encoded = EncodeImage("." + ext, background, {}, &png); !encoded) {
+      st = Status::Error(path + ": cannot encode the background (" + encoded.message() + ")");
     } else {
       st = WriteOutputFile(path, std::string(png.begin(), png.end()));
     }

@@ -2,15 +2,15 @@
 // WriteArmScene for the fixed room.
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <system_error>
 
 #include <unistd.h>
 
-#include <opencv2/videoio.hpp>
-
 #include "armmimic/core/angle_file.h"
 #include "armmimic/core/image_io.h"
 #include "armmimic/core/output_file.h"
+#include "armmimic/core/video_writer.h"
 #include "armmimic/synth/arm_scene.h"
 
 namespace armmimic::synth {
@@ -46,34 +46,14 @@ Status WriteSceneFolder(const ArmSceneSource& scene, const SceneVideo& video,
   if (Status st = video_file.OpenNamed(video_path); !st) return st;
   const std::string temp_path = video_file.temp_path();
   {
-    const std::string& c = video.codec;
-    if (c.size() != 4) return Status::Error("codec '" + c + "' is not a four-character code");
-    int api = cv::CAP_FFMPEG;
-    if (c == "MJPG" && video.jpeg_quality > 0) {
-      // An explicit quality needs OpenCV's own MJPEG writer, which honours it (FFmpeg's does
-      // not; it gives about half the size at the same fidelity, so it is the default).
-      api = cv::CAP_OPENCV_MJPEG;
-    }
-    const int fourcc = cv::VideoWriter::fourcc(c[0], c[1], c[2], c[3]);
-    cv::VideoWriter writer;
-    auto open = [&](int backend) {
-      try {
-        writer.open(temp_path, backend, fourcc, scene.fps(), scene.size());
-      } catch (const cv::Exception&) {
-        writer.release();
-      }
-    };
-    open(api);
-    if (!writer.isOpened() && c == "MJPG" && api != cv::CAP_OPENCV_MJPEG) {
-      open(cv::CAP_OPENCV_MJPEG);  // always built in
-    }
-    if (writer.isOpened() && c == "MJPG" && video.jpeg_quality > 0) {
-      writer.set(cv::VIDEOWRITER_PROP_QUALITY, video.jpeg_quality);
-    }
-    if (!writer.isOpened()) {
-      return Status::Error(
-          "arm_scene.codec",
-          video_path + ": codec " + c + " has no encoder for AVI in this OpenCV build (try MJPG)");
+    Status opened;
+    std::unique_ptr<VideoFileWriter> writer = VideoFileWriter::Open(
+        temp_path, video.codec, scene.fps(), scene.size(), video.jpeg_quality, &opened);
+    if (!writer) {
+      // The message names the temporary; the user asked for scene.avi.
+      std::string message = opened.message();
+      if (message.rfind(temp_path, 0) == 0) message = video_path + message.substr(temp_path.size());
+      return Status::Error("arm_scene.codec", message);
     }
     const int n = scene.frame_count();
     for (int f = 0; f < n; ++f) {
@@ -81,10 +61,10 @@ Status WriteSceneFolder(const ArmSceneSource& scene, const SceneVideo& video,
         return Status::Error(outdir + ": cancelled after " + std::to_string(f) +
                              " frames; nothing written");
       }
-      writer.write(scene.Render(f));
+      writer->Write(scene.Render(f));
       if (progress) progress(f + 1, n);
     }
-    writer.release();
+    writer->Close();
   }
   std::error_code size_ec;
   if (std::filesystem::file_size(temp_path, size_ec) == 0 || size_ec) {

@@ -3,19 +3,27 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "armmimic/core/image_io.h"
 #include "random_scene_model.h"
 
 namespace armmimic::synth {
 
 cv::Mat JpegRoundTrip(const cv::Mat& image, int quality) {
-  std::vector<uchar> bytes;
-  cv::imencode(".jpg", image, bytes, {cv::IMWRITE_JPEG_QUALITY, std::clamp(quality, 1, 100)});
-  return cv::imdecode(bytes, cv::IMREAD_COLOR);
+  std::vector<unsigned char> bytes;
+  cv::Mat decoded;
+  Status st =
+      EncodeImage(".jpg", image, {cv::IMWRITE_JPEG_QUALITY, std::clamp(quality, 1, 100)}, &bytes);
+  if (st) st = DecodeImage(bytes, &decoded);
+  // Only a broken installation (no codec module) gets here; a scene without its compression
+  // would be another scene, so it is not rendered.
+  if (!st) throw std::runtime_error("JPEG compression of a rendered frame: " + st.message());
+  return decoded;
 }
 
 namespace random_scene {

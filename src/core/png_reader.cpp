@@ -1,0 +1,102 @@
+#include "png_reader.h"
+
+#include <cmath>
+#include <csetjmp>
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+#include <png.h>
+
+namespace armmimic::internal {
+namespace {
+
+struct FileCloser {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
+
+// libpng reports errors through longjmp; the message is kept here on the way out.
+void OnPngError(png_structp png, png_const_charp message) {
+  auto* error = static_cast<std::string*>(png_get_error_ptr(png));
+  if (error) *error = message ? message : "corrupt PNG data";
+  png_longjmp(png, 1);
+}
+
+void OnPngWarning(png_structp, png_const_charp) {}
+
+// The decode proper, apart so that nothing with a destructor lives across setjmp.
+bool Decode(std::FILE* file, cv::Mat* out, std::string* error) {
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, error, OnPngError, OnPngWarning);
+  if (!png) {
+    *error = "out of memory";
+    return false;
+  }
+  png_infop info = png_create_info_struct(png);
+  if (!info) {
+    png_destroy_read_struct(&png, nullptr, nullptr);
+    *error = "out of memory";
+    return false;
+  }
+  // Rows are decoded into `image`, allocated before setjmp so a longjmp leaves nothing behind.
+  cv::Mat* image = out;
+  std::vector<png_bytep>* rows = new std::vector<png_bytep>();
+  volatile bool ok = false;
+  if (setjmp(png_jmpbuf(png)) == 0) {
+    png_init_io(png, file);
+    png_read_info(png, info);
+    const png_uint_32 width = png_get_image_width(png, info);
+    const png_uint_32 height = png_get_image_height(png, info);
+    const int depth = png_get_bit_depth(png, info);
+    const int colour = png_get_color_type(png, info);
+    if (colour == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
+    if (colour == PNG_COLOR_TYPE_GRAY && depth < 8) png_set_expand_gray_1_2_4_to_8(png);
+    if ((colour & PNG_COLOR_MASK_ALPHA) != 0) png_set_strip_alpha(png);
+    if (png_get_valid(png, info, PNG_INFO_tRNS)) {
+      // Transparency becomes an alpha channel in libpng's expansion; drop it as well.
+      png_set_tRNS_to_alpha(png);
+      png_set_strip_alpha(png);
+    }
+    if (colour == PNG_COLOR_TYPE_GRAY || colour == PNG_COLOR_TYPE_GRAY_ALPHA) {
+      png_set_gray_to_rgb(png);
+    }
+    png_set_bgr(png);
+    if (depth == 16) png_set_swap(png);  // host order for the 16-bit samples read below
+    png_read_update_info(png, info);
+    const int type = depth == 16 ? CV_16UC3 : CV_8UC3;
+    image->create(static_cast<int>(height), static_cast<int>(width), type);
+    rows->resize(height);
+    for (png_uint_32 y = 0; y < height; ++y) (*rows)[y] = image->ptr(static_cast<int>(y));
+    png_read_image(png, rows->data());
+    png_read_end(png, nullptr);
+    ok = true;
+  }
+  png_destroy_read_struct(&png, &info, nullptr);
+  delete rows;
+  return ok;
+}
+
+}  // namespace
+
+bool LooksLikePng(const std::string& path) {
+  FilePtr file(std::fopen(path.c_str(), "rb"));
+  if (!file) return false;
+  unsigned char head[8] = {};
+  return std::fread(head, 1, sizeof head, file.get()) == sizeof head &&
+         png_sig_cmp(head, 0, 8) == 0;
+}
+
+bool ReadPng(const std::string& path, cv::Mat* bgr, std::string* error) {
+  FilePtr file(std::fopen(path.c_str(), "rb"));
+  if (!file) {
+    *error = "cannot open";
+    return false;
+  }
+  cv::Mat image;
+  if (!Decode(file.get(), &image, error)) return false;
+  if (image.depth() == CV_16U) image.convertTo(image, CV_8UC3, 1 / 257.0);
+  *bgr = image;
+  return true;
+}
+
+}  // namespace armmimic::internal

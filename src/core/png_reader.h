@@ -1,0 +1,22 @@
+// PNG images decoded with libpng directly: the pixels OpenCV's image reader gives for the same
+// file, without loading OpenCV's image codecs (see docs/architecture.md, "Start of a process").
+// Private to src/core; ReadImage uses it for PNG files and hands every other format to the
+// image-codec module.
+#pragma once
+
+#include <string>
+
+#include <opencv2/core.hpp>
+
+namespace armmimic::internal {
+
+// True when `path` starts with the PNG signature.
+bool LooksLikePng(const std::string& path);
+
+// Decodes the PNG at `path` into 8-bit BGR: grey is spread to three channels, a palette is
+// expanded, alpha is dropped (not composited) and 16-bit samples are scaled by 1/257, as
+// OpenCV's reader with IMREAD_UNCHANGED and its conversion to BGR do. False with *error set
+// when the data does not decode.
+bool ReadPng(const std::string& path, cv::Mat* bgr, std::string* error);
+
+}  // namespace armmimic::internal

@@ -1,0 +1,170 @@
+// Videos and PNG images are decoded with FFmpeg and libpng directly (src/core/ffmpeg_reader.h,
+// png_reader.h), not through OpenCV's capture and image reader. The pixels must be the ones
+// OpenCV gives for the same files, to the byte: every engine's figures were measured on those.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <png.h>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "armmimic/core/image_io.h"
+#include "armmimic/core/video_source.h"
+#include "test_util.h"
+
+namespace armmimic {
+namespace {
+
+// A frame with smooth colour, sharp edges and noise: chroma subsampling and the colour
+// conversion's rounding show on every kind of pixel.
+cv::Mat TexturedFrame(cv::Size size, int i) {
+  cv::Mat img(size, CV_8UC3);
+  for (int y = 0; y < size.height; ++y) {
+    for (int x = 0; x < size.width; ++x) {
+      img.at<cv::Vec3b>(y, x) = cv::Vec3b(static_cast<uchar>((x * 3 + i * 7) % 256),
+                                          static_cast<uchar>((y * 5 + x) % 256),
+                                          static_cast<uchar>((x * y + i * 11) % 256));
+    }
+  }
+  cv::rectangle(img, cv::Rect(10 + i, 12, size.width / 3, size.height / 4), {20, 200, 90}, -1);
+  cv::Mat noise(size, CV_8UC3);
+  cv::randu(noise, 0, 24);
+  img += noise;
+  return img;
+}
+
+void ExpectFramesAsOpenCvDecodesThem(const std::string& fourcc, cv::Size size) {
+  SCOPED_TRACE(fourcc + " " + std::to_string(size.width) + "x" + std::to_string(size.height));
+  test::TempDir dir;
+  const std::string path = dir.file("clip.avi");
+  const int n = 14;
+  {
+    cv::VideoWriter w(path, cv::CAP_FFMPEG,
+                      cv::VideoWriter::fourcc(fourcc[0], fourcc[1], fourcc[2], fourcc[3]), 30,
+                      size);
+    ASSERT_TRUE(w.isOpened()) << "no " << fourcc << " encoder in this OpenCV build";
+    for (int i = 0; i < n; ++i) w.write(TexturedFrame(size, i));
+  }
+  cv::VideoCapture cap(path, cv::CAP_FFMPEG);
+  ASSERT_TRUE(cap.isOpened());
+  Status st;
+  auto src = VideoSource::Open(path, &st);
+  ASSERT_TRUE(src) << st.message();
+  EXPECT_EQ(src->info().frame_count, static_cast<int>(cap.get(cv::CAP_PROP_FRAME_COUNT)));
+  EXPECT_DOUBLE_EQ(src->info().fps, cap.get(cv::CAP_PROP_FPS));
+  EXPECT_EQ(src->info().size, cv::Size(static_cast<int>(cap.get(cv::CAP_PROP_FRAME_WIDTH)),
+                                       static_cast<int>(cap.get(cv::CAP_PROP_FRAME_HEIGHT))));
+  int read = 0;
+  cv::Mat expected;
+  Frame frame;
+  while (cap.read(expected)) {
+    ASSERT_TRUE(src->Read(&frame, &st)) << "frame " << read << ": " << st.message();
+    ASSERT_EQ(frame.image.size(), expected.size()) << "frame " << read;
+    EXPECT_EQ(cv::norm(frame.image, expected, cv::NORM_INF), 0) << "frame " << read;
+    ++read;
+  }
+  EXPECT_EQ(read, n);
+  EXPECT_FALSE(src->Read(&frame, &st));
+  EXPECT_TRUE(st.ok()) << st.message();
+  // A seek back lands on the same pixels.
+  ASSERT_TRUE(src->Seek(5).ok());
+  ASSERT_TRUE(src->Read(&frame, &st));
+  cap.set(cv::CAP_PROP_POS_FRAMES, 5);
+  ASSERT_TRUE(cap.read(expected));
+  EXPECT_EQ(cv::norm(frame.image, expected, cv::NORM_INF), 0);
+}
+
+TEST(DirectDecoders, VideoFramesAreTheOnesOpenCvsCaptureDecodes) {
+  ExpectFramesAsOpenCvDecodesThem("MJPG", {320, 240});
+  // A size the codec pads to whole blocks (its coded size is larger than the picture).
+  ExpectFramesAsOpenCvDecodesThem("MJPG", {170, 122});
+  ExpectFramesAsOpenCvDecodesThem("XVID", {160, 120});
+}
+
+// OpenCV's reading as ReadImage documents it: IMREAD_UNCHANGED, then 16-bit scaled by 1/257,
+// grey spread and alpha dropped.
+cv::Mat OpenCvBgr(const std::string& path) {
+  cv::Mat img = cv::imread(path, cv::IMREAD_UNCHANGED);
+  if (img.depth() == CV_16U) img.convertTo(img, CV_MAKETYPE(CV_8U, img.channels()), 1 / 257.0);
+  if (img.channels() == 1) cv::cvtColor(img, img, cv::COLOR_GRAY2BGR);
+  if (img.channels() == 4) cv::cvtColor(img, img, cv::COLOR_BGRA2BGR);
+  return img;
+}
+
+// A palette PNG with a transparent entry, which OpenCV cannot write.
+void WritePalettePng(const std::string& path, int width, int height) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  ASSERT_NE(f, nullptr);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  png_init_io(png, f);
+  png_set_IHDR(png, info, width, height, 4, PNG_COLOR_TYPE_PALETTE, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  std::vector<png_color> palette(16);
+  for (int i = 0; i < 16; ++i) {
+    palette[i] = {static_cast<png_byte>(i * 16), static_cast<png_byte>(255 - i * 9),
+                  static_cast<png_byte>(i * i)};
+  }
+  png_set_PLTE(png, info, palette.data(), 16);
+  png_byte alpha[2] = {0, 128};
+  png_set_tRNS(png, info, alpha, 2, nullptr);
+  png_write_info(png, info);
+  std::vector<png_byte> row((width + 1) / 2);
+  for (int y = 0; y < height; ++y) {
+    for (size_t x = 0; x < row.size(); ++x) row[x] = static_cast<png_byte>((x + y) * 0x13);
+    png_write_row(png, row.data());
+  }
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  std::fclose(f);
+}
+
+TEST(DirectDecoders, PngPixelsAreTheOnesOpenCvsReaderDecodes) {
+  test::TempDir dir;
+  const cv::Size size(37, 23);
+  std::vector<std::string> paths;
+  for (int type : {CV_8UC1, CV_8UC3, CV_8UC4, CV_16UC1, CV_16UC3, CV_16UC4}) {
+    cv::Mat img(size, type);
+    cv::randu(img, 0, CV_MAT_DEPTH(type) == CV_16U ? 65536 : 256);
+    paths.push_back(dir.file("t" + std::to_string(type) + ".png"));
+    ASSERT_TRUE(cv::imwrite(paths.back(), img));
+  }
+  cv::Mat bilevel(size, CV_8UC1);
+  cv::randu(bilevel, 0, 2);
+  bilevel *= 255;
+  paths.push_back(dir.file("bilevel.png"));
+  ASSERT_TRUE(cv::imwrite(paths.back(), bilevel, {cv::IMWRITE_PNG_BILEVEL, 1}));
+  paths.push_back(dir.file("palette.png"));
+  WritePalettePng(paths.back(), size.width, size.height);
+  for (const std::string& path : paths) {
+    SCOPED_TRACE(path);
+    cv::Mat ours;
+    const Status st = ReadImage(path, &ours);
+    ASSERT_TRUE(st.ok()) << st.message();
+    const cv::Mat theirs = OpenCvBgr(path);
+    ASSERT_EQ(ours.type(), CV_8UC3);
+    ASSERT_EQ(ours.size(), theirs.size());
+    EXPECT_EQ(cv::norm(ours, theirs, cv::NORM_INF), 0);
+  }
+}
+
+TEST(DirectDecoders, ADamagedPngNamesTheFile) {
+  test::TempDir dir;
+  cv::Mat img(40, 40, CV_8UC3, cv::Scalar(1, 2, 3));
+  std::vector<uchar> bytes;
+  ASSERT_TRUE(cv::imencode(".png", img, bytes));
+  bytes.resize(bytes.size() / 2);  // cut in the middle of the image data
+  const std::string path = dir.file("cut.png");
+  test::WriteFile(path, std::string(bytes.begin(), bytes.end()));
+  cv::Mat out;
+  const Status st = ReadImage(path, &out);
+  EXPECT_FALSE(st.ok());
+  EXPECT_NE(st.message().find(path), std::string::npos) << st.message();
+  EXPECT_NE(st.message().find("corrupt PNG data"), std::string::npos) << st.message();
+}
+
+}  // namespace
+}  // namespace armmimic
