@@ -118,6 +118,11 @@ bool FfmpegReader::Open(const std::string& path, std::string* error) {
   }
   frame_count_ = count > 0 && count < (1LL << 30) ? static_cast<int>(count) : 0;
   fourcc_ = FourccOf(*st->codecpar);
+  // AVI stores no presentation times: with frames decoded out of order (B-frames) a frame's time
+  // is guessed from its place in the file, and a seek by time lands a frame or two off. Such a
+  // file is placed by decoding forward from its start (SeekTo refuses).
+  seek_by_time_ =
+      !(std::strcmp(format_->iformat->name, "avi") == 0 && st->codecpar->video_delay > 0);
   return true;
 }
 
@@ -196,7 +201,7 @@ bool FfmpegReader::Read(cv::Mat* bgr) {
 }
 
 bool FfmpegReader::SeekTo(int index) {
-  if (!format_ || fps_ <= 0 || index < 0) return false;
+  if (!format_ || !seek_by_time_ || fps_ <= 0 || index < 0) return false;
   AVStream* st = format_->streams[stream_];
   const double tb = ToDouble(st->time_base);
   if (tb <= 0) return false;

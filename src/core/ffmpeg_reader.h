@@ -33,8 +33,8 @@ class FfmpegReader {
   // As Read, without the colour conversion.
   bool Grab();
   // Places the reader so that the next Read returns frame `index`. False when the demuxer cannot
-  // place it exactly (no timestamps, or it lands past the frame); the reader must then be
-  // opened again.
+  // place it exactly (no timestamps, reordered frames in AVI, or it lands past the frame); the
+  // reader must then be opened again.
   bool SeekTo(int index);
 
   double fps() const { return fps_; }
@@ -53,8 +53,9 @@ class FfmpegReader {
   SwsContext* sws_ = nullptr;
   cv::Mat buffer_;  // the conversion's output, rows padded for swscale
   int stream_ = -1;
-  bool flushing_ = false;  // the demuxer has ended; the decoder gives back what it holds
-  bool held_ = false;      // frame_ holds the frame the next Read returns (after SeekTo)
+  bool flushing_ = false;     // the demuxer has ended; the decoder gives back what it holds
+  bool held_ = false;         // frame_ holds the frame the next Read returns (after SeekTo)
+  bool seek_by_time_ = true;  // the frames' timestamps place them exactly
   double fps_ = 0;
   int frame_count_ = 0;
   std::string fourcc_;

@@ -1,6 +1,7 @@
 // Videos and PNG images are decoded with FFmpeg and libpng directly (src/core/ffmpeg_reader.h,
 // png_reader.h), not through OpenCV's capture and image reader. The pixels must be the ones
 // OpenCV gives for the same files, to the byte: every engine's figures were measured on those.
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -10,6 +11,12 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libswscale/swscale.h>
+}
 
 #include "armmimic/core/image_io.h"
 #include "armmimic/core/video_source.h"
@@ -82,6 +89,90 @@ TEST(DirectDecoders, VideoFramesAreTheOnesOpenCvsCaptureDecodes) {
   // A size the codec pads to whole blocks (its coded size is larger than the picture).
   ExpectFramesAsOpenCvDecodesThem("MJPG", {170, 122});
   ExpectFramesAsOpenCvDecodesThem("XVID", {160, 120});
+}
+
+// Writes `n` textured frames as MPEG-4 with B-frames into an AVI, with FFmpeg's libraries (OpenCV's
+// writer makes none): a container without presentation times holding frames decoded out of order.
+bool WriteAviWithBFrames(const std::string& path, int n, cv::Size size) {
+  AVFormatContext* out = nullptr;
+  if (avformat_alloc_output_context2(&out, nullptr, "avi", path.c_str()) < 0) return false;
+  const AVCodec* codec = avcodec_find_encoder(AV_CODEC_ID_MPEG4);
+  AVStream* st = avformat_new_stream(out, nullptr);
+  AVCodecContext* enc = avcodec_alloc_context3(codec);
+  enc->width = size.width;
+  enc->height = size.height;
+  enc->pix_fmt = AV_PIX_FMT_YUV420P;
+  enc->time_base = {1, 25};
+  enc->gop_size = 12;
+  enc->max_b_frames = 2;
+  bool ok = avcodec_open2(enc, codec, nullptr) >= 0 &&
+            avcodec_parameters_from_context(st->codecpar, enc) >= 0;
+  st->time_base = enc->time_base;
+  ok = ok && avio_open(&out->pb, path.c_str(), AVIO_FLAG_WRITE) >= 0 &&
+       avformat_write_header(out, nullptr) >= 0;
+  SwsContext* sws =
+      sws_getContext(size.width, size.height, AV_PIX_FMT_BGR24, size.width, size.height,
+                     AV_PIX_FMT_YUV420P, SWS_BICUBIC, nullptr, nullptr, nullptr);
+  AVFrame* frame = av_frame_alloc();
+  frame->format = enc->pix_fmt;
+  frame->width = size.width;
+  frame->height = size.height;
+  ok = ok && av_frame_get_buffer(frame, 0) >= 0;
+  AVPacket* pkt = av_packet_alloc();
+  auto drain = [&] {
+    while (avcodec_receive_packet(enc, pkt) == 0) {
+      av_packet_rescale_ts(pkt, enc->time_base, st->time_base);
+      pkt->stream_index = st->index;
+      ok = ok && av_interleaved_write_frame(out, pkt) >= 0;
+    }
+  };
+  for (int i = 0; ok && i <= n; ++i) {
+    if (i == n) {
+      avcodec_send_frame(enc, nullptr);  // flush the B-frames held back
+    } else {
+      const cv::Mat bgr = TexturedFrame(size, i);
+      const uint8_t* src[1] = {bgr.data};
+      const int stride[1] = {static_cast<int>(bgr.step[0])};
+      ok = av_frame_make_writable(frame) >= 0;
+      sws_scale(sws, src, stride, 0, size.height, frame->data, frame->linesize);
+      frame->pts = i;
+      ok = ok && avcodec_send_frame(enc, frame) >= 0;
+    }
+    drain();
+  }
+  ok = ok && av_write_trailer(out) >= 0;
+  av_packet_free(&pkt);
+  av_frame_free(&frame);
+  sws_freeContext(sws);
+  avcodec_free_context(&enc);
+  avio_closep(&out->pb);
+  avformat_free_context(out);
+  return ok;
+}
+
+TEST(DirectDecoders, SeeksLandOnTheFrameReadInOrderWithBFramesInAnAvi) {
+  test::TempDir dir;
+  const std::string path = dir.file("bframes.avi");
+  const int n = 60;
+  ASSERT_TRUE(WriteAviWithBFrames(path, n, {96, 64}));
+  Status st;
+  auto src = VideoSource::Open(path, &st);
+  ASSERT_TRUE(src) << st.message();
+  std::vector<cv::Mat> in_order;
+  Frame frame;
+  while (src->Read(&frame, &st)) in_order.push_back(frame.image.clone());
+  ASSERT_EQ(static_cast<int>(in_order.size()), n) << st.message();
+  // Backwards and forwards, on and between keyframes; each seek then reads on.
+  for (int index : {37, 5, 50, 12, 0, 59, 24, 23}) {
+    SCOPED_TRACE("seek to " + std::to_string(index));
+    ASSERT_TRUE(src->Seek(index).ok());
+    for (int k = index; k < std::min(n, index + 3); ++k) {
+      ASSERT_TRUE(src->Read(&frame, &st)) << st.message();
+      EXPECT_EQ(frame.index, k);
+      EXPECT_EQ(cv::norm(frame.image, in_order[static_cast<std::size_t>(k)], cv::NORM_INF), 0)
+          << "frame " << k;
+    }
+  }
 }
 
 // OpenCV's reading as ReadImage documents it: IMREAD_UNCHANGED, then 16-bit scaled by 1/257,
