@@ -1,8 +1,10 @@
 #include "png_reader.h"
 
-#include <cmath>
 #include <csetjmp>
 #include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <vector>
 
@@ -25,8 +27,27 @@ void OnPngError(png_structp png, png_const_charp message) {
 
 void OnPngWarning(png_structp, png_const_charp) {}
 
+// The encoded bytes libpng reads from.
+struct Source {
+  const unsigned char* data;
+  std::size_t size;
+  std::size_t at;
+};
+
+void ReadFromSource(png_structp png, png_bytep out, png_size_t length) {
+  auto* source = static_cast<Source*>(png_get_io_ptr(png));
+  if (length > source->size - source->at) png_error(png, "the file ends inside the image");
+  std::memcpy(out, source->data + source->at, length);
+  source->at += length;
+}
+
+// Larger images are refused before their pixels are allocated: a damaged header must not ask for
+// gigabytes. A camera's frame is far below either bound.
+constexpr png_uint_32 kMaxSide = 1 << 15;
+constexpr double kMaxPixels = 1 << 27;
+
 // The decode proper, apart so that nothing with a destructor lives across setjmp.
-bool Decode(std::FILE* file, cv::Mat* out, std::string* error) {
+bool Decode(Source* source, cv::Mat* out, std::string* error) {
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, error, OnPngError, OnPngWarning);
   if (!png) {
     *error = "out of memory";
@@ -43,10 +64,12 @@ bool Decode(std::FILE* file, cv::Mat* out, std::string* error) {
   std::vector<png_bytep>* rows = new std::vector<png_bytep>();
   volatile bool ok = false;
   if (setjmp(png_jmpbuf(png)) == 0) {
-    png_init_io(png, file);
+    png_set_read_fn(png, source, ReadFromSource);
+    png_set_user_limits(png, kMaxSide, kMaxSide);
     png_read_info(png, info);
     const png_uint_32 width = png_get_image_width(png, info);
     const png_uint_32 height = png_get_image_height(png, info);
+    if (static_cast<double>(width) * height > kMaxPixels) png_error(png, "image too large");
     const int depth = png_get_bit_depth(png, info);
     const int colour = png_get_color_type(png, info);
     if (colour == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
@@ -62,6 +85,7 @@ bool Decode(std::FILE* file, cv::Mat* out, std::string* error) {
     }
     png_set_bgr(png);
     if (depth == 16) png_set_swap(png);  // host order for the 16-bit samples read below
+    png_set_interlace_handling(png);
     png_read_update_info(png, info);
     const int type = depth == 16 ? CV_16UC3 : CV_8UC3;
     image->create(static_cast<int>(height), static_cast<int>(width), type);
@@ -86,17 +110,28 @@ bool LooksLikePng(const std::string& path) {
          png_sig_cmp(head, 0, 8) == 0;
 }
 
-bool ReadPng(const std::string& path, cv::Mat* bgr, std::string* error) {
-  FilePtr file(std::fopen(path.c_str(), "rb"));
-  if (!file) {
-    *error = "cannot open";
+bool DecodePng(const unsigned char* data, std::size_t size, cv::Mat* bgr, std::string* error) {
+  if (size < 8 || png_sig_cmp(data, 0, 8) != 0) {
+    *error = "not a PNG file";
     return false;
   }
+  Source source{data, size, 0};
   cv::Mat image;
-  if (!Decode(file.get(), &image, error)) return false;
+  if (!Decode(&source, &image, error)) return false;
   if (image.depth() == CV_16U) image.convertTo(image, CV_8UC3, 1 / 257.0);
   *bgr = image;
   return true;
+}
+
+bool ReadPng(const std::string& path, cv::Mat* bgr, std::string* error) {
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<char> bytes((std::istreambuf_iterator<char>(in)),
+                                std::istreambuf_iterator<char>());
+  if (!in.good() && !in.eof()) {
+    *error = "cannot read";
+    return false;
+  }
+  return DecodePng(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), bgr, error);
 }
 
 }  // namespace armmimic::internal

@@ -4,6 +4,7 @@
 // image-codec module.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include <opencv2/core.hpp>
@@ -18,5 +19,8 @@ bool LooksLikePng(const std::string& path);
 // OpenCV's reader with IMREAD_UNCHANGED and its conversion to BGR do. False with *error set
 // when the data does not decode.
 bool ReadPng(const std::string& path, cv::Mat* bgr, std::string* error);
+
+// The same for a PNG held in memory (`size` bytes at `data`).
+bool DecodePng(const unsigned char* data, std::size_t size, cv::Mat* bgr, std::string* error);
 
 }  // namespace armmimic::internal

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 #include <png.h>
+#include <zlib.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
@@ -213,6 +214,25 @@ void WritePalettePng(const std::string& path, int width, int height) {
   std::fclose(f);
 }
 
+// An interlaced (Adam7) RGB PNG of `image` (CV_8UC3 BGR), which OpenCV cannot write either.
+void WriteInterlacedPng(const std::string& path, const cv::Mat& image) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  ASSERT_NE(f, nullptr);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  png_init_io(png, f);
+  png_set_IHDR(png, info, image.cols, image.rows, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_ADAM7,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  png_set_bgr(png);
+  std::vector<png_bytep> rows(static_cast<std::size_t>(image.rows));
+  for (int y = 0; y < image.rows; ++y) rows[y] = const_cast<png_bytep>(image.ptr(y));
+  png_write_image(png, rows.data());
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  std::fclose(f);
+}
+
 TEST(DirectDecoders, PngPixelsAreTheOnesOpenCvsReaderDecodes) {
   test::TempDir dir;
   const cv::Size size(37, 23);
@@ -230,6 +250,10 @@ TEST(DirectDecoders, PngPixelsAreTheOnesOpenCvsReaderDecodes) {
   ASSERT_TRUE(cv::imwrite(paths.back(), bilevel, {cv::IMWRITE_PNG_BILEVEL, 1}));
   paths.push_back(dir.file("palette.png"));
   WritePalettePng(paths.back(), size.width, size.height);
+  cv::Mat colour(size, CV_8UC3);
+  cv::randu(colour, 0, 256);
+  paths.push_back(dir.file("interlaced.png"));
+  WriteInterlacedPng(paths.back(), colour);
   for (const std::string& path : paths) {
     SCOPED_TRACE(path);
     cv::Mat ours;
@@ -240,6 +264,32 @@ TEST(DirectDecoders, PngPixelsAreTheOnesOpenCvsReaderDecodes) {
     ASSERT_EQ(ours.size(), theirs.size());
     EXPECT_EQ(cv::norm(ours, theirs, cv::NORM_INF), 0);
   }
+}
+
+TEST(DirectDecoders, APngWhoseHeaderAsksForGigabytesIsRefused) {
+  test::TempDir dir;
+  cv::Mat img(4, 4, CV_8UC3, cv::Scalar(9, 8, 7));
+  std::vector<uchar> bytes;
+  ASSERT_TRUE(cv::imencode(".png", img, bytes));
+  // Width and height (bytes 16..23, big-endian) set to 30000 x 30000, 900 million pixels, with
+  // the header's checksum made right again: a valid header, refused before any pixel is
+  // allocated.
+  for (int i : {16, 20}) {
+    bytes[i] = 0;
+    bytes[i + 1] = 0;
+    bytes[i + 2] = 0x75;
+    bytes[i + 3] = 0x30;
+  }
+  const uLong crc = crc32(0, bytes.data() + 12, 17);  // "IHDR" and its 13 bytes
+  for (int k = 0; k < 4; ++k) bytes[29 + k] = static_cast<uchar>(crc >> (24 - 8 * k));
+  const std::string path = dir.file("huge.png");
+  test::WriteFile(path, std::string(bytes.begin(), bytes.end()));
+  cv::Mat out;
+  const Status st = ReadImage(path, &out);
+  EXPECT_FALSE(st.ok());
+  EXPECT_NE(st.message().find(path), std::string::npos) << st.message();
+  EXPECT_NE(st.message().find("too large"), std::string::npos) << st.message();
+  EXPECT_TRUE(out.empty());
 }
 
 TEST(DirectDecoders, ADamagedPngNamesTheFile) {
