@@ -1,5 +1,5 @@
-// VideoSource: frames from a video file (AVI with MJPG/XVID/H.264 and whatever else OpenCV's
-// videoio reads), a list of image files, a folder of images (sorted by name) or a camera.
+// VideoSource: frames from a video file (AVI with MJPG/XVID/H.264 and whatever else FFmpeg
+// decodes), a list of image files, a folder of images (sorted by name) or a camera.
 // Open() checks the input up front and names the file in every error.
 #pragma once
 
