@@ -56,7 +56,9 @@ std::string FourccOf(const AVCodecParameters& par) {
 bool FfmpegReader::Open(const std::string& path, std::string* error) {
   Close();
   QuietFfmpegLogOnce();
-  int r = avformat_open_input(&format_, path.c_str(), nullptr, nullptr);
+  // Through FFmpeg's file protocol: a name with a colon ("take:2.avi") is a file, not a protocol.
+  const std::string url = "file:" + path;
+  int r = avformat_open_input(&format_, url.c_str(), nullptr, nullptr);
   if (r < 0) {
     *error = AvError(r);
     return false;
@@ -68,7 +70,10 @@ bool FfmpegReader::Open(const std::string& path, std::string* error) {
     return false;
   }
   for (unsigned i = 0; i < format_->nb_streams; ++i) {
-    if (format_->streams[i]->codecpar->codec_type == AVMEDIA_TYPE_VIDEO) {
+    // The first video stream that is not a cover picture.
+    const AVStream* candidate = format_->streams[i];
+    if (candidate->codecpar->codec_type == AVMEDIA_TYPE_VIDEO &&
+        (candidate->disposition & AV_DISPOSITION_ATTACHED_PIC) == 0) {
       stream_ = static_cast<int>(i);
       break;
     }

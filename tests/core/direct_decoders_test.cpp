@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 #include <png.h>
+#include <unistd.h>
 #include <zlib.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -90,6 +91,29 @@ TEST(DirectDecoders, VideoFramesAreTheOnesOpenCvsCaptureDecodes) {
   // A size the codec pads to whole blocks (its coded size is larger than the picture).
   ExpectFramesAsOpenCvDecodesThem("MJPG", {170, 122});
   ExpectFramesAsOpenCvDecodesThem("XVID", {160, 120});
+}
+
+// A relative name with a colon is a file, not one of FFmpeg's protocols ("take" is none, and
+// FFmpeg would have refused it as such).
+TEST(DirectDecoders, AVideoNamedWithAColonIsReadAsAFile) {
+  test::TempDir dir;
+  {
+    cv::VideoWriter w(dir.file("take:2.avi"), cv::CAP_FFMPEG,
+                      cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 25, {64, 48});
+    ASSERT_TRUE(w.isOpened());
+    for (int i = 0; i < 5; ++i) w.write(TexturedFrame({64, 48}, i));
+  }
+  char here[4096];
+  ASSERT_NE(getcwd(here, sizeof here), nullptr);
+  ASSERT_EQ(chdir(dir.path().c_str()), 0);
+  Status st;
+  auto src = VideoSource::Open("take:2.avi", &st);
+  Frame frame;
+  int read = 0;
+  while (src && src->Read(&frame, &st)) ++read;
+  ASSERT_EQ(chdir(here), 0);
+  ASSERT_TRUE(src) << st.message();
+  EXPECT_EQ(read, 5) << st.message();
 }
 
 // Writes `n` textured frames as MPEG-4 with B-frames into an AVI, with FFmpeg's libraries (OpenCV's
