@@ -53,7 +53,10 @@ Status WriteSceneFolder(const ArmSceneSource& scene, const SceneVideo& video,
       // The message names the temporary; the user asked for scene.avi.
       std::string message = opened.message();
       if (message.rfind(temp_path, 0) == 0) message = video_path + message.substr(temp_path.size());
-      return Status::Error("arm_scene.codec", message);
+      // An error about the codec is about this scene's codec setting; one about the codec module
+      // (a broken installation) is about none.
+      return opened.key() == "codec" ? Status::Error("arm_scene.codec", message)
+                                     : Status::Error(message);
     }
     const int n = scene.frame_count();
     for (int f = 0; f < n; ++f) {

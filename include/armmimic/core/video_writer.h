@@ -17,7 +17,8 @@ class VideoFileWriter {
 
   // Opens `path` for `fourcc` (four characters) at `fps` and `size`. For MJPG, a `jpeg_quality`
   // in 1..100 selects OpenCV's own MJPEG encoder, which honours it; 0 leaves FFmpeg's default.
-  // Returns nullptr with *status set when the codec has no encoder or the file cannot be made.
+  // Returns nullptr with *status set when the codec has no encoder or the file cannot be made;
+  // an error about the codec has the key "codec".
   static std::unique_ptr<VideoFileWriter> Open(const std::string& path, const std::string& fourcc,
                                                double fps, cv::Size size, int jpeg_quality,
                                                Status* status);

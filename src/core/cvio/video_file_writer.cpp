@@ -47,13 +47,13 @@ std::unique_ptr<VideoFileWriter> OpenWriter(const std::string& path, const std::
                                             double fps, cv::Size size, int jpeg_quality,
                                             Status* status) {
   if (fourcc.size() != 4) {
-    *status = Status::Error("codec '" + fourcc + "' is not a four-character code");
+    *status = Status::Error("codec", "codec '" + fourcc + "' is not a four-character code");
     return nullptr;
   }
   auto writer = std::make_unique<OpenCvWriter>();
   if (!writer->Open(path, fourcc, fps, size, jpeg_quality)) {
-    *status = Status::Error(path + ": codec " + fourcc +
-                            " has no encoder for AVI in this OpenCV build (try MJPG)");
+    *status = Status::Error("codec", path + ": codec " + fourcc +
+                                         " has no encoder for AVI in this OpenCV build (try MJPG)");
     return nullptr;
   }
   *status = Status::Ok();
