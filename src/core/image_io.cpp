@@ -4,10 +4,10 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
-
-#include <sys/stat.h>
 
 #include <opencv2/imgproc.hpp>
 
@@ -65,23 +65,25 @@ bool HasImageExtension(const std::string& path) {
 Status ReadImage(const std::string& path, cv::Mat* bgr) {
   if (path.empty()) return Status::Error("image path is empty");
   if (Status checked = CheckInputFile(path); !checked) return checked;
-  struct stat st {};
-  if (stat(path.c_str(), &st) != 0) {
-    return Status::Error(path + ": cannot open image (" + FileErrorText(errno) + ")");
-  }
-  if (st.st_size == 0) return Status::Error(path + ": empty file (0 bytes), not an image");
+  // The file is read once: PNG, the format of backgrounds and arm-length images, is decoded
+  // here; any other format by the codec module, from the same bytes.
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Status::Error(path + ": cannot open image (" + FileErrorText(errno) + ")");
+  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                         std::istreambuf_iterator<char>());
+  if (in.bad()) return Status::Error(path + ": cannot read image (" + FileErrorText(errno) + ")");
+  if (bytes.empty()) return Status::Error(path + ": empty file (0 bytes), not an image");
   cv::Mat raw;
   std::string why;
-  if (internal::LooksLikePng(path)) {
-    // PNG, the format of backgrounds and arm-length images, without the codec module.
-    if (!internal::ReadPng(path, &raw, &why)) {
+  if (internal::IsPng(bytes.data(), bytes.size())) {
+    if (!internal::DecodePng(bytes.data(), bytes.size(), &raw, &why)) {
       return Status::Error(path + ": not a readable image (corrupt PNG data: " + why + ")");
     }
   } else {
     Status loaded;
     const cvio::Api* api = internal::CvioModule(&loaded);
     if (!api) return Status::Error(path + ": cannot decode image (" + loaded.message() + ")");
-    if (!api->read_image(path, &raw, &why)) {
+    if (!api->read_image(bytes, &raw, &why)) {
       return Status::Error(path + ": not a readable image (" + why + ")");
     }
   }

@@ -1,22 +1,13 @@
 #include "png_reader.h"
 
 #include <csetjmp>
-#include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <iterator>
-#include <memory>
 #include <vector>
 
 #include <png.h>
 
 namespace armmimic::internal {
 namespace {
-
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
-using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
 
 // libpng reports errors through longjmp; the message is kept here on the way out.
 void OnPngError(png_structp png, png_const_charp message) {
@@ -102,16 +93,12 @@ bool Decode(Source* source, cv::Mat* out, std::string* error) {
 
 }  // namespace
 
-bool LooksLikePng(const std::string& path) {
-  FilePtr file(std::fopen(path.c_str(), "rb"));
-  if (!file) return false;
-  unsigned char head[8] = {};
-  return std::fread(head, 1, sizeof head, file.get()) == sizeof head &&
-         png_sig_cmp(head, 0, 8) == 0;
+bool IsPng(const unsigned char* data, std::size_t size) {
+  return size >= 8 && png_sig_cmp(data, 0, 8) == 0;
 }
 
 bool DecodePng(const unsigned char* data, std::size_t size, cv::Mat* bgr, std::string* error) {
-  if (size < 8 || png_sig_cmp(data, 0, 8) != 0) {
+  if (!IsPng(data, size)) {
     *error = "not a PNG file";
     return false;
   }
@@ -121,17 +108,6 @@ bool DecodePng(const unsigned char* data, std::size_t size, cv::Mat* bgr, std::s
   if (image.depth() == CV_16U) image.convertTo(image, CV_8UC3, 1 / 257.0);
   *bgr = image;
   return true;
-}
-
-bool ReadPng(const std::string& path, cv::Mat* bgr, std::string* error) {
-  std::ifstream in(path, std::ios::binary);
-  const std::vector<char> bytes((std::istreambuf_iterator<char>(in)),
-                                std::istreambuf_iterator<char>());
-  if (!in.good() && !in.eof()) {
-    *error = "cannot read";
-    return false;
-  }
-  return DecodePng(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), bgr, error);
 }
 
 }  // namespace armmimic::internal

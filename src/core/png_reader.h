@@ -11,16 +11,13 @@
 
 namespace armmimic::internal {
 
-// True when `path` starts with the PNG signature.
-bool LooksLikePng(const std::string& path);
+// True when the `size` bytes at `data` start with the PNG signature.
+bool IsPng(const unsigned char* data, std::size_t size);
 
-// Decodes the PNG at `path` into 8-bit BGR: grey is spread to three channels, a palette is
-// expanded, alpha is dropped (not composited) and 16-bit samples are scaled by 1/257, as
-// OpenCV's reader with IMREAD_UNCHANGED and its conversion to BGR do. False with *error set
-// when the data does not decode.
-bool ReadPng(const std::string& path, cv::Mat* bgr, std::string* error);
-
-// The same for a PNG held in memory (`size` bytes at `data`).
+// Decodes the PNG held in memory (`size` bytes at `data`) into 8-bit BGR: grey is spread to three
+// channels, a palette is expanded, alpha is dropped (not composited) and 16-bit samples are scaled
+// by 1/257, as OpenCV's reader with IMREAD_UNCHANGED and its conversion to BGR do. False with
+// *error set when the data does not decode.
 bool DecodePng(const unsigned char* data, std::size_t size, cv::Mat* bgr, std::string* error);
 
 }  // namespace armmimic::internal

@@ -24,13 +24,14 @@
 namespace armmimic::cvio {
 
 // Raised whenever a signature below changes.
-constexpr int kAbi = 1;
+constexpr int kAbi = 2;
 
 struct Api {
   int abi;
   const char* version;  // ARMMIMIC_VERSION of the build
-  // Decodes any image OpenCV reads, as IMREAD_UNCHANGED; false with *error set otherwise.
-  bool (*read_image)(const std::string& path, cv::Mat* raw, std::string* error);
+  // Decodes the bytes of any image file OpenCV reads, as imread with IMREAD_UNCHANGED does; false
+  // with *error set otherwise.
+  bool (*read_image)(const std::vector<unsigned char>& bytes, cv::Mat* raw, std::string* error);
   // True when an image with extension `ext` (".png") can be encoded.
   bool (*have_image_writer)(const std::string& ext);
   // Encodes `image` in the format of `ext` with OpenCV's IMWRITE_* `params`.

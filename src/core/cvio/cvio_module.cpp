@@ -11,9 +11,9 @@
 namespace armmimic::cvio {
 namespace {
 
-bool ReadImageFile(const std::string& path, cv::Mat* raw, std::string* error) {
+bool ReadImageFile(const std::vector<unsigned char>& bytes, cv::Mat* raw, std::string* error) {
   try {
-    *raw = cv::imread(path, cv::IMREAD_UNCHANGED);
+    *raw = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
   } catch (const cv::Exception& e) {
     *error = e.msg;
     return false;
