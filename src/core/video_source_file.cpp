@@ -2,8 +2,6 @@
 #include <cmath>
 #include <cstdlib>
 
-#include <opencv2/imgproc.hpp>
-
 #include "ffmpeg_reader.h"
 #include "video_source_impl.h"
 
@@ -15,24 +13,6 @@ namespace {
 constexpr int kRetriesAfterFailure = 3;
 // Forward seeks up to this many frames decode their way there instead of asking the demuxer.
 constexpr int kMaxDecodeForward = 64;
-
-// Converts a decoded frame to 8-bit BGR in place; false for a layout we cannot use.
-bool ToBgr(cv::Mat* img) {
-  switch (img->channels()) {
-    case 3:
-      break;
-    case 1:
-      cv::cvtColor(*img, *img, cv::COLOR_GRAY2BGR);
-      break;
-    case 4:
-      cv::cvtColor(*img, *img, cv::COLOR_BGRA2BGR);
-      break;
-    default:
-      return false;
-  }
-  if (img->depth() != CV_8U) img->convertTo(*img, CV_8UC3, img->depth() == CV_16U ? 1 / 257.0 : 1);
-  return true;
-}
 
 class VideoFileSource : public VideoSource {
  public:
@@ -46,7 +26,6 @@ class VideoFileSource : public VideoSource {
       return Status::Error(info_.path +
                            ": no frame could be decoded (a video with zero frames, or damaged)");
     }
-    if (!ToBgr(&first)) return Status::Error(info_.path + ": unsupported pixel layout");
     info_.kind = SourceKind::kVideo;
     info_.size = first.size();
     const double fps = reader_.fps();
@@ -99,11 +78,6 @@ class VideoFileSource : public VideoSource {
         return false;
       }
       ++cap_next_;
-    }
-    if (!ToBgr(&img)) {
-      st = Status::Error(info_.path + ": frame " + std::to_string(next_) +
-                         " has an unsupported pixel layout");
-      return false;
     }
     if (!DeliverStreamFrame(img, next_, info_, frame, &st)) return false;
     ++next_;

@@ -2,9 +2,7 @@
 // the inputs exist and has decided their kind. Private to src/core.
 #pragma once
 
-#include <cstdlib>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
 
@@ -34,18 +32,6 @@ inline bool DeliverStreamFrame(const cv::Mat& img, int index, const VideoInfo& i
   frame->time_s = info.fps > 0 ? index / info.fps : 0;
   frame->name.clear();
   return true;
-}
-
-// FFmpeg's own warnings ("overread 8", "No JPEG data found") would interleave with ours, which
-// name the file and frame. OpenCV reads OPENCV_FFMPEG_LOGLEVEL before its first FFmpeg capture;
-// a user who wants them sets it (or OPENCV_FFMPEG_DEBUG) themselves. Called before every FFmpeg
-// capture; the environment is written once per process, whichever thread opens first.
-inline void QuietFfmpegLog() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    // NOLINTNEXTLINE(concurrency-mt-unsafe): once, before any capture of ours reads it
-    if (!std::getenv("OPENCV_FFMPEG_DEBUG")) setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);
-  });
 }
 
 }  // namespace armmimic::internal

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <mutex>
 
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
@@ -15,7 +16,19 @@ namespace armmimic::cvio {
 namespace {
 
 using internal::DeliverStreamFrame;
-using internal::QuietFfmpegLog;
+
+// FFmpeg's own warnings would interleave with our messages, which name the stream. OpenCV reads
+// OPENCV_FFMPEG_LOGLEVEL before its first FFmpeg capture; a user who wants them sets it (or
+// OPENCV_FFMPEG_DEBUG) themselves. (Video files are read by src/core's own FFmpeg reader, which
+// quiets the log itself.) The environment is written once per process, whichever thread opens
+// first.
+void QuietFfmpegLog() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    // NOLINTNEXTLINE(concurrency-mt-unsafe): once, before any capture of ours reads it
+    if (!std::getenv("OPENCV_FFMPEG_DEBUG")) setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);
+  });
+}
 
 constexpr int kOpenTimeoutMs = 10000;
 constexpr int kReadTimeoutMs = 10000;
@@ -46,7 +59,7 @@ class CameraSource : public VideoSource {
         opened = cap_.open(std::stoi(num), cv::CAP_ANY);
 #endif
       } else {
-        // As for files: our message names the stream; FFmpeg's own log stays quiet.
+        // Our message names the stream; FFmpeg's own log stays quiet.
         QuietFfmpegLog();
         opened = cap_.open(spec, cv::CAP_FFMPEG,
                            {cv::CAP_PROP_OPEN_TIMEOUT_MSEC, kOpenTimeoutMs,
