@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "armmimic/core/angle_file.h"
@@ -27,13 +26,8 @@ class CliInstalled : public ::testing::Test {
     const test::CliResult r =
         test::RunCli({"synth", "arm", dir_->file("scene"), "--seed", "2", "--frames", "12", "-q"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    fs::create_directories(dir_->file("prefix/bin"));
     fs::create_directories(dir_->file("home"));
-    // A hard link where the file system allows it (the program is large), a copy otherwise; not
-    // a symbolic link, which the program resolves back to the build folder.
-    std::error_code ec;
-    fs::create_hard_link(ARMMIMIC_CLI_PATH, Program(), ec);
-    if (ec) fs::copy_file(ARMMIMIC_CLI_PATH, Program());
+    test::LinkOrCopy(ARMMIMIC_CLI_PATH, Program());
   }
   static void TearDownTestSuite() {
     delete dir_;

@@ -7,7 +7,6 @@
 
 #include <filesystem>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "test_util.h"
@@ -19,14 +18,6 @@ namespace fs = std::filesystem;
 
 bool Contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
-}
-
-// A hard link where the file system allows it, a copy otherwise.
-void Place(const std::string& from, const std::string& to) {
-  fs::create_directories(fs::path(to).parent_path());
-  std::error_code ec;
-  fs::create_hard_link(from, to, ec);
-  if (ec) fs::copy_file(from, to);
 }
 
 std::vector<std::string> TracedEnvironment() {
@@ -70,8 +61,8 @@ TEST_F(CliStartup, AnInstalledProgramLoadsTheCodecModuleFromBesideIt) {
   // PREFIX/bin/armmimic-cli and PREFIX/<libdir>/armmimic/armmimic-cvio.so, as installed.
   const std::string program = dir_->file("prefix/bin/armmimic-cli");
   const std::string module = dir_->file("prefix/bin/" ARMMIMIC_CVIO_RELATIVE);
-  Place(ARMMIMIC_CLI_PATH, program);
-  Place(ARMMIMIC_CVIO_BUILD_PATH, module);
+  test::LinkOrCopy(ARMMIMIC_CLI_PATH, program);
+  test::LinkOrCopy(ARMMIMIC_CVIO_BUILD_PATH, module);
   // Estimating an empty room writes a PNG: that needs the encoder, so the module.
   const std::string out = dir_->file("bg.png");
   const test::CliResult r = test::RunProgram(

@@ -156,6 +156,13 @@ std::vector<std::string> EnvironmentWithout(const std::vector<std::string>& drop
   return env;
 }
 
+void LinkOrCopy(const std::string& from, const std::string& to) {
+  std::filesystem::create_directories(std::filesystem::path(to).parent_path());
+  std::error_code ec;
+  std::filesystem::create_hard_link(from, to, ec);
+  if (ec) std::filesystem::copy_file(from, to);
+}
+
 CommaDecimalLocale::CommaDecimalLocale() : dir_(std::make_unique<TempDir>()) {
   const char* c = std::setlocale(LC_NUMERIC, nullptr);
   saved_c_ = c ? c : "C";

@@ -94,6 +94,11 @@ CliResult RunProgram(const std::vector<std::string>& argv, const std::vector<std
 // This process's environment without the variables named in `drop`.
 std::vector<std::string> EnvironmentWithout(const std::vector<std::string>& drop);
 
+// Puts the file `from` at `to`, making `to`'s folder: a hard link where the file system allows it
+// (a program is large), a copy otherwise; not a symbolic link, which a program resolves back to
+// the folder it came from.
+void LinkOrCopy(const std::string& from, const std::string& to);
+
 // Puts the process under comma-decimal number formatting for its lifetime, as a German or French
 // desktop does, with no locale installed on the machine: a C locale whose LC_NUMERIC has ','
 // decimals ("12,5") is compiled into a temporary folder with localedef (glibc's, always there)

@@ -210,51 +210,51 @@ cv::Mat OpenCvBgr(const std::string& path) {
   return img;
 }
 
-// A palette PNG with a transparent entry, which OpenCV cannot write.
-void WritePalettePng(const std::string& path, int width, int height) {
+// A PNG written with libpng, for the kinds OpenCV cannot write (palettes, interlacing): `rows`
+// holds each row's packed samples; `palette` and `alpha`, when not empty, its PLTE and tRNS.
+void WriteRawPng(const std::string& path, int width, int depth, int colour, int interlace,
+                 std::vector<std::vector<png_byte>> rows,
+                 const std::vector<png_color>& palette = {},
+                 const std::vector<png_byte>& alpha = {}) {
   std::FILE* f = std::fopen(path.c_str(), "wb");
   ASSERT_NE(f, nullptr);
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png_create_info_struct(png);
   png_init_io(png, f);
-  png_set_IHDR(png, info, width, height, 4, PNG_COLOR_TYPE_PALETTE, PNG_INTERLACE_NONE,
+  png_set_IHDR(png, info, width, static_cast<png_uint_32>(rows.size()), depth, colour, interlace,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  std::vector<png_color> palette(16);
-  for (int i = 0; i < 16; ++i) {
-    palette[i] = {static_cast<png_byte>(i * 16), static_cast<png_byte>(255 - i * 9),
-                  static_cast<png_byte>(i * i)};
-  }
-  png_set_PLTE(png, info, palette.data(), 16);
-  png_byte alpha[2] = {0, 128};
-  png_set_tRNS(png, info, alpha, 2, nullptr);
+  if (!palette.empty()) png_set_PLTE(png, info, palette.data(), static_cast<int>(palette.size()));
+  if (!alpha.empty())
+    png_set_tRNS(png, info, alpha.data(), static_cast<int>(alpha.size()), nullptr);
   png_write_info(png, info);
-  std::vector<png_byte> row((width + 1) / 2);
-  for (int y = 0; y < height; ++y) {
-    for (size_t x = 0; x < row.size(); ++x) row[x] = static_cast<png_byte>((x + y) * 0x13);
-    png_write_row(png, row.data());
-  }
+  std::vector<png_bytep> pointers;
+  for (std::vector<png_byte>& row : rows) pointers.push_back(row.data());
+  png_write_image(png, pointers.data());  // all passes of an interlaced image
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
   std::fclose(f);
 }
 
-// An interlaced (Adam7) RGB PNG of `image` (CV_8UC3 BGR), which OpenCV cannot write either.
+// A 4-bit palette PNG with a transparent entry.
+void WritePalettePng(const std::string& path, int width, int height) {
+  std::vector<png_color> palette(16);
+  for (int i = 0; i < 16; ++i) {
+    palette[i] = {static_cast<png_byte>(i * 16), static_cast<png_byte>(255 - i * 9),
+                  static_cast<png_byte>(i * i)};
+  }
+  std::vector<std::vector<png_byte>> rows(height, std::vector<png_byte>((width + 1) / 2));
+  for (int y = 0; y < height; ++y) {
+    for (size_t x = 0; x < rows[y].size(); ++x) rows[y][x] = static_cast<png_byte>((x + y) * 0x13);
+  }
+  WriteRawPng(path, width, 4, PNG_COLOR_TYPE_PALETTE, PNG_INTERLACE_NONE, rows, palette, {0, 128});
+}
+
+// An interlaced (Adam7) RGB PNG of the samples of `image` (CV_8UC3).
 void WriteInterlacedPng(const std::string& path, const cv::Mat& image) {
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  ASSERT_NE(f, nullptr);
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png_create_info_struct(png);
-  png_init_io(png, f);
-  png_set_IHDR(png, info, image.cols, image.rows, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_ADAM7,
-               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  png_write_info(png, info);
-  png_set_bgr(png);
-  std::vector<png_bytep> rows(static_cast<std::size_t>(image.rows));
-  for (int y = 0; y < image.rows; ++y) rows[y] = const_cast<png_bytep>(image.ptr(y));
-  png_write_image(png, rows.data());
-  png_write_end(png, nullptr);
-  png_destroy_write_struct(&png, &info);
-  std::fclose(f);
+  std::vector<std::vector<png_byte>> rows;
+  for (int y = 0; y < image.rows; ++y)
+    rows.emplace_back(image.ptr(y), image.ptr(y) + 3 * image.cols);
+  WriteRawPng(path, image.cols, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_ADAM7, rows);
 }
 
 TEST(DirectDecoders, PngPixelsAreTheOnesOpenCvsReaderDecodes) {
