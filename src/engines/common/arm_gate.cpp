@@ -41,6 +41,17 @@ bool ArmGate::Consistent(const Pose& from, const Pose& to) const {
          std::abs(AngleDiff(to.bend_deg, from.bend_deg)) <= reach;
 }
 
+bool ArmGate::Reachable(const ArmMeasurement& m) const {
+  if (!confirmed_ || !std::isfinite(m.upper_deg) || !std::isfinite(m.fore_deg)) return false;
+  if (!have_last_) return true;
+  Pose now;
+  now.upper_deg = m.upper_deg;
+  now.bend_deg = AngleDiff(m.fore_deg, m.upper_deg);
+  now.time_s = m.time_s;
+  if (o_.confirm_after_gap && missed_ && Reach(now.time_s - last_.time_s) >= 180) return false;
+  return Consistent(last_, now);
+}
+
 void LoseRow(ArmMeasurement* m, const std::string& why) {
   m->phase = MeasurementPhase::kLost;
   m->note = why;

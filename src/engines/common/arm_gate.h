@@ -44,6 +44,11 @@ class ArmGate {
 
   bool confirmed() const { return confirmed_; }
 
+  // Whether Review would keep the candidate `m` (its angles and time) on speed alone, changing
+  // nothing: the gate is confirmed and the pose is reachable from the last accepted one (the
+  // support is judged elsewhere: a pose the engine itself withholds, for a second measurement).
+  bool Reachable(const ArmMeasurement& m) const;
+
  private:
   struct Pose {
     double upper_deg = 0, bend_deg = 0, time_s = 0;

@@ -23,6 +23,16 @@ inline constexpr const char* kBlazePoseModelName = "blazepose-full-ghum";  // --
 
 std::unique_ptr<Engine> CreateBgsubEngine(const BgsubOptions& options);
 std::unique_ptr<Engine> CreateLkEngine(const LkOptions& options);
+// The pose an lk engine's tracker withheld in its last row as undecided by its own evidence
+// (lk/tracker.h, TrackerPose::undecided), as the ok row it would have been, and how far its
+// rival lies at least; for a second measurement to decide.
+struct UndecidedPose {
+  ArmMeasurement row;
+  double rival_apart_deg = 0;
+};
+// Null when the last row withheld none (or the gate would not have kept it on speed), or `lk` is
+// not an lk engine.
+const UndecidedPose* LkUndecidedPose(const Engine& lk);
 std::unique_ptr<Engine> CreateMarkerEngine(const MarkerOptions& options);
 std::unique_ptr<Engine> CreatePoseEngine(const PoseOptions& options);  // either network
 std::unique_ptr<Engine> CreateBlazePoseEngine(const PoseOptions& options);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "armmimic/core/angle_file.h"
 #include "armmimic/core/angles.h"
@@ -25,6 +26,11 @@ double AllowedDisagreementDeg(double length_px, const HybridOptions& options) {
 
 std::string Disagreement(const ArmMeasurement& lk, const ArmMeasurement& bgsub,
                          const HybridOptions& options) {
+  return DisagreementWithRival(lk, bgsub, options, std::numeric_limits<double>::infinity());
+}
+
+std::string DisagreementWithRival(const ArmMeasurement& lk, const ArmMeasurement& bgsub,
+                                  const HybridOptions& options, double rival_apart_deg) {
   struct Segment {
     const char* name;
     double lk_deg, bgsub_deg, length_px;
@@ -38,7 +44,8 @@ std::string Disagreement(const ArmMeasurement& lk, const ArmMeasurement& bgsub,
       return std::string("no ") + s.name + " direction to compare";
     }
     const double apart = std::abs(Wrap180(s.lk_deg - s.bgsub_deg));
-    const double allowed = AllowedDisagreementDeg(s.length_px, options);
+    const double allowed =
+        std::min(AllowedDisagreementDeg(s.length_px, options), rival_apart_deg / 2);
     if (apart > allowed) {
       return std::string("the tracker and the background difference disagree on the ") + s.name +
              " by " + FormatNumber(apart, 1) + " degrees (allowed " + FormatNumber(allowed, 1) +

@@ -23,4 +23,11 @@ double AllowedDisagreementDeg(double length_px, const HybridOptions& options);
 std::string Disagreement(const ArmMeasurement& lk, const ArmMeasurement& bgsub,
                          const HybridOptions& options);
 
+// Disagreement for a pose lk withheld because a rival at least `rival_apart_deg` from it
+// explains its own evidence about as well (lk/tracker.h, TrackerPose::undecided): bgsub decides
+// for it only when it places each segment nearer to it than to any such rival, within half that
+// distance, besides the usual bound.
+std::string DisagreementWithRival(const ArmMeasurement& lk, const ArmMeasurement& bgsub,
+                                  const HybridOptions& options, double rival_apart_deg);
+
 }  // namespace armmimic::internal

@@ -132,6 +132,7 @@ class HybridEngine final : public Engine {
         TakeOpinion(b, &m);
         return;
       }
+      if (bgsub_ && b.phase == MeasurementPhase::kOk && DecidedByOpinion(b, &m)) return;
       m.note = "the tracker: " + m.note;
       return;
     }
@@ -147,12 +148,45 @@ class HybridEngine final : public Engine {
       LoseRow(&m, why);
       return;
     }
-    // Two measurements that err apart: their mean halves what they do not share.
-    m.upper_deg = Wrap180(m.upper_deg + Wrap180(b.upper_deg - m.upper_deg) / 2);
-    m.fore_deg = Wrap180(m.fore_deg + Wrap180(b.fore_deg - m.fore_deg) / 2);
-    m.bend_deg = Wrap180(m.fore_deg - m.upper_deg);
-    m.yaw_deg = b.yaw_deg;
-    m.confidence = Lower(m.confidence, b.confidence);
+    Combine(b, &m);
+  }
+
+  // Two measurements that err apart: their mean halves what they do not share.
+  static void Combine(const ArmMeasurement& b, ArmMeasurement* m) {
+    m->upper_deg = Wrap180(m->upper_deg + Wrap180(b.upper_deg - m->upper_deg) / 2);
+    m->fore_deg = Wrap180(m->fore_deg + Wrap180(b.fore_deg - m->fore_deg) / 2);
+    m->bend_deg = Wrap180(m->fore_deg - m->upper_deg);
+    m->yaw_deg = b.yaw_deg;
+    m->confidence = Lower(m->confidence, b.confidence);
+  }
+
+  // A pose the tracker withheld because its own evidence could not tell it from a rival far
+  // from it (lk/tracker.h, TrackerPose::undecided) stands when the background difference,
+  // measured apart from the tracker and supported by its own pixels, places both segments alike:
+  // the rival is then not what the frame shows. A rival the background difference agrees with
+  // instead, or no agreement, leaves the row lost.
+  bool DecidedByOpinion(const ArmMeasurement& b, ArmMeasurement* m) const {
+    const internal::UndecidedPose* undecided = internal::LkUndecidedPose(*lk_);
+    if (!undecided) return false;
+    const ArmMeasurement* u = &undecided->row;
+    if (!internal::DisagreementWithRival(*u, b, o_, undecided->rival_apart_deg).empty()) {
+      return false;
+    }
+    const std::string why = u->note;
+    m->phase = MeasurementPhase::kOk;
+    m->upper_deg = u->upper_deg;
+    m->fore_deg = u->fore_deg;
+    m->upper_com_px = u->upper_com_px;
+    m->fore_com_px = u->fore_com_px;
+    m->shoulder_px = u->shoulder_px;
+    m->elbow_px = u->elbow_px;
+    m->wrist_px = u->wrist_px;
+    m->bent = u->bent;
+    m->confidence = u->confidence;
+    Combine(b, m);
+    m->note = "the tracker could not tell this pose from another alone (" + why + "); " + name_ +
+              " places it alike";
+    return true;
   }
 
   // The pose network's own row where the tracker has lost the arm.

@@ -7,6 +7,7 @@
 // first frame processed is the known starting posture and already gets a row.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include <opencv2/imgproc.hpp>
@@ -116,6 +117,7 @@ class LkEngine : public Engine {
     m.frame = frame.index;
     m.time_s = frame.time_s;
     if (!tracker_) throw std::logic_error("lk: Process() before a successful Begin()");
+    undecided_.reset();
     if (frame.image.size() != frame_size_ || frame.image.type() != CV_8UC3) {
       m.phase = MeasurementPhase::kLost;
       m.note = "frame " + std::to_string(frame.index) + " is not a " + SizeText(frame_size_) +
@@ -176,6 +178,10 @@ class LkEngine : public Engine {
             {"motion_threshold", FormatNumber(o_.motion_threshold_px, 2)},
             {"still_frames_drop", std::to_string(o_.still_frames_drop)}};
   }
+
+  // This frame's pose the tracker withheld as undecided (lk/tracker.h, TrackerPose::undecided),
+  // as an ok row would have it, when the gate finds it reachable; null otherwise.
+  const internal::UndecidedPose* undecided() const { return undecided_ ? &*undecided_ : nullptr; }
 
  private:
   enum class State { kStandstill, kStart, kTracking, kFailed };
@@ -288,7 +294,12 @@ class LkEngine : public Engine {
     const cv::Point2f offf(static_cast<float>(off.x), static_cast<float>(off.y));
     for (const cv::Point2f& p : pose.upper_features) m.upper_features.push_back(p + offf);
     for (const cv::Point2f& p : pose.fore_features) m.fore_features.push_back(p + offf);
-    if (!o_.thesis_mode) gate_.Review(&m, pose.support);
+    if (o_.thesis_mode) return m;
+    if (pose.undecided && gate_.Reachable(m)) {
+      undecided_ = internal::UndecidedPose{m, pose.rival_apart_deg};
+      undecided_->row.confidence = std::clamp(pose.fit_support, 0.0, 1.0);
+    }
+    gate_.Review(&m, pose.support);
     return m;
   }
 
@@ -303,6 +314,7 @@ class LkEngine : public Engine {
   LkOptions o_;
   std::unique_ptr<lk::Tracker> tracker_;
   ArmGate gate_;  // honest status: weak evidence or an impossible jump is `lost`
+  std::optional<internal::UndecidedPose> undecided_;  // this frame's withheld pose
   cv::Size frame_size_;
   cv::Rect roi_;
   cv::Mat background_;
@@ -321,6 +333,11 @@ class LkEngine : public Engine {
 namespace internal {
 std::unique_ptr<Engine> CreateLkEngine(const LkOptions& options) {
   return std::make_unique<LkEngine>(options);
+}
+
+const UndecidedPose* LkUndecidedPose(const Engine& lk) {
+  const auto* engine = dynamic_cast<const LkEngine*>(&lk);
+  return engine ? engine->undecided() : nullptr;
 }
 }  // namespace internal
 }  // namespace armmimic

@@ -151,8 +151,10 @@ class ModelTracker : public Tracker {
     // The forearm's own margin decides only what is written: the pose is still the best one, and
     // is tracked on as before.
     double written = support;
+    double rival_apart_deg = kNaN;
     if (written >= o_.min_support && ForeAmbiguous(best)) {
       written = 0;
+      rival_apart_deg = kForeApartDeg;
       note = "ambiguous forearm: a direction " + FormatNumber(kForeApartDeg, 0) +
              "+ deg away explains it as well";
     }
@@ -160,6 +162,7 @@ class ModelTracker : public Tracker {
     const bool unconfirmed = Unconfirmed(best, anywhere, support);
     if (written >= o_.min_support && unconfirmed) {
       written = 0;
+      rival_apart_deg = kDistinctDeg;
       note =
           "unconfirmed: where the scene was never seen without the arm, and the arm was seen "
           "elsewhere";
@@ -183,7 +186,11 @@ class ModelTracker : public Tracker {
       upper_velocity_ = fore_velocity_ = 0;
       flow_.ForgetArm();
     }
-    return MakePose(true, written, note);
+    TrackerPose out = MakePose(true, written, note);
+    out.undecided = confident && written < o_.min_support;
+    out.rival_apart_deg = rival_apart_deg;
+    out.fit_support = support;
+    return out;
   }
 
  private:

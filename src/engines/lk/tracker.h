@@ -38,6 +38,15 @@ struct TrackerPose {
   // How much of this frame's evidence backs the pose, 0..1 (nan: not rated): the weaker part's
   // share of sleeve and feature support (RateSupport in anchored_features.cpp).
   double support = kNaN;
+  // The pose is tracked on as confident, but its row is withheld: the tracker's own evidence
+  // cannot tell it from a rival (another forearm direction explaining the forearm about as well,
+  // or a pose on pixels never seen without the arm while the arm was seen elsewhere). `support`
+  // is then 0 and the row lost; a second measurement taken apart from this tracker may decide it
+  // (the hybrid engine). `rival_apart_deg`: how far the rival is, at least; `fit_support`: the
+  // support the fit alone gives.
+  bool undecided = false;
+  double rival_apart_deg = kNaN;
+  double fit_support = kNaN;
   cv::Point2d shoulder{kNaN, kNaN}, elbow{kNaN, kNaN}, wrist{kNaN, kNaN};
   cv::Point2d upper_com{kNaN, kNaN}, fore_com{kNaN, kNaN};
   std::vector<cv::Point2f> upper_features, fore_features;

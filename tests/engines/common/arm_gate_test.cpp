@@ -84,6 +84,24 @@ TEST(ArmGate, WeakEvidenceIsLostAndStrongEvidenceReturns) {
   EXPECT_TRUE(Ok(&gate, 3, -84, -84, std::nan("")));  // not rated: the speed rule still applies
 }
 
+// Reachable answers for a pose the engine withholds (the gate's state unchanged): reachable
+// from the last accepted pose at the speed limit, never while the gate is unconfirmed.
+TEST(ArmGate, ReachableJudgesSpeedAloneAndChangesNothing) {
+  ArmGateOptions o;
+  o.confirm_frames = 3;
+  ArmGate gate(o);
+  ASSERT_TRUE(Ok(&gate, 0, -90, -90));
+  EXPECT_TRUE(gate.Reachable(Candidate(1, -75, -75)));   // 15 degrees in a frame
+  EXPECT_FALSE(gate.Reachable(Candidate(1, -60, -90)));  // 30: too fast
+  EXPECT_FALSE(gate.Reachable(Candidate(1, std::nan(""), -90)));
+  // Asking did not move the last accepted pose: -75 is still reachable, and a pose reachable
+  // only from -75 (-57) is not.
+  EXPECT_TRUE(gate.Reachable(Candidate(1, -75, -75)));
+  EXPECT_FALSE(gate.Reachable(Candidate(1, -57, -57)));
+  EXPECT_FALSE(Ok(&gate, 1, 45, 45));  // a jump: unconfirmed
+  EXPECT_FALSE(gate.Reachable(Candidate(2, 46, 46)));
+}
+
 TEST(ArmGate, ALongGapAllowsAProportionallyLargerMove) {
   ArmGate gate;
   ASSERT_TRUE(Ok(&gate, 0, -90, -90));

@@ -48,6 +48,17 @@ TEST(HybridAgreement, DirectionsAcrossTheSeamAreCloseNotFarApart) {
   EXPECT_EQ(Disagreement(Row(178, -176, 50, 50), Row(-178, 179), HybridOptions()), "");
 }
 
+// A pose lk withheld because a rival 20 degrees off explains its evidence as well: decided only
+// by a measurement nearer to it than halfway to the rival (10 degrees), though 12 would do
+// otherwise.
+TEST(HybridAgreement, AnUndecidedPoseNeedsTheOpinionNearerThanHalfwayToItsRival) {
+  const ArmMeasurement lk = Row(-90, -60, 50, 50);
+  EXPECT_EQ(DisagreementWithRival(lk, Row(-88, -52), HybridOptions(), 20), "");
+  const std::string why = DisagreementWithRival(lk, Row(-88, -49), HybridOptions(), 20);
+  EXPECT_NE(why.find("forearm by 11.0 degrees (allowed 10.0)"), std::string::npos) << why;
+  EXPECT_EQ(Disagreement(lk, Row(-88, -49), HybridOptions()), "");
+}
+
 TEST(HybridAgreement, AMissingDirectionIsNoAgreement) {
   const std::string why = Disagreement(Row(-90, kNaN), Row(-90, -90), HybridOptions());
   EXPECT_NE(why.find("no forearm direction"), std::string::npos) << why;
