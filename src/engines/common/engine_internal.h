@@ -33,6 +33,8 @@ struct UndecidedPose {
 // Null when the last row withheld none (or the gate would not have kept it on speed), or `lk` is
 // not an lk engine.
 const UndecidedPose* LkUndecidedPose(const Engine& lk);
+// Whether an lk engine could not calibrate from the standstill (it then has no pose at all).
+bool LkCalibrationRefused(const Engine& lk);
 std::unique_ptr<Engine> CreateMarkerEngine(const MarkerOptions& options);
 std::unique_ptr<Engine> CreatePoseEngine(const PoseOptions& options);  // either network
 std::unique_ptr<Engine> CreateBlazePoseEngine(const PoseOptions& options);

@@ -51,6 +51,7 @@ class HybridEngine final : public Engine {
     untracked_ = 0;
     steady_ = 0;
     restarts_ = 0;
+    opinion_ok_throughout_ = true;
     if (Status st = lk_->Begin(context); !st) return st;
     if (!context.background.empty() && !context.arm_length.empty()) {
       // The second opinion calibrates itself: clicked joints are the tracker's start, and a
@@ -98,7 +99,15 @@ class HybridEngine final : public Engine {
         tracked && m.phase != MeasurementPhase::kOk && b.phase == MeasurementPhase::kOk;
     untracked_ = tracked && !(pose_ && disagreed) ? 0 : untracked_ + 1;
     Steady(b);
-    if (untracked_ >= o_.restart_frames && steady_ >= o_.confirm_frames) Restart(frame, b, &m);
+    if (b.phase != MeasurementPhase::kOk) opinion_ok_throughout_ = false;
+    // A tracker that could not calibrate from the standstill has never had a pose of its own:
+    // it starts from the background difference's first row, which that engine's own gate
+    // checked against the standstill's calibrated pose, as long as every row since was ok.
+    const bool never_started = bgsub_ && restarts_ == 0 && opinion_ok_throughout_ && steady_ >= 1 &&
+                               internal::LkCalibrationRefused(*lk_);
+    if ((untracked_ >= o_.restart_frames && steady_ >= o_.confirm_frames) || never_started) {
+      Restart(frame, b, &m);
+    }
     return m;
   }
 
@@ -263,6 +272,7 @@ class HybridEngine final : public Engine {
   double steady_upper_deg_ = 0;  // its last pose
   double steady_fore_deg_ = 0;
   int restarts_ = 0;
+  bool opinion_ok_throughout_ = true;  // the second opinion ok on every row so far
 };
 
 }  // namespace

@@ -179,6 +179,9 @@ class LkEngine : public Engine {
             {"still_frames_drop", std::to_string(o_.still_frames_drop)}};
   }
 
+  // The standstill calibration was refused: no pose will come.
+  bool calibration_refused() const { return state_ == State::kFailed; }
+
   // This frame's pose the tracker withheld as undecided (lk/tracker.h, TrackerPose::undecided),
   // as an ok row would have it, when the gate finds it reachable; null otherwise.
   const internal::UndecidedPose* undecided() const { return undecided_ ? &*undecided_ : nullptr; }
@@ -333,6 +336,11 @@ class LkEngine : public Engine {
 namespace internal {
 std::unique_ptr<Engine> CreateLkEngine(const LkOptions& options) {
   return std::make_unique<LkEngine>(options);
+}
+
+bool LkCalibrationRefused(const Engine& lk) {
+  const auto* engine = dynamic_cast<const LkEngine*>(&lk);
+  return engine && engine->calibration_refused();
 }
 
 const UndecidedPose* LkUndecidedPose(const Engine& lk) {
