@@ -25,12 +25,14 @@ double AllowedDisagreementDeg(double length_px, const HybridOptions& options) {
 }
 
 std::string Disagreement(const ArmMeasurement& lk, const ArmMeasurement& bgsub,
-                         const HybridOptions& options) {
-  return DisagreementWithRival(lk, bgsub, options, std::numeric_limits<double>::infinity());
+                         const HybridOptions& options, const std::string& opinion) {
+  return DisagreementWithRival(lk, bgsub, options, std::numeric_limits<double>::infinity(),
+                               opinion);
 }
 
 std::string DisagreementWithRival(const ArmMeasurement& lk, const ArmMeasurement& bgsub,
-                                  const HybridOptions& options, double rival_apart_deg) {
+                                  const HybridOptions& options, double rival_apart_deg,
+                                  const std::string& opinion) {
   struct Segment {
     const char* name;
     double lk_deg, bgsub_deg, length_px;
@@ -47,9 +49,8 @@ std::string DisagreementWithRival(const ArmMeasurement& lk, const ArmMeasurement
     const double allowed =
         std::min(AllowedDisagreementDeg(s.length_px, options), rival_apart_deg / 2);
     if (apart > allowed) {
-      return std::string("the tracker and the background difference disagree on the ") + s.name +
-             " by " + FormatNumber(apart, 1) + " degrees (allowed " + FormatNumber(allowed, 1) +
-             ")";
+      return "the tracker and " + opinion + " disagree on the " + s.name + " by " +
+             FormatNumber(apart, 1) + " degrees (allowed " + FormatNumber(allowed, 1) + ")";
     }
   }
   return std::string();

@@ -20,14 +20,17 @@ double AllowedDisagreementDeg(double length_px, const HybridOptions& options);
 // Empty when the two ok rows agree: each segment's directions (upper_deg, fore_deg) within
 // AllowedDisagreementDeg of the segment's length in lk's row (its joints), or the fixed bound
 // where lk's row has no joints. Otherwise why not, for the row's note.
+// `opinion` names the second measurement in the reason.
 std::string Disagreement(const ArmMeasurement& lk, const ArmMeasurement& bgsub,
-                         const HybridOptions& options);
+                         const HybridOptions& options,
+                         const std::string& opinion = "the background difference");
 
 // Disagreement for a pose lk withheld because a rival at least `rival_apart_deg` from it
 // explains its own evidence about as well (lk/tracker.h, TrackerPose::undecided): bgsub decides
 // for it only when it places each segment nearer to it than to any such rival, within half that
 // distance, besides the usual bound.
 std::string DisagreementWithRival(const ArmMeasurement& lk, const ArmMeasurement& bgsub,
-                                  const HybridOptions& options, double rival_apart_deg);
+                                  const HybridOptions& options, double rival_apart_deg,
+                                  const std::string& opinion = "the background difference");
 
 }  // namespace armmimic::internal

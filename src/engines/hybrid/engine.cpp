@@ -153,7 +153,14 @@ class HybridEngine final : public Engine {
       LoseRow(&m, name_ + ", the second opinion: " + b.note);
       return;
     }
-    if (const std::string why = internal::Disagreement(m, b, o_); !why.empty()) {
+    if (const std::string why = internal::Disagreement(m, b, o_, name_); !why.empty()) {
+      if (pose_) {
+        // A tracker that disagrees with the pose network has drifted (it counts as having lost
+        // the arm, below): the network's row stands as where the tracker is lost.
+        m.note = why;
+        TakeOpinion(b, &m);
+        return;
+      }
       LoseRow(&m, why);
       return;
     }
@@ -178,7 +185,7 @@ class HybridEngine final : public Engine {
     const internal::UndecidedPose* undecided = internal::LkUndecidedPose(*lk_);
     if (!undecided) return false;
     const ArmMeasurement* u = &undecided->row;
-    if (!internal::DisagreementWithRival(*u, b, o_, undecided->rival_apart_deg).empty()) {
+    if (!internal::DisagreementWithRival(*u, b, o_, undecided->rival_apart_deg, name_).empty()) {
       return false;
     }
     const std::string why = u->note;

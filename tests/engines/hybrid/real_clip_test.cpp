@@ -67,9 +67,11 @@ ArmRun RunArm(cv::Point2d shoulder, cv::Point2d elbow, cv::Point2d wrist, int co
   return run;
 }
 
-// Measured: left arm 41 of 65 rows ok, upper 4.8 / forearm 4.8 degrees; right 54 of 65, 4.8 /
-// 3.0; no row more than 30 degrees off. The tracker alone (no second opinion) kept 2 and 3 rows,
-// the right arm's 46 / 17 degrees off with 2 rows more than 30 off.
+// Measured: left arm 47 of 65 rows ok, upper 4.6 / forearm 4.6 degrees; right 60 of 65, 5.0 /
+// 3.4; no row more than 30 degrees off. Before a tracker that disagrees with the network let the
+// network's row stand (it had only counted as lost for the restart), 41 and 54 rows, 4.8 / 4.8
+// and 4.8 / 3.0. The tracker alone (no second opinion) kept 2 and 3 rows, the right arm's 46 / 17
+// degrees off with 2 rows more than 30 off.
 TEST(HybridRealClip, ThePoseNetworkIsTheSecondOpinionWithoutAnEmptyRoom) {
   const ArmRun left = RunArm({411.96, 343.44}, {439.53, 466.98}, {484.4, 570.0}, 0);
   const ArmRun right = RunArm({266.74, 331.35}, {215.66, 452.39}, {196.93, 560.5}, 2);
@@ -84,7 +86,7 @@ TEST(HybridRealClip, ThePoseNetworkIsTheSecondOpinionWithoutAnEmptyRoom) {
     EXPECT_LE(r->upper_sum / r->ok, 6.5);
     EXPECT_LE(r->fore_sum / r->ok, 6.5);
   }
-  EXPECT_GE(left.ok + right.ok, 85);  // 95 of 130 measured
+  EXPECT_GE(left.ok + right.ok, 100);  // 107 of 130 measured
 }
 
 }  // namespace
