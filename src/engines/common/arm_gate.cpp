@@ -41,15 +41,24 @@ bool ArmGate::Consistent(const Pose& from, const Pose& to) const {
          std::abs(AngleDiff(to.bend_deg, from.bend_deg)) <= reach;
 }
 
+ArmGate::Pose ArmGate::PoseOf(const ArmMeasurement& m) {
+  Pose p;
+  p.upper_deg = m.upper_deg;
+  p.bend_deg = AngleDiff(m.fore_deg, m.upper_deg);
+  p.time_s = m.time_s;
+  return p;
+}
+
+bool ArmGate::GapVouchesForNothing(const Pose& now) const {
+  return o_.confirm_after_gap && confirmed_ && have_last_ && missed_ &&
+         Reach(now.time_s - last_.time_s) >= 180;
+}
+
 bool ArmGate::Reachable(const ArmMeasurement& m) const {
   if (!confirmed_ || !std::isfinite(m.upper_deg) || !std::isfinite(m.fore_deg)) return false;
   if (!have_last_) return true;
-  Pose now;
-  now.upper_deg = m.upper_deg;
-  now.bend_deg = AngleDiff(m.fore_deg, m.upper_deg);
-  now.time_s = m.time_s;
-  if (o_.confirm_after_gap && missed_ && Reach(now.time_s - last_.time_s) >= 180) return false;
-  return Consistent(last_, now);
+  const Pose now = PoseOf(m);
+  return !GapVouchesForNothing(now) && Consistent(last_, now);
 }
 
 void LoseRow(ArmMeasurement* m, const std::string& why) {
@@ -75,16 +84,12 @@ void ArmGate::Review(ArmMeasurement* m, double support) {
     Lose(m, "evidence too weak (support " + FormatNumber(support, 2) + ")");
     return;
   }
-  Pose now;
-  now.upper_deg = m->upper_deg;
-  now.bend_deg = AngleDiff(m->fore_deg, m->upper_deg);
-  now.time_s = m->time_s;
+  const Pose now = PoseOf(*m);
   if (have_last_ && now.time_s > last_.time_s) {
     const double dt = now.time_s - last_.time_s;
     frame_dt_ = frame_dt_ > 0 ? std::min(frame_dt_, dt) : dt;
   }
-  if (o_.confirm_after_gap && confirmed_ && have_last_ && missed_ &&
-      Reach(now.time_s - last_.time_s) >= 180) {
+  if (GapVouchesForNothing(now)) {
     // Frames without a pose since the last accepted one, so many that an arm could have turned
     // anywhere: the speed check vouches for nothing, and the pose needs agreeing frames as after
     // a rejected jump.

@@ -56,6 +56,10 @@ class ArmGate {
   // The largest turn an arm makes in `dt_s` seconds (at least one frame's worth).
   double Reach(double dt_s) const;
   bool Consistent(const Pose& from, const Pose& to) const;
+  static Pose PoseOf(const ArmMeasurement& m);
+  // With confirm_after_gap: frames without a pose since the last accepted one, over a time in
+  // which an arm could have turned anywhere, so the speed check says nothing about `now`.
+  bool GapVouchesForNothing(const Pose& now) const;
   static void Lose(ArmMeasurement* m, const std::string& why);
 
   ArmGateOptions o_;

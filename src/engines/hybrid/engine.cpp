@@ -188,38 +188,34 @@ class HybridEngine final : public Engine {
     if (!internal::DisagreementWithRival(*u, b, o_, undecided->rival_apart_deg, name_).empty()) {
       return false;
     }
-    const std::string why = u->note;
-    m->phase = MeasurementPhase::kOk;
-    m->upper_deg = u->upper_deg;
-    m->fore_deg = u->fore_deg;
-    m->upper_com_px = u->upper_com_px;
-    m->fore_com_px = u->fore_com_px;
-    m->shoulder_px = u->shoulder_px;
-    m->elbow_px = u->elbow_px;
-    m->wrist_px = u->wrist_px;
+    TakePose(*u, m);
     m->bent = u->bent;
-    m->confidence = u->confidence;
     Combine(b, m);
-    m->note = "the tracker could not tell this pose from another alone (" + why + "); " + name_ +
-              " places it alike";
+    m->note = "the tracker could not tell this pose from another alone (" + u->note + "); " +
+              name_ + " places it alike";
     return true;
   }
 
   // The pose network's own row where the tracker has lost the arm.
   static void TakeOpinion(const ArmMeasurement& b, ArmMeasurement* m) {
     const std::string tracker = m->note;
-    m->phase = b.phase;
-    m->upper_deg = b.upper_deg;
-    m->fore_deg = b.fore_deg;
-    m->bend_deg = b.bend_deg;
-    m->yaw_deg = b.yaw_deg;
-    m->upper_com_px = b.upper_com_px;
-    m->fore_com_px = b.fore_com_px;
-    m->shoulder_px = b.shoulder_px;
-    m->elbow_px = b.elbow_px;
-    m->wrist_px = b.wrist_px;
-    m->confidence = b.confidence;
+    TakePose(b, m);
     m->note = "the pose network's row alone (the tracker: " + tracker + ")";
+  }
+
+  // `from`'s status, angles, centres, joints and confidence into *m (its overlay shapes kept).
+  static void TakePose(const ArmMeasurement& from, ArmMeasurement* m) {
+    m->phase = from.phase;
+    m->upper_deg = from.upper_deg;
+    m->fore_deg = from.fore_deg;
+    m->bend_deg = from.bend_deg;
+    m->yaw_deg = from.yaw_deg;
+    m->upper_com_px = from.upper_com_px;
+    m->fore_com_px = from.fore_com_px;
+    m->shoulder_px = from.shoulder_px;
+    m->elbow_px = from.elbow_px;
+    m->wrist_px = from.wrist_px;
+    m->confidence = from.confidence;
   }
 
   // Counts the frames in a row the second opinion has been ok, each pose within

@@ -178,10 +178,10 @@ TEST(HybridProtocol, CapsuleFiguresWithoutClicks) {
 
 // A tuning scene whose standstill the tracker cannot calibrate from (a sleeve in the room's
 // colour): lk alone gives no ok row at all; the hybrid engine starts its tracker from the
-// background difference's joints instead, and measures the scene. (Its first row, where the
-// tracker, started at once, finds the arm hanging against a body in the wall's colour
-// ambiguous: measured 92.8 % ok, MAE 1.79 deg, the first ok row at motion frame 11; before the
-// tracker was started on the first motion frame, 96.7 %.)
+// background difference's joints instead, and measures the scene. (Started at once, the tracker
+// finds the arm hanging against a body in the wall's colour ambiguous, and restarts again:
+// measured 92.8 % ok, MAE 1.79 deg, the first ok row at motion frame 11; before the tracker was
+// started on the first motion frame, 96.7 %.)
 TEST(HybridProtocol, ATrackerThatCannotCalibrateStartsFromTheBackgroundDifference) {
   const ProtocolRun lk = RandomScene(1001, synth::SceneTier::kMedium, EngineKind::kLk);
   const ProtocolRun hybrid = RandomScene(1001, synth::SceneTier::kMedium, EngineKind::kHybrid);
@@ -200,13 +200,8 @@ TEST(HybridProtocol, ATrackerThatCannotCalibrateStartsFromTheBackgroundDifferenc
 // confidently wrong, the first ok row at motion frame 1; before, the tracker waited for 5 rows
 // of its own loss and 5 steady rows of the background difference: 73.8 %, the first at 5.
 TEST(HybridProtocol, ATrackerWithoutACalibrationStartsOnTheFirstMotionFrame) {
-  synth::CapsuleArmSceneOptions o;
-  o.seed = 3000;
-  o.tier = synth::SceneTier::kMedium;
-  o.size = cv::Size(320, 240);
-  const synth::CapsuleArmScene scene(o);
-  const ProtocolRun lk = RunProtocol(scene, scene.params().jpeg_quality, EngineKind::kLk);
-  const ProtocolRun hybrid = RunProtocol(scene, scene.params().jpeg_quality, EngineKind::kHybrid);
+  const ProtocolRun lk = CapsuleScene(3000, synth::SceneTier::kMedium, EngineKind::kLk);
+  const ProtocolRun hybrid = CapsuleScene(3000, synth::SceneTier::kMedium, EngineKind::kHybrid);
   Print("lk, capsule medium 3000", lk);
   Print("hybrid, capsule medium 3000", hybrid);
   std::printf("hybrid: the first ok row at motion frame %d\n", hybrid.first_ok);
@@ -226,13 +221,8 @@ TEST(HybridProtocol, ATrackerWithoutACalibrationStartsOnTheFirstMotionFrame) {
 // its rows decided by the background difference, the worst 10.4 degrees off; without that rule
 // those rows were lost.
 TEST(HybridProtocol, TheBackgroundDifferenceDecidesAForearmTheTrackerCannotTell) {
-  synth::CapsuleArmSceneOptions o;
-  o.seed = 3003;
-  o.tier = synth::SceneTier::kMedium;
-  o.size = cv::Size(320, 240);
-  const synth::CapsuleArmScene scene(o);
-  const ProtocolRun lk = RunProtocol(scene, scene.params().jpeg_quality, EngineKind::kLk);
-  const ProtocolRun hybrid = RunProtocol(scene, scene.params().jpeg_quality, EngineKind::kHybrid);
+  const ProtocolRun lk = CapsuleScene(3003, synth::SceneTier::kMedium, EngineKind::kLk);
+  const ProtocolRun hybrid = CapsuleScene(3003, synth::SceneTier::kMedium, EngineKind::kHybrid);
   Print("lk, capsule medium 3003", lk);
   Print("hybrid, capsule medium 3003", hybrid);
   EXPECT_GE(hybrid.decided, 8);
