@@ -33,9 +33,8 @@ CLI="$BUILD/bin/armmimic-cli"
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 
-header() {  # header KEY TRUTH: a key=value of the truth's second line
-  sed -n 2p "$2" | tr ' ' '\n' | awk -F= -v k="$1" '$1 == k { print $2 }'
-}
+# The value of KEY in TRUTH's header line (as protocol-eval.sh reads it).
+meta() { sed -n '2p' "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
 
 rows="$TMP/rows.tsv"
 printf 'scene\tgenerator\ttier\tshoulder\telbow\twrist\twrist_len\treach_len\tnote\n' >"$rows"
@@ -45,11 +44,11 @@ for work in "${WORKS[@]}"; do
     dir=${dir%/}
     truth="$dir/truth.tsv"
     [[ -f "$truth" && -f "$dir/scene.avi" && -f "$dir/background.png" && -f "$dir/armlength.png" ]] || continue
-    k=$(header background_frames "$truth")
-    m=$(header standstill_frames "$truth")
-    generator=$(header generator "$truth")
+    k=$(meta "$truth" background_frames)
+    m=$(meta "$truth" standstill_frames)
+    generator=$(meta "$truth" generator)
     [[ -n "$generator" ]] || generator=random
-    tier=$(header tier "$truth")
+    tier=$(meta "$truth" tier)
     log="$TMP/log"
     "$CLI" analyze "$dir/scene.avi" -o "$TMP/angles.tsv" --engine lk \
       --background "$dir/background.png" --arm-length "$dir/armlength.png" \
