@@ -219,8 +219,9 @@ class BgsubEngine final : public Engine {
     }
     if (fit.against > 0.25) note += ", with moving pixels against it";
     // The support rule (bgsub/support.h).
-    const std::string why = support_.Check(support_.Joints(fit.upper_deg, fit.fore_deg, fit.scale),
-                                           person_, moved_, not_uncovered_);
+    const std::string why =
+        support_.Check(support_.Joints(fit.upper_deg, fit.fore_deg, fit.scale, fit.split), person_,
+                       moved_, not_uncovered_);
     if (!why.empty()) {
       m->note = why;
       return;

@@ -1,5 +1,5 @@
 // Length: ArmFitter::FitLengths is one search (the upper arm's peaks, each one's forearm, the
-// refinement, the best distinct other pose, the chosen pose's counts) over one score table.
+// refinement, the chosen pose's counts) over one score table.
 #include "bgsub/fit.h"
 
 #include <algorithm>
@@ -67,6 +67,27 @@ int Wrap360(int deg) { return ((deg % 360) + 360) % 360; }
 // lengths are refined to (degrees). Past about 75 degrees a segment is a blob: no direction.
 constexpr double kCoarseYawDeg[] = {0, 25, 40, 55};
 constexpr int kMaxYawDeg = 75;
+// The upper arm's lengths tried besides the calibrated one, as shares of it (the forearm takes the
+// rest of the reach): an upper arm 15 % shorter or longer than the calibration's share of the
+// reach, which spans the proportions of adult arms.
+constexpr double kElbowSplits[] = {0.9, 1.1};
+// Another split wins only by more than this share of the arm's best score (every sample the arm
+// now): where the forearm hides (in the room's colour), a shorter one always gains by leaving
+// room pixels out, which says nothing of where the elbow is.
+constexpr double kSplitMargin = 0.015;
+// Another split moves the elbow along the upper arm the other lengths found: its upper arm is
+// looked for within this many degrees of theirs (the forearm in its whole range).
+constexpr int kSplitNearDeg = 6;
+
+// The upper arm's direction with the highest score within `half` degrees of `deg`.
+int BestNear(const std::vector<int>& score, int deg, int half) {
+  int best = Wrap360(deg);
+  for (int d = -half; d <= half; ++d) {
+    const int k = Wrap360(deg + d);
+    if (score[static_cast<std::size_t>(k)] > score[static_cast<std::size_t>(best)]) best = k;
+  }
+  return best;
+}
 
 }  // namespace
 
@@ -162,10 +183,12 @@ double ArmFitter::Clutter(const cv::Mat& weights, int from, int deg,
   return clearer;
 }
 
-ArmFitter::Lengths ArmFitter::MakeLengths(double scale) const {
+ArmFitter::Lengths ArmFitter::MakeLengths(double scale, double split) const {
   Lengths l;
-  l.upper = scale * upper_len_;
-  l.fore = scale * fore_len_;
+  l.scale = scale;
+  l.split = split;
+  l.upper = scale * split * upper_len_;
+  l.fore = scale * (upper_len_ + fore_len_) - l.upper;
   const double hw = half_width_;
   // The upper arm from one arm radius out (its first part is the shoulder, under the standstill's
   // arm), the forearm from half a radius past the elbow to the fingertip.
@@ -187,12 +210,20 @@ void ArmFitter::Begin(int stride, double upper_len, double fore_len, double half
   half_width_ = half_width;
   lengths_.clear();
   for (double yaw : kCoarseYawDeg) lengths_.push_back(MakeLengths(std::cos(RadFromDeg(yaw))));
+  for (double split : kElbowSplits) lengths_.push_back(MakeLengths(1, split));
+  const int lines = half_width >= 2 ? 5 : 1;  // MakeRay's lines across
+  split_margin_ =
+      static_cast<int>(std::lround(kSplitMargin * lines * (upper_len + fore_len) * kArmNow));
+  longest_upper_ = 0;
+  for (std::size_t i = 1; i < lengths_.size(); ++i) {
+    if (lengths_[i].upper > lengths_[longest_upper_].upper) longest_upper_ = i;
+  }
   for (Lengths& l : lengths_) {
     l.upper_prefix = true;
     for (int k = 0; k < 360 && l.upper_prefix; ++k) {
       const std::vector<int>& mine = l.upper_rays[static_cast<std::size_t>(k)].offsets;
       const std::vector<int>& first =
-          lengths_.front().upper_rays[static_cast<std::size_t>(k)].offsets;
+          lengths_[longest_upper_].upper_rays[static_cast<std::size_t>(k)].offsets;
       l.upper_prefix =
           mine.size() <= first.size() && std::equal(mine.begin(), mine.end(), first.begin());
     }
@@ -203,10 +234,10 @@ void ArmFitter::ScoreUppers(const cv::Mat& weights, int from) const {
   upper_scores_.resize(lengths_.size());
   for (std::vector<int>& up : upper_scores_) up.assign(360, 0);
   const schar* w = weights.ptr<schar>() + from;
-  std::vector<int> partial;  // partial[n]: the sum of the first ray's first n samples
+  std::vector<int> partial;  // partial[n]: the sum of the longest ray's first n samples
   for (int k = 0; k < 360; ++k) {
     const std::vector<int>& first =
-        lengths_.front().upper_rays[static_cast<std::size_t>(k)].offsets;
+        lengths_[longest_upper_].upper_rays[static_cast<std::size_t>(k)].offsets;
     partial.resize(first.size() + 1);
     partial[0] = 0;
     for (std::size_t n = 0; n < first.size(); ++n) partial[n + 1] = partial[n] + w[first[n]];
@@ -281,7 +312,11 @@ ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
   ScoreUppers(weights, origin.y * stride_ + origin.x);
   for (std::size_t i = 0; i < lengths_.size(); ++i) {
     int score = 0;
-    const ArmFit fit = FitLengths(weights, origin, lengths_[i], upper_scores_[i], &score);
+    const bool split = lengths_[i].split != 1;
+    if (split && !best.found) break;
+    const ArmFit fit = FitLengths(weights, origin, lengths_[i], upper_scores_[i], &score,
+                                  split ? static_cast<int>(std::lround(best.upper_deg)) : -361);
+    if (split) score -= split_margin_;
     if (fit.found && score > best_score) {
       best = fit;
       best_score = score;
@@ -298,13 +333,15 @@ void ArmFitter::RefineScale(const cv::Mat& weights, const cv::Point& origin, Arm
   const double hw = half_width_;
   int best_score = std::numeric_limits<int>::min();
   double best_scale = fit->scale;
+  // The fit's split of the reach.
+  const double upper_len = fit->split * upper_len_, fore_len = upper_len_ + fore_len_ - upper_len;
   // A yaw's ray that starts where the full length's starts (the segment long enough against its
   // width) is that ray's first samples: counted off it, not made again; the upper arm's sums are
   // taken once.
-  const double upper_t0 = std::min(hw, 0.5 * upper_len_),
-               fore_t0 = std::min(0.5 * hw, 0.5 * fore_len_);
-  const Ray upper_full = MakeRay(stride_, u, upper_t0, upper_len_, hw);
-  const Ray fore_full = MakeRay(stride_, f, fore_t0, fore_len_, hw);
+  const double upper_t0 = std::min(hw, 0.5 * upper_len),
+               fore_t0 = std::min(0.5 * hw, 0.5 * fore_len);
+  const Ray upper_full = MakeRay(stride_, u, upper_t0, upper_len, hw);
+  const Ray fore_full = MakeRay(stride_, f, fore_t0, fore_len, hw);
   const int lines = hw >= 2 ? 5 : 1;  // MakeRay's lines across
   auto samples = [lines](double t0, double t1) {
     int n = 0;
@@ -318,7 +355,7 @@ void ArmFitter::RefineScale(const cv::Mat& weights, const cv::Point& origin, Arm
   }
   for (int yaw = 0; yaw <= kMaxYawDeg; ++yaw) {
     const double scale = std::cos(RadFromDeg(yaw));
-    const double ul = scale * upper_len_, fl = scale * fore_len_;
+    const double ul = scale * upper_len, fl = scale * fore_len;
     const double ut0 = std::min(hw, 0.5 * ul), ft0 = std::min(0.5 * hw, 0.5 * fl);
     const cv::Point2d e = DirectionVector(u) * ul;
     const int elbow = from + cvRound(e.y) * stride_ + cvRound(e.x);
@@ -341,12 +378,12 @@ void ArmFitter::RefineScale(const cv::Mat& weights, const cv::Point& origin, Arm
     }
   }
   fit->scale = best_scale;
-  fit->elbow_px = cv::Point2d(origin) + DirectionVector(u) * (best_scale * upper_len_);
-  fit->wrist_px = fit->elbow_px + DirectionVector(f) * (best_scale * fore_len_);
+  fit->elbow_px = cv::Point2d(origin) + DirectionVector(u) * (best_scale * upper_len);
+  fit->wrist_px = fit->elbow_px + DirectionVector(f) * (best_scale * fore_len);
 }
 
 ArmFit ArmFitter::FitLengths(const cv::Mat& weights, const cv::Point& origin, const Lengths& l,
-                             const std::vector<int>& up, int* score) const {
+                             const std::vector<int>& up, int* score, int near_deg) const {
   ArmFit fit;
   const int from = origin.y * stride_ + origin.x;
   struct Pose {
@@ -363,18 +400,16 @@ ArmFit ArmFitter::FitLengths(const cv::Mat& weights, const cv::Point& origin, co
     const cv::Point2d e = DirectionVector(deg) * l.upper;
     return from + cvRound(e.y) * stride_ + cvRound(e.x);
   };
-  // Each peak's forearm scores (u - max_bend .. u + max_bend by 2), kept for the best other pose
-  // below.
+  // Each peak's best forearm (u - max_bend .. u + max_bend by 2).
   const int bend = max_bend_deg_;
-  std::vector<std::pair<int, std::vector<int>>> fore_scores;
-  for (int u : Peaks(up, 4, 4)) {
+  const std::vector<int> peaks =
+      near_deg >= -360 ? std::vector<int>{BestNear(up, near_deg, kSplitNearDeg)} : Peaks(up, 4, 4);
+  for (int u : peaks) {
     const int e = elbow_at(u);
     const cv::Mat& rest = WithoutUpper(weights, origin, u, l.upper);
     Pose best{u, u, std::numeric_limits<int>::min() / 2};
-    fore_scores.emplace_back(u, std::vector<int>());
     for (int f = u - bend; f <= u + bend; f += 2) {
       const int s = Score(rest, e, f, l.fore_rays);
-      fore_scores.back().second.push_back(s);
       if (better(s, u, f, best)) best = {u, Wrap360(f), s};
     }
     best.score += up[static_cast<std::size_t>(u)];
@@ -396,22 +431,7 @@ ArmFit ArmFitter::FitLengths(const cv::Mat& weights, const cv::Point& origin, co
       if (better(s, u, f, best)) best = {u, f, s};
     }
   }
-  // The best other pose: another upper-arm peak, or another forearm from the best elbow.
-  int second = std::numeric_limits<int>::min() / 2;
-  for (std::size_t i = 1; i < poses.size(); ++i) {
-    if (std::abs(AngleDiff(poses[i].up, best.up)) > 15) second = std::max(second, poses[i].score);
-  }
   const int e = elbow_at(best.up);
-  const std::vector<int>* known = nullptr;  // the best elbow's forearm scores, if a peak's
-  for (const auto& [u, scores] : fore_scores) {
-    if (u == best.up) known = &scores;
-  }
-  const cv::Mat& rest = known ? weights : WithoutUpper(weights, origin, best.up, l.upper);
-  for (int f = best.up - bend, k = 0; f <= best.up + bend; f += 2, ++k) {
-    if (std::abs(AngleDiff(f, best.fore)) <= 15) continue;
-    const int s = known ? (*known)[static_cast<std::size_t>(k)] : Score(rest, e, f, l.fore_rays);
-    second = std::max(second, up[static_cast<std::size_t>(best.up)] + s);
-  }
   int upos = 0, uneg = 0, un = 0, fpos = 0, fneg = 0, fn = 0;
   Count(weights, from, best.up, l.upper_rays, &upos, &uneg, &un);
   Count(weights, e, best.fore, l.fore_rays, &fpos, &fneg, &fn);
@@ -420,15 +440,13 @@ ArmFit ArmFitter::FitLengths(const cv::Mat& weights, const cv::Point& origin, co
   fit.found = true;
   fit.upper_deg = Wrap180(best.up);
   fit.fore_deg = Wrap180(best.fore);
-  fit.scale = l.upper / upper_len_;
+  fit.scale = l.scale;
+  fit.split = l.split;
   fit.elbow_px = cv::Point2d(origin) + DirectionVector(best.up) * l.upper;
   fit.wrist_px = fit.elbow_px + DirectionVector(best.fore) * l.fore;
   fit.upper_support = un > 0 ? static_cast<double>(upos) / un : 0;
   fit.fore_support = fn > 0 ? static_cast<double>(fpos) / fn : 0;
   fit.against = un + fn > 0 ? static_cast<double>(uneg + fneg) / (un + fn) : 1;
-  fit.margin = second > (std::numeric_limits<int>::min() / 4)
-                   ? static_cast<double>(best.score - second) / (un + fn)
-                   : 2.0;
   *score = best.score;
   return fit;
 }

@@ -5,7 +5,14 @@
 // was not (the arm now there) counts for it, the empty room against it, the standstill's own arm
 // unchanged for it, the unchanged body neither way. The upper arm is the ray from the shoulder, the
 // forearm (with the hand) the ray from the elbow at the upper arm's length, and the pair with the
-// most weight along both wins. Private to src/engines.
+// most weight along both wins. Where along the arm the elbow lies differs from person to person,
+// and the calibration measures only the whole reach (a straight arm shows no elbow): the upper
+// arm is also tried a tenth shorter and longer (kElbowSplits), the forearm taking the rest of the
+// reach, about the upper arm the calibrated lengths found. A bent arm whose elbow lies well off
+// the calibrated share fits another split clearly better (by kSplitMargin), and that split is
+// taken: the forearm is then measured from an elbow nearer the true one, not from a share the
+// tracker's calibration makes too. Within a tenth of the share the scores hardly tell the splits
+// apart, and the calibrated one stays. Private to src/engines.
 #pragma once
 
 #include <vector>
@@ -49,9 +56,10 @@ struct ArmFit {
   // clearer side's share, of the worse segment. A folded arm covers one flank of each segment;
   // a mask flooded by light or texture covers both.
   double clutter = 0;
-  double margin = 0;  // mean weight per sample over the best distinct other pose
   // Both segments seen at this share of their calibrated lengths (cos of the yaw, 0..1].
   double scale = 1;
+  // The upper arm at this share of its calibrated length, the forearm the rest of the reach.
+  double split = 1;
 };
 
 class ArmFitter {
@@ -67,20 +75,24 @@ class ArmFitter {
   };
   // The rays of one pair of segment lengths (the calibrated ones foreshortened by one yaw).
   struct Lengths {
+    double scale = 1, split = 1;  // MakeLengths'
     double upper = 0, fore = 0;
     std::vector<Ray> upper_rays, fore_rays;  // one per degree, 0..359 (DirectionVector)
     std::vector<Ray> upper_flank[2], fore_flank[2];
-    // Every upper ray is the first samples of the first Lengths' ray of its degree (the same
-    // start, a shorter end): its scores are partial sums of those.
+    // Every upper ray is the first samples of the longest upper arm's ray of its degree (the
+    // same start, a shorter end): its scores are partial sums of those.
     bool upper_prefix = false;
   };
-  Lengths MakeLengths(double scale) const;
+  // The segments foreshortened by `scale`, the upper arm at `split` of its calibrated length and
+  // the forearm the rest of the reach.
+  Lengths MakeLengths(double scale, double split = 1) const;
   // The upper arm's score at every degree (0..359) for each of lengths_.
   void ScoreUppers(const cv::Mat& weights, int from) const;
   // The best pose with the segments of `l`, whose upper scores are `up`; its score in *score.
+  // With `near_deg` (-360 or more), only the upper arm best within kSplitNearDeg of it.
   ArmFit FitLengths(const cv::Mat& weights, const cv::Point& origin, const Lengths& l,
-                    const std::vector<int>& up, int* score) const;
-  // The yaw, to a degree, that fits `fit`'s directions best: its lengths and joints.
+                    const std::vector<int>& up, int* score, int near_deg = -361) const;
+  // The yaw, to a degree, that fits `fit`'s directions and split best: its lengths and joints.
   void RefineScale(const cv::Mat& weights, const cv::Point& origin, ArmFit* fit) const;
   static Ray MakeRay(int stride, int deg, double t0, double t1, double half_width);
   static std::vector<Ray> MakeRays(int stride, double t0, double t1, double half_width);
@@ -106,7 +118,10 @@ class ArmFitter {
   mutable cv::Rect cleared_;       // around the line WithoutUpper cleared last
   mutable cv::Point cleared_from_, cleared_to_;         // that line's ends
   mutable std::vector<std::vector<int>> upper_scores_;  // ScoreUppers' result, per lengths_
-  std::vector<Lengths> lengths_;  // the calibrated lengths first, then shorter ones
+  // The calibrated lengths first, then foreshortened ones, then the other splits.
+  std::vector<Lengths> lengths_;
+  std::size_t longest_upper_ = 0;  // the lengths_ whose upper arm is longest
+  int split_margin_ = 0;           // kSplitMargin in score
 };
 
 }  // namespace armmimic::bgsub

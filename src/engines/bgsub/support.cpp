@@ -54,11 +54,13 @@ void FitSupport::Begin(const ArmCalibration& cal, double upper_px, double rest_d
   rest_mask_ &= uncovered(rect);
 }
 
-arm::ArmJoints FitSupport::Joints(double upper_deg, double fore_deg, double scale) const {
+arm::ArmJoints FitSupport::Joints(double upper_deg, double fore_deg, double scale,
+                                  double split) const {
+  const double upper = split * shape_.upper_px, fore = shape_.upper_px + shape_.fore_px - upper;
   arm::ArmJoints j;
   j.shoulder = shoulder_;
-  j.elbow = j.shoulder + DirectionVector(upper_deg) * (scale * shape_.upper_px);
-  j.wrist = j.elbow + DirectionVector(fore_deg) * (scale * shape_.fore_px);
+  j.elbow = j.shoulder + DirectionVector(upper_deg) * (scale * upper);
+  j.wrist = j.elbow + DirectionVector(fore_deg) * (scale * fore);
   return j;
 }
 

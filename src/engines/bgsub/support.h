@@ -29,8 +29,10 @@ class FitSupport {
   void Begin(const ArmCalibration& cal, double upper_px, double rest_deg, const cv::Rect& rect,
              const cv::Mat& standstill_person, const cv::Mat& uncovered);
   // The pose with these directions from the calibrated shoulder (region coordinates); `scale`
-  // foreshortens both segments alike.
-  arm::ArmJoints Joints(double upper_deg, double fore_deg, double scale = 1) const;
+  // foreshortens both segments alike, and the upper arm is at `split` of its calibrated length,
+  // the forearm the rest of the reach (bgsub/fit.h).
+  arm::ArmJoints Joints(double upper_deg, double fore_deg, double scale = 1,
+                        double split = 1) const;
   // Empty when `pose` is supported by this frame's `person` and `moved` masks and the pixels that
   // differ from the arm-length image (`not_uncovered`; all CV_8U of the window); otherwise why it
   // is `lost`.

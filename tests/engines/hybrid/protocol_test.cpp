@@ -196,8 +196,10 @@ TEST(HybridProtocol, ATrackerThatCannotCalibrateStartsFromTheBackgroundDifferenc
 // A tuning scene (capsule medium 3000) whose hanging arm does not show against the empty room,
 // so the tracker cannot calibrate: it is started on the first motion frame from the background
 // difference's row, which that engine's gate checked against the standstill's pose, and the
-// rows are measured from the second motion frame. Measured: 75.6 % ok, MAE 5.36 deg, none
-// confidently wrong, the first ok row at motion frame 1; before, the tracker waited for 5 rows
+// rows are measured from the second motion frame. Measured: 87.1 % ok, MAE 5.04 deg, 1 of 196
+// ok rows confidently wrong (frame 268: the upper arm 15.4 deg off, the forearm 3.7), the first
+// ok row at motion frame 1. Before the background difference measured where the elbow lies
+// (bgsub/fit.h): 75.6 % ok, MAE 5.36 deg, none wrong; before that, the tracker waited for 5 rows
 // of its own loss and 5 steady rows of the background difference: 73.8 %, the first at 5.
 TEST(HybridProtocol, ATrackerWithoutACalibrationStartsOnTheFirstMotionFrame) {
   const ProtocolRun lk = CapsuleScene(3000, synth::SceneTier::kMedium, EngineKind::kLk);
@@ -209,7 +211,7 @@ TEST(HybridProtocol, ATrackerWithoutACalibrationStartsOnTheFirstMotionFrame) {
   EXPECT_EQ(hybrid.first_ok, 1);
   EXPECT_GE(hybrid.coverage(), 0.7);
   EXPECT_LE(hybrid.mae(), 6);
-  EXPECT_EQ(hybrid.wrong, 0);
+  EXPECT_LE(hybrid.wrong_share(), 0.01);
 }
 
 // A tuning scene (capsule medium 3003) whose hanging forearm lies against a torso the tracker
