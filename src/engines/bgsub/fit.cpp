@@ -68,8 +68,8 @@ int Wrap360(int deg) { return ((deg % 360) + 360) % 360; }
 constexpr double kCoarseYawDeg[] = {0, 25, 40, 55};
 constexpr int kMaxYawDeg = 75;
 // The upper arm's lengths tried besides the calibrated one, as shares of it (the forearm takes the
-// rest of the reach): an upper arm 15 % shorter or longer than the calibration's share of the
-// reach, which spans the proportions of adult arms.
+// rest of the reach): a tenth shorter and a tenth longer than the calibration's share of the
+// reach, about the spread of adults' arm proportions around the anthropometric mean.
 constexpr double kElbowSplits[] = {0.9, 1.1};
 // Another split wins only by more than this share of the arm's best score (every sample the arm
 // now): where the forearm hides (in the room's colour), a shorter one always gains by leaving
