@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <opencv2/imgproc.hpp>
 
@@ -79,6 +80,10 @@ constexpr double kSplitMargin = 0.015;
 // looked for within this many degrees of theirs (the forearm in its whole range).
 constexpr int kSplitNearDeg = 6;
 
+// How many lines along a segment MakeRay samples: five across an arm at least 2 px in half-width,
+// the axis alone across a thinner one.
+int LinesAcross(double half_width) { return half_width >= 2 ? 5 : 1; }
+
 // The upper arm's direction with the highest score within `half` degrees of `deg`.
 int BestNear(const std::vector<int>& score, int deg, int half) {
   int best = Wrap360(deg);
@@ -126,11 +131,10 @@ ArmFitter::Ray ArmFitter::MakeRay(int stride, int deg, double t0, double t1, dou
   Ray ray;
   // Lines along the segment across most of its width: a ray off the arm's axis loses its outer
   // samples, so a straight arm is fitted along its axis and not bent within its own thickness.
-  const bool wide = half_width >= 2;
+  const int n_across = LinesAcross(half_width);
   const double across[5] = {-kAcrossOuter * half_width, -kAcrossInner * half_width, 0,
                             kAcrossInner * half_width, kAcrossOuter * half_width};
-  const double* first = wide ? across : across + 2;
-  const int n_across = wide ? 5 : 1;
+  const double* first = n_across == 5 ? across : across + 2;
   const cv::Point2d d = DirectionVector(deg), n(-d.y, d.x);
   if (t1 >= t0) ray.offsets.reserve(static_cast<std::size_t>(n_across * (t1 - t0 + 2)));
   for (double t = t0; t <= t1; t += 1.0) {
@@ -187,8 +191,9 @@ ArmFitter::Lengths ArmFitter::MakeLengths(double scale, double split) const {
   Lengths l;
   l.scale = scale;
   l.split = split;
-  l.upper = scale * split * upper_len_;
-  l.fore = scale * (upper_len_ + fore_len_) - l.upper;
+  const SplitLengths lengths(upper_len_, fore_len_, split);
+  l.upper = scale * lengths.upper;
+  l.fore = scale * lengths.fore;
   const double hw = half_width_;
   // The upper arm from one arm radius out (its first part is the shoulder, under the standstill's
   // arm), the forearm from half a radius past the elbow to the fingertip.
@@ -211,9 +216,8 @@ void ArmFitter::Begin(int stride, double upper_len, double fore_len, double half
   lengths_.clear();
   for (double yaw : kCoarseYawDeg) lengths_.push_back(MakeLengths(std::cos(RadFromDeg(yaw))));
   for (double split : kElbowSplits) lengths_.push_back(MakeLengths(1, split));
-  const int lines = half_width >= 2 ? 5 : 1;  // MakeRay's lines across
-  split_margin_ =
-      static_cast<int>(std::lround(kSplitMargin * lines * (upper_len + fore_len) * kArmNow));
+  split_margin_ = static_cast<int>(
+      std::lround(kSplitMargin * LinesAcross(half_width) * (upper_len + fore_len) * kArmNow));
   longest_upper_ = 0;
   for (std::size_t i = 1; i < lengths_.size(); ++i) {
     if (lengths_[i].upper > lengths_[longest_upper_].upper) longest_upper_ = i;
@@ -314,8 +318,9 @@ ArmFit ArmFitter::Fit(const cv::Mat& weights, const cv::Point& origin) const {
     int score = 0;
     const bool split = lengths_[i].split != 1;
     if (split && !best.found) break;
-    const ArmFit fit = FitLengths(weights, origin, lengths_[i], upper_scores_[i], &score,
-                                  split ? static_cast<int>(std::lround(best.upper_deg)) : -361);
+    const ArmFit fit =
+        FitLengths(weights, origin, lengths_[i], upper_scores_[i], &score,
+                   split ? std::optional<int>(std::lround(best.upper_deg)) : std::nullopt);
     if (split) score -= split_margin_;
     if (fit.found && score > best_score) {
       best = fit;
@@ -334,7 +339,8 @@ void ArmFitter::RefineScale(const cv::Mat& weights, const cv::Point& origin, Arm
   int best_score = std::numeric_limits<int>::min();
   double best_scale = fit->scale;
   // The fit's split of the reach.
-  const double upper_len = fit->split * upper_len_, fore_len = upper_len_ + fore_len_ - upper_len;
+  const SplitLengths lengths(upper_len_, fore_len_, fit->split);
+  const double upper_len = lengths.upper, fore_len = lengths.fore;
   // A yaw's ray that starts where the full length's starts (the segment long enough against its
   // width) is that ray's first samples: counted off it, not made again; the upper arm's sums are
   // taken once.
@@ -342,7 +348,7 @@ void ArmFitter::RefineScale(const cv::Mat& weights, const cv::Point& origin, Arm
                fore_t0 = std::min(0.5 * hw, 0.5 * fore_len);
   const Ray upper_full = MakeRay(stride_, u, upper_t0, upper_len, hw);
   const Ray fore_full = MakeRay(stride_, f, fore_t0, fore_len, hw);
-  const int lines = hw >= 2 ? 5 : 1;  // MakeRay's lines across
+  const int lines = LinesAcross(hw);
   auto samples = [lines](double t0, double t1) {
     int n = 0;
     for (double t = t0; t <= t1; t += 1.0) ++n;  // MakeRay's steps
@@ -383,7 +389,8 @@ void ArmFitter::RefineScale(const cv::Mat& weights, const cv::Point& origin, Arm
 }
 
 ArmFit ArmFitter::FitLengths(const cv::Mat& weights, const cv::Point& origin, const Lengths& l,
-                             const std::vector<int>& up, int* score, int near_deg) const {
+                             const std::vector<int>& up, int* score,
+                             std::optional<int> near_deg) const {
   ArmFit fit;
   const int from = origin.y * stride_ + origin.x;
   struct Pose {
@@ -403,7 +410,7 @@ ArmFit ArmFitter::FitLengths(const cv::Mat& weights, const cv::Point& origin, co
   // Each peak's best forearm (u - max_bend .. u + max_bend by 2).
   const int bend = max_bend_deg_;
   const std::vector<int> peaks =
-      near_deg >= -360 ? std::vector<int>{BestNear(up, near_deg, kSplitNearDeg)} : Peaks(up, 4, 4);
+      near_deg ? std::vector<int>{BestNear(up, *near_deg, kSplitNearDeg)} : Peaks(up, 4, 4);
   for (int u : peaks) {
     const int e = elbow_at(u);
     const cv::Mat& rest = WithoutUpper(weights, origin, u, l.upper);

@@ -15,6 +15,7 @@
 // apart, and the calibrated one stays. Private to src/engines.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -45,6 +46,14 @@ class ArmEvidence {
   cv::Mat weights_;
 };
 
+// The upper arm's and the forearm's lengths when the upper arm is `split` of its calibrated
+// length `upper` and the forearm takes the rest of the reach `upper` + `fore`.
+struct SplitLengths {
+  SplitLengths(double upper, double fore, double split)
+      : upper(split * upper), fore(upper + fore - split * upper) {}
+  double upper, fore;
+};
+
 struct ArmFit {
   bool found = false;
   double upper_deg = kNaN, fore_deg = kNaN;
@@ -73,7 +82,8 @@ class ArmFitter {
   struct Ray {
     std::vector<int> offsets;  // sample offsets from the ray's origin, in weights' elements
   };
-  // The rays of one pair of segment lengths (the calibrated ones foreshortened by one yaw).
+  // The rays of one pair of segment lengths (the calibrated ones foreshortened by one yaw, or
+  // split at another elbow).
   struct Lengths {
     double scale = 1, split = 1;  // MakeLengths'
     double upper = 0, fore = 0;
@@ -89,9 +99,10 @@ class ArmFitter {
   // The upper arm's score at every degree (0..359) for each of lengths_.
   void ScoreUppers(const cv::Mat& weights, int from) const;
   // The best pose with the segments of `l`, whose upper scores are `up`; its score in *score.
-  // With `near_deg` (-360 or more), only the upper arm best within kSplitNearDeg of it.
+  // With `near_deg`, only the upper arm best within kSplitNearDeg of it.
   ArmFit FitLengths(const cv::Mat& weights, const cv::Point& origin, const Lengths& l,
-                    const std::vector<int>& up, int* score, int near_deg = -361) const;
+                    const std::vector<int>& up, int* score,
+                    std::optional<int> near_deg = std::nullopt) const;
   // The yaw, to a degree, that fits `fit`'s directions and split best: its lengths and joints.
   void RefineScale(const cv::Mat& weights, const cv::Point& origin, ArmFit* fit) const;
   static Ray MakeRay(int stride, int deg, double t0, double t1, double half_width);

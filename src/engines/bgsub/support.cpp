@@ -3,6 +3,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "armmimic/core/angles.h"
+#include "bgsub/fit.h"
 
 namespace armmimic::bgsub {
 namespace {
@@ -56,11 +57,11 @@ void FitSupport::Begin(const ArmCalibration& cal, double upper_px, double rest_d
 
 arm::ArmJoints FitSupport::Joints(double upper_deg, double fore_deg, double scale,
                                   double split) const {
-  const double upper = split * shape_.upper_px, fore = shape_.upper_px + shape_.fore_px - upper;
+  const SplitLengths lengths(shape_.upper_px, shape_.fore_px, split);
   arm::ArmJoints j;
   j.shoulder = shoulder_;
-  j.elbow = j.shoulder + DirectionVector(upper_deg) * (scale * upper);
-  j.wrist = j.elbow + DirectionVector(fore_deg) * (scale * fore);
+  j.elbow = j.shoulder + DirectionVector(upper_deg) * (scale * lengths.upper);
+  j.wrist = j.elbow + DirectionVector(fore_deg) * (scale * lengths.fore);
   return j;
 }
 
