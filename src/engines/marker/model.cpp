@@ -68,10 +68,10 @@ double UpperTurn(const MarkerCalibration& cal, double yaw) {
   return std::abs(std::remainder(cal.upper.theta0 + yaw, 2 * kPi));
 }
 
-// Measures the upper marker for one yaw, when it faces the camera closely enough.
+// Measures the upper marker for one yaw, when it faces the camera within `max_turn_deg`.
 UpperMeasurement Upper(const cv::Mat& gray, const CylinderView& cyl, const MarkerCalibration& cal,
-                       const MarkerOptions& options, double yaw) {
-  if (UpperTurn(cal, yaw) > RadFromDeg(options.max_upper_turn_deg)) {
+                       const MarkerOptions& options, double yaw, double max_turn_deg) {
+  if (UpperTurn(cal, yaw) > RadFromDeg(max_turn_deg)) {
     UpperMeasurement m;
     m.note = "the upper marker is turned away";
     return m;
@@ -122,10 +122,16 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
   // clear as in the reference) wins if the other finds none.
   std::size_t pick = 0;
   bool side_seen = true;  // the single marker's side rests on the image, not the upper marker
-  UpperMeasurement upper = Upper(gray, cyl, cal, options, yaw.hypotheses[0].yaw);
+  // Where one lower marker could be either side, the upper marker is looked for as far round as
+  // a lower marker is read: to tell the side it need only show, even where it is turned too far
+  // to measure the bend (below).
+  const double look_deg = yaw.hypotheses.size() == 2
+                              ? std::max(options.max_upper_turn_deg, options.max_marker_turn_deg)
+                              : options.max_upper_turn_deg;
+  UpperMeasurement upper = Upper(gray, cyl, cal, options, yaw.hypotheses[0].yaw, look_deg);
   out.candidates.insert(out.candidates.end(), upper.spots.begin(), upper.spots.end());
   if (yaw.hypotheses.size() == 2) {
-    const UpperMeasurement other = Upper(gray, cyl, cal, options, yaw.hypotheses[1].yaw);
+    const UpperMeasurement other = Upper(gray, cyl, cal, options, yaw.hypotheses[1].yaw, look_deg);
     out.candidates.insert(out.candidates.end(), other.spots.begin(), other.spots.end());
     const UpperMeasurement* uppers[2] = {&upper, &other};
     bool alive[2], plain[2], telling[2];
@@ -212,6 +218,11 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
   const std::string sign = out.sign_known ? ""
                                           : "; sign unknown: the lower marker could be either, and "
                                             "the upper one does not tell plainly";
+  if (upper.found && UpperTurn(cal, h.yaw) > RadFromDeg(options.max_upper_turn_deg)) {
+    // Found to tell the side, but the bend plane is seen too nearly edge-on to measure the bend.
+    upper.found = false;
+    upper.note = "the upper marker is turned too far to measure the bend";
+  }
   if (upper.found && !upper.ambiguous) {
     out.bend = upper.bend;
     out.upper_px = upper.centre_px;

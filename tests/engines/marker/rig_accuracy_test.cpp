@@ -231,6 +231,23 @@ TEST(MarkerRigAccuracy, EitherSideOfTheSameSizeGivesTheSizeWithoutASign) {
   EXPECT_EQ(t.signed_off, 0) << t.log;
 }
 
+// One lower marker that could be either, where the right side turns the upper marker 60-70
+// degrees round (medium 129 view 3, hard 230 view 3: yaw -55 and 57): past the turn at which
+// the bend is measured, but not past the one at which a marker shows. The upper marker is
+// looked for that far to tell the side (the views were lost as "it could be either"); their
+// bend is not measured. On hard 230 it also tells the sign of two views the upper marker had
+// left unsigned.
+TEST(MarkerRigAccuracy, AnUpperMarkerTurnedPastTheBendsLimitStillTellsTheSide) {
+  RigTally t;
+  RunRig("medium", 129, 4, &t);
+  RunRig("hard", 230, 4, &t);
+  EXPECT_EQ(t.ok, 8) << t.log;
+  EXPECT_LE(t.unsigned_rows, 3) << t.log;
+  EXPECT_LE(t.yaw_max, 1.5) << t.log;
+  EXPECT_LE(t.bend_mae(), 1.0) << t.log;
+  EXPECT_EQ(t.signed_off, 0) << t.log;
+}
+
 TEST(MarkerRigAccuracy, HardRigs) {
   RigTally t;
   for (uint64_t seed : {601, 602, 603}) RunRig("hard", seed, 5, &t);
