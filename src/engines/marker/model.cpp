@@ -5,6 +5,7 @@
 #include "marker/model.h"
 
 #include <cmath>
+#include <utility>
 
 #include "armmimic/core/angle_file.h"
 #include "marker/yaw.h"
@@ -87,6 +88,57 @@ bool SameSize(const YawHypothesis& a, const YawHypothesis& b, const MarkerOption
   return gap <= options.agreement_sigmas * std::hypot(a.sigma, b.sigma) + RadFromDeg(1);
 }
 
+// Both sides of one lower marker, weighed with the upper marker looked for while it faces the
+// camera within `look_deg`: a side is out when the other lower marker would show and does not,
+// or when it turns the upper marker away although the other side finds it plainly. Of two sides
+// left, the one whose upper marker is found plainly (its silhouette as clear as in the
+// reference) wins if the other finds none.
+struct SideEvidence {
+  UpperMeasurement upper[2];
+  bool alive[2] = {true, true}, plain[2] = {false, false}, telling[2] = {false, false};
+};
+
+SideEvidence WeighSides(const cv::Mat& gray, const CylinderView& cyl, const MarkerCalibration& cal,
+                        const MarkerOptions& options, const YawSolution& yaw, double look_deg) {
+  SideEvidence ev;
+  for (int i = 0; i < 2; ++i) {
+    ev.upper[i] = Upper(gray, cyl, cal, options, yaw.hypotheses[i].yaw, look_deg);
+    ev.plain[i] = ev.upper[i].found && !ev.upper[i].ambiguous;
+    // Found with its silhouette as plain as the reference's: the upper part is there.
+    ev.telling[i] = ev.plain[i] && ev.upper[i].support >= 0.5 * cal.upper.support;
+  }
+  bool* alive = ev.alive;
+  const bool* plain = ev.plain;
+  const bool* telling = ev.telling;
+  for (int i = 0; i < 2; ++i) {
+    const bool hidden = UpperTurn(cal, yaw.hypotheses[i].yaw) > RadFromDeg(kHiddenDeg);
+    alive[i] = !yaw.hypotheses[i].other_missing && !(hidden && telling[1 - i]);
+    // This side turns the upper marker squarely to the camera, the other turns it away, and
+    // there is no dark spot at all where this side puts it: the marker would show, and does
+    // not. (A spot weighed and turned down is not enough: a marker missed that way had made a
+    // side 50 degrees wrong.)
+    const bool square = UpperTurn(cal, yaw.hypotheses[i].yaw) <= RadFromDeg(kSquareDeg);
+    const bool away =
+        UpperTurn(cal, yaw.hypotheses[1 - i].yaw) > RadFromDeg(options.max_upper_turn_deg);
+    if (square && away && ev.upper[i].spots.empty()) alive[i] = false;
+  }
+  if (alive[0] && alive[1]) {  // the side whose upper marker shows plainly, if only one does
+    if (telling[0] && !plain[1]) {
+      alive[1] = false;
+    } else if (telling[1] && !plain[0]) {
+      alive[0] = false;
+    } else if (telling[0] != telling[1]) {
+      // Both find a spot, but only one side finds the upper part's silhouette round it: the
+      // other side's bend puts the upper part where the image shows at most half the
+      // reference's edges. The upper marker lies a radius to one side of its part's axis, the
+      // side the yaw turns it to, so the wrong side's part is displaced by about two radii.
+      const int t = telling[0] ? 0 : 1;
+      if (ev.upper[t].support >= kSupportMargin * ev.upper[1 - t].support) alive[1 - t] = false;
+    }
+  }
+  return ev;
+}
+
 }  // namespace
 
 MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration& cal,
@@ -116,58 +168,34 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
     out.note = yaw.note;
     return out;
   }
-  // One marker that could be either side: a side is out when the other lower marker would show
-  // and does not, or when it turns the upper marker away although the other side finds it
-  // plainly. Of two sides left, the one whose upper marker is found plainly (its silhouette as
-  // clear as in the reference) wins if the other finds none.
+  // One marker that could be either side (WeighSides): the upper marker looked for while it is
+  // turned little enough to measure the bend and, where that leaves both sides and their sizes
+  // differ, as far round as a lower marker is read: a marker seen that far round is weaker
+  // evidence (foreshortened, near the limb), so it only decides what the nearer look left open.
   std::size_t pick = 0;
   bool side_seen = true;  // the single marker's side rests on the image, not the upper marker
-  // Where one lower marker could be either side, the upper marker is looked for as far round as
-  // a lower marker is read: to tell the side it need only show, even where it is turned too far
-  // to measure the bend (below).
-  const double look_deg = yaw.hypotheses.size() == 2
-                              ? std::max(options.max_upper_turn_deg, options.max_marker_turn_deg)
-                              : options.max_upper_turn_deg;
-  UpperMeasurement upper = Upper(gray, cyl, cal, options, yaw.hypotheses[0].yaw, look_deg);
-  out.candidates.insert(out.candidates.end(), upper.spots.begin(), upper.spots.end());
-  if (yaw.hypotheses.size() == 2) {
-    const UpperMeasurement other = Upper(gray, cyl, cal, options, yaw.hypotheses[1].yaw, look_deg);
-    out.candidates.insert(out.candidates.end(), other.spots.begin(), other.spots.end());
-    const UpperMeasurement* uppers[2] = {&upper, &other};
-    bool alive[2], plain[2], telling[2];
-    for (int i = 0; i < 2; ++i) {
-      plain[i] = uppers[i]->found && !uppers[i]->ambiguous;
-      // Found with its silhouette as plain as the reference's: the upper part is there.
-      telling[i] = plain[i] && uppers[i]->support >= 0.5 * cal.upper.support;
+  UpperMeasurement upper;
+  if (yaw.hypotheses.size() == 1) {
+    upper = Upper(gray, cyl, cal, options, yaw.hypotheses[0].yaw, options.max_upper_turn_deg);
+    out.candidates.insert(out.candidates.end(), upper.spots.begin(), upper.spots.end());
+  } else {
+    SideEvidence sides = WeighSides(gray, cyl, cal, options, yaw, options.max_upper_turn_deg);
+    const bool same_size =
+        SameSize(yaw.hypotheses[0], yaw.hypotheses[1], options) && cal.lower.single_sized;
+    if (sides.alive[0] && sides.alive[1] && !same_size &&
+        options.max_marker_turn_deg > options.max_upper_turn_deg) {
+      SideEvidence wide = WeighSides(gray, cyl, cal, options, yaw, options.max_marker_turn_deg);
+      if (wide.alive[0] != wide.alive[1]) sides = std::move(wide);
     }
-    for (int i = 0; i < 2; ++i) {
-      const bool hidden = UpperTurn(cal, yaw.hypotheses[i].yaw) > RadFromDeg(kHiddenDeg);
-      alive[i] = !yaw.hypotheses[i].other_missing && !(hidden && telling[1 - i]);
-      // This side turns the upper marker squarely to the camera, the other turns it away, and
-      // there is no dark spot at all where this side puts it: the marker would show, and does
-      // not. (A spot weighed and turned down is not enough: a marker missed that way had made a
-      // side 50 degrees wrong.)
-      const bool square = UpperTurn(cal, yaw.hypotheses[i].yaw) <= RadFromDeg(kSquareDeg);
-      const bool away =
-          UpperTurn(cal, yaw.hypotheses[1 - i].yaw) > RadFromDeg(options.max_upper_turn_deg);
-      if (square && away && uppers[i]->spots.empty()) alive[i] = false;
+    for (const UpperMeasurement& u : sides.upper) {
+      out.candidates.insert(out.candidates.end(), u.spots.begin(), u.spots.end());
     }
-    if (alive[0] && alive[1]) {  // the side whose upper marker shows plainly, if only one does
-      if (telling[0] && !plain[1]) {
-        alive[1] = false;
-      } else if (telling[1] && !plain[0]) {
-        alive[0] = false;
-      } else if (telling[0] != telling[1]) {
-        // Both find a spot, but only one side finds the upper part's silhouette round it: the
-        // other side's bend puts the upper part where the image shows at most half the
-        // reference's edges. The upper marker lies a radius to one side of its part's axis, the
-        // side the yaw turns it to, so the wrong side's part is displaced by about two radii.
-        const int t = telling[0] ? 0 : 1;
-        if (uppers[t]->support >= kSupportMargin * uppers[1 - t]->support) alive[1 - t] = false;
-      }
-    }
-    if (alive[0] && alive[1] && SameSize(yaw.hypotheses[0], yaw.hypotheses[1], options) &&
-        cal.lower.single_sized) {
+    const bool* alive = sides.alive;
+    const bool* telling = sides.telling;
+    const UpperMeasurement* uppers[2] = {&sides.upper[0], &sides.upper[1]};
+    upper = sides.upper[0];
+    const UpperMeasurement& other = sides.upper[1];
+    if (alive[0] && alive[1] && same_size) {
       // Either side, and both turn the joint as far (the marker near the front, between where
       // the two sides put it): the size of the yaw is known, its sign is not.
       out.ok = true;
