@@ -4,6 +4,7 @@
 // marker, upper marker), whose steps share the scan and the candidate yaws.
 #include "marker/model.h"
 
+#include <array>
 #include <cmath>
 #include <utility>
 
@@ -94,8 +95,8 @@ bool SameSize(const YawHypothesis& a, const YawHypothesis& b, const MarkerOption
 // left, the one whose upper marker is found plainly (its silhouette as clear as in the
 // reference) wins if the other finds none.
 struct SideEvidence {
-  UpperMeasurement upper[2];
-  bool alive[2] = {true, true}, plain[2] = {false, false}, telling[2] = {false, false};
+  std::array<UpperMeasurement, 2> upper;
+  std::array<bool, 2> alive{true, true}, plain{false, false}, telling{false, false};
 };
 
 SideEvidence WeighSides(const cv::Mat& gray, const CylinderView& cyl, const MarkerCalibration& cal,
@@ -107,9 +108,9 @@ SideEvidence WeighSides(const cv::Mat& gray, const CylinderView& cyl, const Mark
     // Found with its silhouette as plain as the reference's: the upper part is there.
     ev.telling[i] = ev.plain[i] && ev.upper[i].support >= 0.5 * cal.upper.support;
   }
-  bool* alive = ev.alive;
-  const bool* plain = ev.plain;
-  const bool* telling = ev.telling;
+  std::array<bool, 2>& alive = ev.alive;
+  const std::array<bool, 2>& plain = ev.plain;
+  const std::array<bool, 2>& telling = ev.telling;
   for (int i = 0; i < 2; ++i) {
     const bool hidden = UpperTurn(cal, yaw.hypotheses[i].yaw) > RadFromDeg(kHiddenDeg);
     alive[i] = !yaw.hypotheses[i].other_missing && !(hidden && telling[1 - i]);
@@ -190,8 +191,8 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
     for (const UpperMeasurement& u : sides.upper) {
       out.candidates.insert(out.candidates.end(), u.spots.begin(), u.spots.end());
     }
-    const bool* alive = sides.alive;
-    const bool* telling = sides.telling;
+    const std::array<bool, 2>& alive = sides.alive;
+    const std::array<bool, 2>& telling = sides.telling;
     const UpperMeasurement* uppers[2] = {&sides.upper[0], &sides.upper[1]};
     upper = sides.upper[0];
     const UpperMeasurement& other = sides.upper[1];
