@@ -289,6 +289,13 @@ bool ChooseBands(const cv::Mat& gray, const Layout& g, const CylinderView& cyl, 
   return true;
 }
 
+// The rest of the calibration from a first silhouette (`left`, `right`): bands, edges, markers
+// and limbs (CalibrateLowerPart's steps after the first silhouette).
+bool CalibrateFromSilhouette(const cv::Mat& gray, const MarkerCamera& camera, const Layout& g,
+                             cv::Point2d left_px, cv::Point2d right_px, cv::Point2d upper_px,
+                             double left, double right, LowerCalibration* cal, LowerScan* scan,
+                             std::string* message);
+
 }  // namespace
 
 bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Point2d left_px,
@@ -306,6 +313,44 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   g.width = std::min(gray.cols, static_cast<int>(g.mid + 1.8 * g.n) + 5) - g.x0;
   double left = 0, right = 0;
   if (!FirstSilhouette(gray, g, upper_px.y, &left, &right, message)) return false;
+  const LowerCalibration given = *cal;
+  if (CalibrateFromSilhouette(gray, camera, g, left_px, right_px, upper_px, left, right, cal, scan,
+                              message)) {
+    return true;
+  }
+  // Tried only for a reference that the steps' silhouette leaves refused: a step that is the
+  // far edge of the joint's own shadow (ShadowedLimb), moved to the limb.
+  const std::string refused = *message;
+  std::vector<double> profile;
+  ColumnProfile(
+      gray, RowRange(upper_px.y + 0.7 * g.h + 2, g.y_low - 0.7 * g.h - 0.15 * g.off - 2, gray.rows),
+      g.x0, g.width, &profile);
+  for (int side = 0; side < 2; ++side) {
+    const double edge = ShadowedLimb(profile, g.x0, side == 0 ? left : right, side,
+                                     side == 0 ? left_px.x : right_px.x);
+    if (std::isnan(edge)) continue;
+    *cal = given;
+    *scan = LowerScan();
+    if (CalibrateFromSilhouette(gray, camera, g, left_px, right_px, upper_px,
+                                side == 0 ? edge : left, side == 0 ? right : edge, cal, scan,
+                                message)) {
+      // The ramp's end is where the lit surface meets the shadow, which the limb's own dark
+      // shading may already have reached: it sizes no single lower marker (a tuning rig's
+      // single-marker yaws had come out 6 degrees off); two markers still check each other.
+      cal->single_sized = false;
+      return true;
+    }
+  }
+  *message = refused;
+  return false;
+}
+
+namespace {
+
+bool CalibrateFromSilhouette(const cv::Mat& gray, const MarkerCamera& camera, const Layout& g,
+                             cv::Point2d left_px, cv::Point2d right_px, cv::Point2d upper_px,
+                             double left, double right, LowerCalibration* cal, LowerScan* scan,
+                             std::string* message) {
   const CylinderView cyl(camera, left, right);
   if (!cyl.valid()) {
     *message =
@@ -433,5 +478,7 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   *message = first_message;
   return false;
 }
+
+}  // namespace
 
 }  // namespace armmimic::internal

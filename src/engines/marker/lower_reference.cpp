@@ -1,6 +1,7 @@
 // The reference's lower markers measured for a given silhouette, and the silhouette's edges
 // checked against them and against the rows beside them (docs/marker.md, "Calibration", steps 2
-// and 4): equal discs for an unsure edge, and each limb fitted over all its rows.
+// and 4): equal discs for an unsure edge, each limb fitted over all its rows, and a step that is
+// the joint's shadow's far edge.
 #include "marker/lower_reference.h"
 
 #include <algorithm>
@@ -19,6 +20,11 @@ constexpr double kLimbAgreement = 1;
 // An unsure edge is moved to its fitted limb unless the steps' edge shows the lower markers as
 // equal discs by this much more (a share of the radii's sum).
 constexpr double kLimbPreference = 0.003;
+// The joint's shadow beside a dark limb: a band flat within kShadowFlat grey levels, at least
+// kShadowMinWidth columns wide, darker by kShadowContrast than the wall beyond it and than the
+// surface kShadowRamp columns inside it.
+constexpr double kShadowFlat = 4, kShadowContrast = 25;
+constexpr int kShadowMinWidth = 4, kShadowRamp = 6;
 
 }  // namespace
 
@@ -166,6 +172,26 @@ bool RefineLimbs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
   *cal = c;
   *scan = sc;
   return sure;
+}
+
+double ShadowedLimb(const std::vector<double>& profile, int x0, double step, int side,
+                    double marker_x) {
+  const int n = static_cast<int>(profile.size());
+  const int in = side == 0 ? 1 : -1;  // towards the markers
+  const int s0 = static_cast<int>(std::lround(step)) - x0;
+  const int beyond = s0 - 3 * in, first = s0 + 2 * in;
+  if (beyond < 0 || beyond >= n || first < 0 || first >= n) return kNaN;
+  const double level = profile[first];
+  int c = first;
+  while (c + in >= 0 && c + in < n && std::abs(profile[c + in] - level) <= kShadowFlat) c += in;
+  const int ramp = c + kShadowRamp * in;  // the surface rises within these columns
+  if (std::abs(c - first) < kShadowMinWidth || ramp < 0 || ramp >= n ||
+      profile[beyond] - level < kShadowContrast ||
+      std::max(profile[ramp], profile[c + (kShadowRamp / 2) * in]) - level < kShadowContrast ||
+      in * (marker_x - (x0 + c)) <= 0) {
+    return kNaN;
+  }
+  return x0 + c + 0.5 * in;
 }
 
 }  // namespace armmimic::internal

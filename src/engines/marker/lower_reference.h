@@ -37,4 +37,12 @@ bool RefineLimbs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
                  const std::vector<double>& surface, const std::vector<int>& rows, double y_ref,
                  const bool plain[2], LowerCalibration* cal, LowerScan* scan, bool* either_fitted);
 
+// The steepest step beside a dark limb may be the far edge of the joint's own shadow on the
+// wall: inside it (towards the markers) a flat dark band, and inside that the shading ramp of the
+// lit surface, which ends at the limb. The ramp's end for the step at `step` on `side` (0 left,
+// 1 right) of the column profile starting at `x0`, or NaN when the profile shows no such band
+// between the step and the nearer lower marker's centre `marker_x`.
+double ShadowedLimb(const std::vector<double>& profile, int x0, double step, int side,
+                    double marker_x);
+
 }  // namespace armmimic::internal
