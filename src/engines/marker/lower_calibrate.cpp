@@ -5,6 +5,7 @@
 // measurements of the reference.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "armmimic/core/angles.h"
 #include "marker/lower.h"
@@ -223,9 +224,10 @@ struct Layout {
 };
 
 // The silhouette from every row the straight reference shows it on (between the upper and the
-// lower markers, and below them): a first estimate of both edges.
+// lower markers, and below them): a first estimate of both edges, and the column profile of the
+// rows between the markers (`between`, from column g.x0).
 bool FirstSilhouette(const cv::Mat& gray, const Layout& g, double upper_y, double* left,
-                     double* right, std::string* message) {
+                     double* right, std::vector<double>* between, std::string* message) {
   EdgeBand first[2];
   first[0].rows =
       RowRange(upper_y + 0.7 * g.h + 2, g.y_low - 0.7 * g.h - 0.15 * g.off - 2, gray.rows);
@@ -251,6 +253,7 @@ bool FirstSilhouette(const cv::Mat& gray, const Layout& g, double upper_y, doubl
         "markers";
     return false;
   }
+  *between = std::move(profiles[0]);
   return true;
 }
 
@@ -312,7 +315,8 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   g.x0 = std::max(0, static_cast<int>(g.mid - 1.8 * g.n) - 4);
   g.width = std::min(gray.cols, static_cast<int>(g.mid + 1.8 * g.n) + 5) - g.x0;
   double left = 0, right = 0;
-  if (!FirstSilhouette(gray, g, upper_px.y, &left, &right, message)) return false;
+  std::vector<double> between;
+  if (!FirstSilhouette(gray, g, upper_px.y, &left, &right, &between, message)) return false;
   const LowerCalibration given = *cal;
   if (CalibrateFromSilhouette(gray, camera, g, left_px, right_px, upper_px, left, right, cal, scan,
                               message)) {
@@ -321,16 +325,11 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   // Tried only for a reference that the steps' silhouette leaves refused: a step that is the
   // far edge of the joint's own shadow (ShadowedLimb), moved to the limb.
   const std::string refused = *message;
-  std::vector<double> profile;
-  ColumnProfile(
-      gray, RowRange(upper_px.y + 0.7 * g.h + 2, g.y_low - 0.7 * g.h - 0.15 * g.off - 2, gray.rows),
-      g.x0, g.width, &profile);
   for (int side = 0; side < 2; ++side) {
-    const double edge = ShadowedLimb(profile, g.x0, side == 0 ? left : right, side,
+    const double edge = ShadowedLimb(between, g.x0, side == 0 ? left : right, side,
                                      side == 0 ? left_px.x : right_px.x);
     if (std::isnan(edge)) continue;
-    *cal = given;
-    *scan = LowerScan();
+    *cal = given;  // the scan starts afresh at the silhouette's edges (StartAtEdges)
     if (CalibrateFromSilhouette(gray, camera, g, left_px, right_px, upper_px,
                                 side == 0 ? edge : left, side == 0 ? right : edge, cal, scan,
                                 message)) {

@@ -99,11 +99,17 @@ struct SideEvidence {
   std::array<bool, 2> alive{true, true}, plain{false, false}, telling{false, false};
 };
 
+// `nearer`: the same sides weighed with the bend's limit (max_upper_turn_deg), whose measurement
+// of a side within that limit is this one's too.
 SideEvidence WeighSides(const cv::Mat& gray, const CylinderView& cyl, const MarkerCalibration& cal,
-                        const MarkerOptions& options, const YawSolution& yaw, double look_deg) {
+                        const MarkerOptions& options, const YawSolution& yaw, double look_deg,
+                        const SideEvidence* nearer = nullptr) {
   SideEvidence ev;
   for (int i = 0; i < 2; ++i) {
-    ev.upper[i] = Upper(gray, cyl, cal, options, yaw.hypotheses[i].yaw, look_deg);
+    const bool measured =
+        nearer && UpperTurn(cal, yaw.hypotheses[i].yaw) <= RadFromDeg(options.max_upper_turn_deg);
+    ev.upper[i] = measured ? nearer->upper[i]
+                           : Upper(gray, cyl, cal, options, yaw.hypotheses[i].yaw, look_deg);
     ev.plain[i] = ev.upper[i].found && !ev.upper[i].ambiguous;
     // Found with its silhouette as plain as the reference's: the upper part is there.
     ev.telling[i] = ev.plain[i] && ev.upper[i].support >= 0.5 * cal.upper.support;
@@ -185,17 +191,14 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
         SameSize(yaw.hypotheses[0], yaw.hypotheses[1], options) && cal.lower.single_sized;
     if (sides.alive[0] && sides.alive[1] && !same_size &&
         options.max_marker_turn_deg > options.max_upper_turn_deg) {
-      SideEvidence wide = WeighSides(gray, cyl, cal, options, yaw, options.max_marker_turn_deg);
+      SideEvidence wide =
+          WeighSides(gray, cyl, cal, options, yaw, options.max_marker_turn_deg, &sides);
       if (wide.alive[0] != wide.alive[1]) sides = std::move(wide);
     }
     for (const UpperMeasurement& u : sides.upper) {
       out.candidates.insert(out.candidates.end(), u.spots.begin(), u.spots.end());
     }
     const std::array<bool, 2>& alive = sides.alive;
-    const std::array<bool, 2>& telling = sides.telling;
-    const UpperMeasurement* uppers[2] = {&sides.upper[0], &sides.upper[1]};
-    upper = sides.upper[0];
-    const UpperMeasurement& other = sides.upper[1];
     if (alive[0] && alive[1] && same_size) {
       // Either side, and both turn the joint as far (the marker near the front, between where
       // the two sides put it): the size of the yaw is known, its sign is not.
@@ -212,7 +215,8 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
                           : "one lower marker shows, and the rest of the joint contradicts it";
       return out;
     }
-    if (alive[1]) pick = 1, upper = other;
+    if (alive[1]) pick = 1;
+    upper = sides.upper[pick];
     // The other side is ruled out by the lower part itself (its other lower marker would show
     // and does not), or both sides turn the joint the same
     // way, or the upper part decides plainly: this side finds the upper marker with the upper
@@ -223,8 +227,9 @@ MarkerViewResult MeasureMarkerView(const cv::Mat& gray, const MarkerCalibration&
     const YawHypothesis& b = yaw.hypotheses[1];
     const int other_side = 1 - static_cast<int>(pick);
     const bool upper_decides =
-        telling[pick] && (uppers[other_side]->spots.empty() ||
-                          UpperTurn(cal, yaw.hypotheses[other_side].yaw) > RadFromDeg(kHiddenDeg));
+        sides.telling[pick] &&
+        (sides.upper[other_side].spots.empty() ||
+         UpperTurn(cal, yaw.hypotheses[other_side].yaw) > RadFromDeg(kHiddenDeg));
     side_seen =
         yaw.hypotheses[other_side].other_missing || (a.yaw > 0) == (b.yaw > 0) || upper_decides;
   }
