@@ -37,6 +37,9 @@ std::vector<int> RowRange(double from, double to, int rows) {
 // from the markers, each edge is the first step at least a quarter as steep as the steepest on
 // its side: the limb is the first silhouette met, a shadow's or a poster's edge on the wall
 // beyond it may be steeper (each band sees its own background, so a step's sign may differ).
+// A step no band could track (under kTrackable) is taken only when no trackable one lies further
+// out: it is the shading ramp's end where the limb's self-shadowed band begins (an edge had been
+// placed 6 px inside, the markers' angles 3.6 degrees wide).
 // The markers' midpoint lies off the axis when the camera sees the joint from aside, so the
 // edges need not be symmetric about it.
 bool SilhouetteEdges(const std::vector<std::vector<double>>& profiles, int x0, double mid,
@@ -46,6 +49,13 @@ bool SilhouetteEdges(const std::vector<std::vector<double>>& profiles, int x0, d
   std::vector<double> g(width, 0.0);
   for (int i = 1; i + 1 < width; ++i) {
     for (const std::vector<double>& p : profiles) g[i] += std::abs(p[i + 1] - p[i - 1]);
+  }
+  // The steepest slope any one band shows per column (grey levels a pixel).
+  std::vector<double> trackable(width, 0.0);
+  for (int i = 1; i + 1 < width; ++i) {
+    for (const std::vector<double>& p : profiles) {
+      trackable[i] = std::max(trackable[i], 0.5 * std::abs(p[i + 1] - p[i - 1]));
+    }
   }
   int* out[2] = {left, right};
   for (int side = 0; side < 2; ++side) {
@@ -59,6 +69,7 @@ bool SilhouetteEdges(const std::vector<std::vector<double>>& profiles, int x0, d
     }
     *out[side] = -1;
     if (steepest == 0) return false;
+    int faint = -1;
     for (int x = from; step * (to - x) >= 0; x += step) {
       if (inside(x) && g[x - x0] >= kShare * steepest) {
         // The step's own peak, a column or two further out.
@@ -71,10 +82,16 @@ bool SilhouetteEdges(const std::vector<std::vector<double>>& profiles, int x0, d
           x = peak;
           continue;
         }
+        if (trackable[peak - x0] < kTrackable) {
+          if (faint < 0) faint = peak;
+          x = peak;
+          continue;
+        }
         *out[side] = peak;
         break;
       }
     }
+    if (*out[side] < 0) *out[side] = faint;
   }
   return *left >= 0 && *right >= 0;
 }
@@ -320,7 +337,7 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
   const LowerCalibration given = *cal;
   if (CalibrateFromSilhouette(gray, camera, g, left_px, right_px, upper_px, left, right, cal, scan,
                               message)) {
-    return true;
+    return AboutTheUpper(camera, upper_px, *cal, message);
   }
   // Tried only for a reference that the steps' silhouette leaves refused: a step that is the
   // far edge of the joint's own shadow (ShadowedLimb), moved to the limb.
@@ -337,7 +354,7 @@ bool CalibrateLowerPart(const cv::Mat& gray, const MarkerCamera& camera, cv::Poi
       // shading may already have reached: it sizes no single lower marker (a tuning rig's
       // single-marker yaws had come out 6 degrees off); two markers still check each other.
       cal->single_sized = false;
-      return true;
+      return AboutTheUpper(camera, upper_px, *cal, message);
     }
   }
   *message = refused;

@@ -25,6 +25,8 @@ constexpr double kLimbPreference = 0.003;
 // surface kShadowRamp columns inside it.
 constexpr double kShadowFlat = 4, kShadowContrast = 25;
 constexpr int kShadowMinWidth = 4, kShadowRamp = 6;
+// How far (degrees) the lower markers' mid-angle may lie from the upper marker's (AboutTheUpper).
+constexpr double kAboutTheUpperDeg = 15;
 
 }  // namespace
 
@@ -70,6 +72,22 @@ bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, in
   cal->height = 0.5 * ((cy - l.centre_px.y) * c.Depth(l.theta) / f +
                        (cy - r.centre_px.y) * c.Depth(r.theta) / f);
   return true;
+}
+
+// At zero yaw the lower markers lie either side of the front, where the upper marker is: their
+// mid-angle is the upper marker's angle. Centroids under side light, a tilted camera and the
+// upper marker's other height make that approximate (up to 10 degrees on the tuning rigs), so
+// only a calibration that misses it by more than kAboutTheUpperDeg is refused: its silhouette
+// or its triple is something else (a wall blob taken for a marker, a limb placed 30 px out).
+bool AboutTheUpper(const MarkerCamera& camera, cv::Point2d upper_px, const LowerCalibration& cal,
+                   std::string* message) {
+  const CylinderView view(camera, cal.left_edge_px, cal.right_edge_px);
+  const double off =
+      DegFromRad(0.5 * (cal.theta_left0 + cal.theta_right0) - view.ThetaFromX(upper_px.x));
+  if (view.valid() && std::abs(off) <= kAboutTheUpperDeg) return true;
+  *message = "the lower markers do not lie either side of the upper one (their middle is " +
+             std::to_string(static_cast<int>(std::lround(off))) + " degrees from it)";
+  return false;
 }
 
 void StartAtEdges(const MarkerCamera& camera, double left, double right, LowerCalibration* cal,

@@ -20,6 +20,11 @@ bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, in
                              const std::vector<double>& surface, bool allow_cut,
                              LowerCalibration* cal, LowerScan* scan, std::string* message);
 
+// True when the calibrated lower markers' mid-angle lies near the upper marker's angle (at zero
+// yaw they flank the front); false with a message otherwise.
+bool AboutTheUpper(const MarkerCamera& camera, cv::Point2d upper_px, const LowerCalibration& cal,
+                   std::string* message);
+
 // The silhouette's edges set to `left` and `right`, the marker ratio and angular radius reset,
 // and the scan started afresh on that cylinder: ready for MeasureReferenceMarkers.
 void StartAtEdges(const MarkerCamera& camera, double left, double right, LowerCalibration* cal,
