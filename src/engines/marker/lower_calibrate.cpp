@@ -50,13 +50,14 @@ bool SilhouetteEdges(const std::vector<std::vector<double>>& profiles, int x0, d
   for (int i = 1; i + 1 < width; ++i) {
     for (const std::vector<double>& p : profiles) g[i] += std::abs(p[i + 1] - p[i - 1]);
   }
-  // The steepest slope any one band shows per column (grey levels a pixel).
-  std::vector<double> trackable(width, 0.0);
-  for (int i = 1; i + 1 < width; ++i) {
+  // Whether one band's slope at column i reaches kTrackable (MeasureBand's step strength).
+  auto trackable = [&](int i) {
+    double slope = 0;
     for (const std::vector<double>& p : profiles) {
-      trackable[i] = std::max(trackable[i], 0.5 * std::abs(p[i + 1] - p[i - 1]));
+      slope = std::max(slope, 0.5 * std::abs(p[i + 1] - p[i - 1]));
     }
-  }
+    return slope >= kTrackable;
+  };
   int* out[2] = {left, right};
   for (int side = 0; side < 2; ++side) {
     const int step = side == 0 ? -1 : 1;
@@ -82,7 +83,7 @@ bool SilhouetteEdges(const std::vector<std::vector<double>>& profiles, int x0, d
           x = peak;
           continue;
         }
-        if (trackable[peak - x0] < kTrackable) {
+        if (!trackable(peak - x0)) {
           if (faint < 0) faint = peak;
           x = peak;
           continue;
@@ -372,7 +373,6 @@ bool CalibrateFromSilhouette(const cv::Mat& gray, const MarkerCamera& camera, co
     *message =
         "the joint's silhouette is too wide for the camera's field of view (check the field of "
         "view setting)";
-
     return false;
   }
   if (!ChooseBands(gray, g, cyl, left, right, cal, message)) return false;

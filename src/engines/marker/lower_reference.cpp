@@ -82,9 +82,13 @@ bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, in
 bool AboutTheUpper(const MarkerCamera& camera, cv::Point2d upper_px, const LowerCalibration& cal,
                    std::string* message) {
   const CylinderView view(camera, cal.left_edge_px, cal.right_edge_px);
+  if (!view.valid()) {
+    *message = "the calibrated silhouette does not fit the camera's field of view";
+    return false;
+  }
   const double off =
       DegFromRad(0.5 * (cal.theta_left0 + cal.theta_right0) - view.ThetaFromX(upper_px.x));
-  if (view.valid() && std::abs(off) <= kAboutTheUpperDeg) return true;
+  if (std::abs(off) <= kAboutTheUpperDeg) return true;
   *message = "the lower markers do not lie either side of the upper one (their middle is " +
              std::to_string(static_cast<int>(std::lround(off))) + " degrees from it)";
   return false;
