@@ -109,43 +109,71 @@ ProfileEdge FindProfileEdge(const std::vector<double>& p, int x0, int from, int 
 double FitProfileEdge(const std::vector<double>& p, int x0, double start, double range,
                       int inside) {
   constexpr int kOutside = 4, kInside = 9;
+  constexpr double kSample = 0.05;  // pixels between the model's samples
+  constexpr double kBlurs[] = {0.0, 0.5, 0.8, 1.1, 1.4};
   const int n = static_cast<int>(p.size());
   double best_t = start, best_sse = 1e300;
-  for (double t = start - range; t <= start + range + 1e-9; t += 0.02) {
-    cv::Matx<double, 5, 5> a = cv::Matx<double, 5, 5>::zeros();
-    cv::Vec<double, 5> b(0, 0, 0, 0, 0);
-    double yy = 0;
-    int used = 0;
-    const int centre = static_cast<int>(std::lround(t));
-    for (int x = centre - kInside - 1; x <= centre + kInside + 1; ++x) {
-      const int i = x - x0;
-      if (i < 0 || i >= n) continue;
-      // Signed distance into the cylinder of the pixel's two ends.
-      const double d0 = inside * (x - 0.5 - t), d1 = inside * (x + 0.5 - t);
-      const double lo = std::min(d0, d1), hi = std::max(d0, d1);
-      if (hi < -kOutside || lo > kInside) continue;
-      cv::Vec<double, 5> f(0, 0, 0, 0, 0);
-      if (hi > 0) {  // the part on the cylinder, averaged over [max(lo, 0), hi]
-        const double a0 = std::max(lo, 0.0), w = hi - a0;
-        f[0] = w;
-        f[1] = (2.0 / 3.0) * (std::pow(hi, 1.5) - std::pow(a0, 1.5));
-        f[2] = 0.5 * (hi * hi - a0 * a0);
-      }
-      if (lo < 0) {  // the part on the background
-        const double b1 = std::min(hi, 0.0), w = b1 - lo;
-        f[3] = w;
-        f[4] = 0.5 * (b1 * b1 - lo * lo);
-      }
-      a += f * f.t();
-      b += f * p[i];
-      yy += p[i] * p[i];
-      ++used;
+  std::vector<double> weight;
+  for (const double blur : kBlurs) {
+    // A pixel's response to the scene at offset v from its centre: its own width seen through
+    // the blur (a unit box convolved with a Gaussian of standard deviation `blur`).
+    const double reach = 0.5 + 4 * blur;
+    const int samples = static_cast<int>(std::ceil(2 * reach / kSample));
+    weight.assign(samples, 0.0);
+    double total = 0;
+    for (int j = 0; j < samples; ++j) {
+      const double v = -reach + (j + 0.5) * kSample;
+      weight[j] = blur == 0 ? (std::abs(v) <= 0.5 ? 1.0 : 0.0)
+                            : 0.5 * (std::erf((v + 0.5) / (blur * std::sqrt(2.0))) -
+                                     std::erf((v - 0.5) / (blur * std::sqrt(2.0))));
+      total += weight[j];
     }
-    if (used < 8) continue;
-    cv::Vec<double, 5> c;
-    if (!cv::solve(a, b, c, cv::DECOMP_SVD)) continue;
-    const double sse = yy - 2 * c.dot(b) + (c.t() * a * c)(0);
-    if (sse < best_sse) best_sse = sse, best_t = t;
+    for (double& w : weight) w /= total;
+    // The squared misfit of the best model with the edge at t (1e300 when too few pixels).
+    auto misfit = [&](double t) {
+      cv::Matx<double, 5, 5> a = cv::Matx<double, 5, 5>::zeros();
+      cv::Vec<double, 5> b(0, 0, 0, 0, 0);
+      double yy = 0;
+      int used = 0;
+      const int centre = static_cast<int>(std::lround(t));
+      for (int x = centre - kInside - 1; x <= centre + kInside + 1; ++x) {
+        const int i = x - x0;
+        if (i < 0 || i >= n) continue;
+        // Signed distance into the cylinder of the pixel's two ends.
+        const double d0 = inside * (x - 0.5 - t), d1 = inside * (x + 0.5 - t);
+        if (std::max(d0, d1) < -kOutside || std::min(d0, d1) > kInside) continue;
+        cv::Vec<double, 5> f(0, 0, 0, 0, 0);
+        for (int j = 0; j < samples; ++j) {
+          if (weight[j] == 0) continue;
+          const double d = inside * (x - reach + (j + 0.5) * kSample - t);
+          if (d > 0) {  // the surface
+            f[0] += weight[j];
+            f[1] += weight[j] * std::sqrt(d);
+            f[2] += weight[j] * d;
+          } else {  // the background
+            f[3] += weight[j];
+            f[4] += weight[j] * d;
+          }
+        }
+        a += f * f.t();
+        b += f * p[i];
+        yy += p[i] * p[i];
+        ++used;
+      }
+      cv::Vec<double, 5> c;
+      if (used < 8 || !cv::solve(a, b, c, cv::DECOMP_SVD)) return 1e300;
+      return yy - 2 * c.dot(b) + (c.t() * a * c)(0);
+    };
+    // A tenth of a pixel at a time, then a fiftieth round the best.
+    double coarse = start, coarse_sse = 1e300;
+    for (double t = start - range; t <= start + range + 1e-9; t += 0.1) {
+      const double sse = misfit(t);
+      if (sse < coarse_sse) coarse_sse = sse, coarse = t;
+    }
+    for (double t = coarse - 0.08; t <= coarse + 0.08 + 1e-9; t += 0.02) {
+      const double sse = misfit(t);
+      if (sse < best_sse) best_sse = sse, best_t = t;
+    }
   }
   return best_t;
 }

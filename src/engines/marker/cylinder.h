@@ -70,8 +70,11 @@ ProfileEdge FindProfileEdge(const std::vector<double>& profile, int x0, int from
 // +1: the cylinder lies to the right of the edge, -1: to the left), searched within `range`
 // pixels of `start`. Near a limb the surface's grey level runs like p + q sqrt(d) + r d with the
 // distance d from the edge (the surface turns away ever faster), and the background is linear;
-// the edge pixel mixes both. The position with the smallest squared misfit wins. Finds an edge
-// even where the limb is as bright as the background behind it (the kink remains).
+// each pixel sees both through its own width and the optics' blur (a Gaussian whose width, up to
+// 1.4 px, is fitted with the edge: a model without it had put a blurred limb's edge up to 3 px
+// inside it, where the shading's steep start is). The position with the smallest squared misfit
+// wins. Finds an edge even where the limb is as bright as the background behind it (the kink
+// remains).
 double FitProfileEdge(const std::vector<double>& profile, int x0, double start, double range,
                       int inside);
 

@@ -109,7 +109,15 @@ void MeasureBand(const cv::Mat& gray, int x0, int width, double left, double rig
     band->strength[side] = 0;
     if (band->rows.empty()) continue;
     const int c = static_cast<int>(std::lround(at[side])) - x0;
-    const ProfileEdge e = FindProfileEdge(*profile, x0, c - 2, c + 2, 0);
+    ProfileEdge e = FindProfileEdge(*profile, x0, c - 2, c + 2, 0);
+    // Lens distortion bends a silhouette near the image's edge: the rows between the markers and
+    // those below them had put it 3 px apart, and the band below found no trackable step within
+    // 2 px of the first silhouette (the reference was refused). A trackable step a little
+    // further is this band's own edge.
+    if (!e.found || std::abs(e.strength) < kTrackable) {
+      const ProfileEdge wide = FindProfileEdge(*profile, x0, c - 4, c + 4, 0);
+      if (wide.found && std::abs(wide.strength) >= kTrackable) e = wide;
+    }
     if (!e.found) continue;
     band->peak_px[side] = e.x;
     band->edge_px[side] = FitProfileEdge(*profile, x0, e.x, 2.0, side == 0 ? 1 : -1);
@@ -203,36 +211,6 @@ std::vector<int> RowsBeforeTheEnd(const cv::Mat& gray, const std::vector<int>& r
     if (split < n && std::abs(above - below) > 0.1 * above + 5) end = std::min(end, split);
   }
   return std::vector<int>(rows.begin(), rows.begin() + end);
-}
-
-// An edge no band shows (the limb as bright as the wall behind it), from the other edge and the
-// reference's markers: at zero yaw the lower markers lie symmetrically about the front, where
-// the upper marker is, so theta(left) + theta(right) = 2 theta(upper). Bisection over the hidden
-// edge's column. NaN when no column satisfies it.
-double HiddenEdge(const MarkerCamera& camera, double known, int hidden_side, cv::Point2d left_px,
-                  cv::Point2d right_px, cv::Point2d upper_px) {
-  auto misfit = [&](double other) {
-    const CylinderView c =
-        hidden_side == 1 ? CylinderView(camera, known, other) : CylinderView(camera, other, known);
-    if (!c.valid()) return kNaN;
-    return c.ThetaFromX(left_px.x) + c.ThetaFromX(right_px.x) - 2 * c.ThetaFromX(upper_px.x);
-  };
-  const double n = right_px.x - left_px.x;
-  const double sign = hidden_side == 1 ? 1 : -1;
-  // The hidden edge lies beyond the far marker, at most 3 pair-spacings from the known edge.
-  const double far = hidden_side == 1 ? right_px.x : left_px.x;
-  double a = far + sign, b = known + sign * 3 * n;
-  double fa = misfit(a), fb = misfit(b);
-  if (!(fa * fb < 0)) return kNaN;
-  for (int it = 0; it < 60; ++it) {
-    const double m = 0.5 * (a + b), fm = misfit(m);
-    if (fa * fm <= 0) {
-      b = m, fb = fm;
-    } else {
-      a = m, fa = fm;
-    }
-  }
-  return 0.5 * (a + b);
 }
 
 // Where the reference's markers put things (image pixels).

@@ -94,6 +94,32 @@ bool AboutTheUpper(const MarkerCamera& camera, cv::Point2d upper_px, const Lower
   return false;
 }
 
+double HiddenEdge(const MarkerCamera& camera, double known, int hidden_side, cv::Point2d left_px,
+                  cv::Point2d right_px, cv::Point2d upper_px) {
+  auto misfit = [&](double other) {
+    const CylinderView c =
+        hidden_side == 1 ? CylinderView(camera, known, other) : CylinderView(camera, other, known);
+    if (!c.valid()) return kNaN;
+    return c.ThetaFromX(left_px.x) + c.ThetaFromX(right_px.x) - 2 * c.ThetaFromX(upper_px.x);
+  };
+  const double n = right_px.x - left_px.x;
+  const double sign = hidden_side == 1 ? 1 : -1;
+  // The hidden edge lies beyond the far marker, at most 3 pair-spacings from the known edge.
+  const double far = hidden_side == 1 ? right_px.x : left_px.x;
+  double a = far + sign, b = known + sign * 3 * n;
+  double fa = misfit(a), fb = misfit(b);
+  if (!(fa * fb < 0)) return kNaN;
+  for (int it = 0; it < 60; ++it) {
+    const double m = 0.5 * (a + b), fm = misfit(m);
+    if (fa * fm <= 0) {
+      b = m, fb = fm;
+    } else {
+      a = m, fa = fm;
+    }
+  }
+  return 0.5 * (a + b);
+}
+
 void StartAtEdges(const MarkerCamera& camera, double left, double right, LowerCalibration* cal,
                   LowerScan* scan) {
   cal->left_edge_px = left;

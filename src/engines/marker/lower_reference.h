@@ -1,6 +1,6 @@
-// Private: the reference's lower markers measured for a given silhouette, and the two ways the
-// silhouette's edges are checked against the markers and the rows beside them (docs/marker.md,
-// "Calibration", steps 2 and 4).
+// Private: the reference's lower markers measured for a given silhouette, and the ways the
+// silhouette's edges are placed and checked against the markers and the rows beside them
+// (docs/marker.md, "Calibration", steps 2 and 4).
 #pragma once
 
 #include <string>
@@ -24,6 +24,13 @@ bool MeasureReferenceMarkers(const cv::Mat& gray, const MarkerCamera& camera, in
 // yaw they flank the front); false with a message otherwise.
 bool AboutTheUpper(const MarkerCamera& camera, cv::Point2d upper_px, const LowerCalibration& cal,
                    std::string* message);
+
+// An edge no band shows (the limb as bright as the wall behind it), from the other edge and the
+// reference's markers: at zero yaw the lower markers lie symmetrically about the front, where
+// the upper marker is, so theta(left) + theta(right) = 2 theta(upper). Bisection over the hidden
+// edge's column. NaN when no column satisfies it.
+double HiddenEdge(const MarkerCamera& camera, double known, int hidden_side, cv::Point2d left_px,
+                  cv::Point2d right_px, cv::Point2d upper_px);
 
 // The silhouette's edges set to `left` and `right`, the marker ratio and angular radius reset,
 // and the scan started afresh on that cylinder: ready for MeasureReferenceMarkers.
