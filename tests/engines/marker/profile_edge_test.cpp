@@ -80,8 +80,8 @@ TEST(MarkerProfileEdge, AnUnblurredLimbDarkerThanTheWall) {
 }
 
 // A limb about as bright as the wall behind it (the kink remains) seen through the blur the rig
-// renderer draws (0.85 px): the model without the blur had put this edge 1.3-3.2 px off, inside
-// the limb where the blurred start of the shading is as steep as a step. (With noise the kink
+// renderer draws (0.85 px): the model without the blur had put this edge 3.2 px off, inside the
+// limb where the blurred start of the shading is as steep as a step. (With noise the kink
 // alone places such an edge to about a pixel; the calibration tries the markers' symmetry there.)
 TEST(MarkerProfileEdge, ABlurredLimbAsBrightAsTheWall) {
   Scene s;
@@ -90,7 +90,8 @@ TEST(MarkerProfileEdge, ABlurredLimbAsBrightAsTheWall) {
 }
 
 // A limb darker than a wall whose level slopes away from it, a wider blur, and the noise of a
-// profile averaged over some forty rows of a noisy image.
+// profile averaged over some forty rows of a noisy image (the model without the blur: 0.6-1.9 px
+// inside the limb).
 TEST(MarkerProfileEdge, ABlurredLimbBeforeASlopingWall) {
   Scene s;
   s.surface = 70;
