@@ -4,14 +4,37 @@
 // marker, upper marker), whose steps share the scan and the candidate yaws.
 #include "marker/model.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 #include "armmimic/core/angle_file.h"
 #include "marker/yaw.h"
 
 namespace armmimic::internal {
+
+namespace {
+
+// The darkest column of the lower part's shading in the reference: the mean grey of the rows
+// between the markers, two pixels in from each limb (whose pixels mix in the background); 0 when
+// there are none.
+double DarkestShading(const cv::Mat& gray, const LowerCalibration& cal) {
+  const std::vector<int>& rows = cal.bands[0].rows;
+  const int x0 = std::max(0, static_cast<int>(std::ceil(cal.left_edge_px)) + 2);
+  const int x1 = std::min(gray.cols - 1, static_cast<int>(std::floor(cal.right_edge_px)) - 2);
+  double darkest = 0;
+  for (int x = x0; x <= x1 && !rows.empty(); ++x) {
+    double sum = 0;
+    for (int y : rows) sum += gray.at<uchar>(y, x);
+    const double level = sum / rows.size();
+    if (x == x0 || level < darkest) darkest = level;
+  }
+  return darkest;
+}
+
+}  // namespace
 
 bool CalibrateMarkerJoint(const cv::Mat& gray, const MarkerTriple& t, const MarkerOptions& options,
                           MarkerCalibration* cal, std::string* message) {
@@ -49,6 +72,8 @@ bool CalibrateMarkerJoint(const cv::Mat& gray, const MarkerTriple& t, const Mark
   u.marker_height_px = t.upper.box.height;
   u.face_area_px = t.upper.coverage_px;
   u.stretch_level = SampleStretch(gray, ProjectPivot(cyl, u), t.upper.centre).level;
+  const double darkest = DarkestShading(gray, cal->lower);
+  if (darkest > 0 && u.stretch_level > 0) u.darkest_level = darkest / u.stretch_level;
   u.support = UpperSilhouetteSupport(gray, cyl, u, 0, 0);
   u.darkness = UpperMarkerDarkness(gray, t.upper.centre, u.marker_height_px);
   return true;
@@ -141,6 +166,17 @@ SideEvidence WeighSides(const cv::Mat& gray, const CylinderView& cyl, const Mark
       // side the yaw turns it to, so the wrong side's part is displaced by about two radii.
       const int t = telling[0] ? 0 : 1;
       if (ev.upper[t].support >= kSupportMargin * ev.upper[1 - t].support) alive[1 - t] = false;
+    }
+  }
+  if (alive[0] && alive[1] && plain[0] && plain[1]) {
+    // Both sides find the upper marker plainly (at two spots, or at one with two bends): the
+    // test that picks among one side's spots picks among the sides, clearly or not at all, and
+    // only a side whose upper part shows as plainly as in the reference wins.
+    const double q0 = ev.upper[0].quality, q1 = ev.upper[1].quality;
+    if (telling[0] && q0 >= q1 + kClearQuality) {
+      alive[1] = false;
+    } else if (telling[1] && q1 >= q0 + kClearQuality) {
+      alive[0] = false;
     }
   }
   return ev;

@@ -22,6 +22,9 @@ struct UpperCalibration {
   double support = 0;          // UpperSilhouetteSupport of the straight reference
   double darkness = 0;         // UpperMarkerDarkness of its upper marker
   double stretch_level = 0;    // grey level between the pivot and the upper marker (reference)
+  // The darkest the reference's lower part is shaded (a column's mean grey, limbs aside), over
+  // stretch_level: turned away from the light, the upper part may be as dark.
+  double darkest_level = 0.5;
 };
 
 // Bends beyond this would fold the upper part down past the pivot's height onto the lower one.
@@ -43,10 +46,18 @@ struct UpperMeasurement {
   double bend = 0;         // radians, counter-clockwise on screen positive
   double residual_px = 0;  // distance of the centroid from the model at that bend
   double support = 0;      // UpperSilhouetteSupport at that bend
+  double quality = 0;      // UpperSpotQuality of the spot found
   cv::Point2d centre_px;
   std::vector<cv::Rect> spots;  // the dark spots along the model's curve that were weighed
   std::string note;
 };
+
+// How much a dark spot looks like the upper marker on the upper part: the upper part's silhouette
+// where the spot puts it (`support`) as plain as the reference's, and the spot as dark
+// (`darkness`, UpperMarkerDarkness) as the reference's marker. Of two spots, the one whose quality
+// is kClearQuality higher wins; closer, neither does.
+double UpperSpotQuality(const UpperCalibration& cal, double support, double darkness);
+inline constexpr double kClearQuality = 0.15;
 
 // Looks for the upper marker along the curve the model allows for `yaw` (every bend), refines
 // the best dark spot's centroid and solves the bend from it. `tolerance` (relative to e) bounds

@@ -110,11 +110,13 @@ bool WeighSpot(const cv::Mat& gray, const CylinderView& cyl, const UpperCalibrat
   blob.box = cv::Rect(s.p.x - h / 2, s.p.y - h / 2, h, h);
   blob.centre = s.p;
   if (!RefineMarker(gray, gray, cal.marker_ratio, h, &blob)) return false;
-  // The stretch from the pivot to the marker lies on the upper part: smooth shading, about as
-  // bright as in the reference.
+  // The stretch from the pivot to the marker lies on the upper part: smooth shading, at most
+  // twice as bright as in the reference, and at least half as bright or as dark as the lower
+  // part's darkest shading there (turned away from the light, the upper part is shaded as a
+  // limb is: a spot refused at 0.38-0.49 of the reference's level had been the marker).
   const SurfaceStretch st = SampleStretch(gray, ProjectPivot(cyl, cal), blob.centre);
   const double level = cal.stretch_level > 0 ? st.level / cal.stretch_level : 1;
-  if (st.uneven > 0.3 || level < 0.5 || level > 2) return false;
+  if (st.uneven > 0.3 || level < std::min(0.5, cal.darkest_level) || level > 2) return false;
   *c = Candidate{s.score, 0, 0, 0, blob.centre};
   c->bend = SolveBend(cyl, cal, yaw, blob.centre, &c->residual);
   if (c->residual > max_residual) return false;
@@ -141,6 +143,11 @@ double UpperMarkerDarkness(const cv::Mat& gray, cv::Point2d centre, int marker_h
   return Darkness(gray, p, ring, &score) ? score : 0;
 }
 
+double UpperSpotQuality(const UpperCalibration& cal, double support, double darkness) {
+  const double plain = cal.support > 0 ? std::min(support / cal.support, 1.2) : 1;
+  return plain - 2 * std::abs(darkness - cal.darkness);
+}
+
 UpperMeasurement MeasureUpperMarker(const cv::Mat& gray, const CylinderView& cyl,
                                     const UpperCalibration& cal, double yaw, double tolerance) {
   UpperMeasurement out;
@@ -161,15 +168,13 @@ UpperMeasurement MeasureUpperMarker(const cv::Mat& gray, const CylinderView& cyl
   // Dark spots beside the upper part (clutter) put its silhouette where the image shows none,
   // and are seldom as dark as the marker's paper: the spot whose silhouette is as plain as the
   // reference's and whose darkness is the reference marker's wins, clearly or not at all.
-  auto quality = [&](const Candidate& c) {
-    const double plain = cal.support > 0 ? std::min(c.support / cal.support, 1.2) : 1;
-    return plain - 2 * std::abs(c.score - cal.darkness);
-  };
+  auto quality = [&](const Candidate& c) { return UpperSpotQuality(cal, c.support, c.score); };
   std::sort(found.begin(), found.end(),
             [&](const Candidate& a, const Candidate& b) { return quality(a) > quality(b); });
   const Candidate* pick = &found[0];
-  out.ambiguous = found.size() > 1 && quality(found[1]) > quality(found[0]) - 0.15;
+  out.ambiguous = found.size() > 1 && quality(found[1]) > quality(found[0]) - kClearQuality;
   out.found = true;
+  out.quality = quality(*pick);
   out.bend = pick->bend;
   out.support = pick->support;
   out.residual_px = pick->residual;
