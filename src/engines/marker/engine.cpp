@@ -10,6 +10,7 @@
 #include "armmimic/core/angle_file.h"
 #include "common/engine_internal.h"
 #include "marker/detect.h"
+#include "marker/level.h"
 #include "marker/model.h"
 
 namespace armmimic {
@@ -20,6 +21,16 @@ namespace {
 std::string Fixed(double v, int decimals) { return FormatNumber(v, decimals); }
 
 constexpr int kNarrowMedian = 3;
+
+// A camera tilted less than this is taken as level (the limbs' lean measures the tilt to about
+// 0.3 degrees, and resampling blurs the view a little); more than kLevelMaxDeg, the limbs' lean is
+// not a tilt but a limb fit gone astray (LevelPitch).
+constexpr double kLevelMinDeg = 1.5;
+constexpr double kLevelMaxDeg = 12;
+// Levelling turns the view by a few degrees, which moves the lower markers' angles on the joint
+// by a fraction of a degree: two calibrations whose marker angles differ by more than this have
+// placed a silhouette differently, and the levelled one is not taken.
+constexpr double kLevelAlphaDeg = 2;
 
 class MarkerEngine : public Engine {
  public:
@@ -82,15 +93,24 @@ class MarkerEngine : public Engine {
     }
     if (options_.thesis_mode) return ProcessThesis(frame.image, m);
     cv::cvtColor(frame.image, scratch_.gray, cv::COLOR_BGR2GRAY);
+    if (level_.active()) {
+      level_.Apply(scratch_.gray, &level_gray_);
+      cv::swap(scratch_.gray, level_gray_);
+    }
     const MarkerViewResult r = MeasureMarkerView(scratch_.gray, cal_, options_, &view_);
+    // What the view shows is drawn on the image as taken: points of a levelled view map back.
+    auto shown = [&](cv::Point2d p) { return level_.active() ? level_.ToOriginal(p) : p; };
     m.note = r.note;
     m.candidate_boxes = r.candidates;
+    if (level_.active()) {
+      for (cv::Rect& box : m.candidate_boxes) box = level_.ToOriginal(box);
+    }
     if (std::isfinite(r.axis_x_px)) {
-      m.cylinder_axis_px = {{r.axis_x_px, static_cast<double>(r.bottom_row)}, r.pivot_px};
-      m.cylinder_edges_px = {{r.left_edge_px, r.pivot_px.y},
-                             {r.left_edge_px, static_cast<double>(r.bottom_row)},
-                             {r.right_edge_px, r.pivot_px.y},
-                             {r.right_edge_px, static_cast<double>(r.bottom_row)}};
+      const double bottom = r.bottom_row;
+      m.cylinder_axis_px = {shown({r.axis_x_px, bottom}), shown(r.pivot_px)};
+      m.cylinder_edges_px = {shown({r.left_edge_px, r.pivot_px.y}), shown({r.left_edge_px, bottom}),
+                             shown({r.right_edge_px, r.pivot_px.y}),
+                             shown({r.right_edge_px, bottom})};
     }
     if (!r.ok) return m;
     m.phase = MeasurementPhase::kOk;
@@ -98,8 +118,8 @@ class MarkerEngine : public Engine {
     // The signed column only where the sign rests on evidence; the row stays ok for yaw_deg.
     m.yaw_signed_deg = r.sign_known ? DegFromRad(r.yaw) : kNaN;
     m.bend_deg = std::isfinite(r.bend) ? Wrap180(DegFromRad(r.bend)) : kNaN;
-    m.shoulder_px = r.pivot_px;  // the pivot, for the overlay
-    m.marker_centres = {r.upper_px, r.left_px, r.right_px};
+    m.shoulder_px = shown(r.pivot_px);  // the pivot, for the overlay
+    m.marker_centres = {shown(r.upper_px), shown(r.left_px), shown(r.right_px)};
     return m;
   }
 
@@ -122,6 +142,8 @@ class MarkerEngine : public Engine {
           "alpha_deg",
           Fixed(DegFromRad(0.5 * (cal_.lower.theta_right0 - cal_.lower.theta_left0)), 2));
       meta.emplace_back("e_radii", Fixed(cal_.upper.e, 3));
+      if (level_.active())
+        meta.emplace_back("camera_pitch_deg", Fixed(DegFromRad(level_.pitch()), 2));
     }
     return meta;
   }
@@ -153,17 +175,64 @@ class MarkerEngine : public Engine {
       b->centre = {b->box.x + (b->box.width - 1) / 2.0, b->box.y + (b->box.height - 1) / 2.0};
       RefineMarker(scratch_.gray, scratch_.filtered, ratio / 3, 0, b);
     }
-    if (!CalibrateMarkerJoint(scratch_.gray, t, o, &cal_, message)) {
+    const MarkerCamera camera =
+        level_camera_ ? *level_camera_ : MarkerCamera::FromFov(o.fov_deg, scratch_.gray.size());
+    if (!CalibrateMarkerJoint(scratch_.gray, camera, t, &cal_, message)) {
       *message = "the reference: " + *message;
       return false;
     }
+    triple_ = t;
     return true;
+  }
+
+  // The cylinder model's calibration, on a camera levelled when the reference's limbs show it
+  // tilted (LevelPitch): past kLevelMinDeg and within kLevelMaxDeg (a larger lean is a limb fit
+  // gone astray, not "a little" tilt), the reference is levelled and its markers calibrated
+  // again, kept when that calibration's limbs stand within kLevelMinDeg of upright and its
+  // marker angles agree with the tilted one's (kLevelAlphaDeg); otherwise the tilted
+  // calibration stays.
+  Status BeginCylinder(const cv::Mat& ref) {
+    level_ = LevelWarp();
+    const Status tilted = CalibrateCylinder(ref);
+    if (!tilted.ok()) return tilted;
+    const double pitch = LevelPitch(cal_.lower, cal_.camera);
+    if (!(std::abs(pitch) >= RadFromDeg(kLevelMinDeg) &&
+          std::abs(pitch) <= RadFromDeg(kLevelMaxDeg))) {
+      return tilted;
+    }
+    // The same three markers, found in the image as taken, measured again in the levelled one
+    // (searched afresh, fragments of a marker the resampling split had been taken).
+    const MarkerCalibration tilted_cal = cal_;
+    const LevelWarp warp(cal_.camera, ref.size(), pitch);
+    cv::Mat level;
+    warp.Apply(ref, &level, LevelWarp::Resampling::kSharp);
+    FindMarkerCandidates(level, options_, &scratch_);  // the levelled grey and median images
+    MarkerTriple t = triple_;
+    for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
+      b->box = warp.ToLevel(b->box);
+      b->centre = warp.ToLevel(b->centre);
+    }
+    level_camera_ = &warp.camera();
+    std::string message;
+    bool measured = false;
+    const bool levelled = CalibrateFrom(t, options_, &message, &measured);
+    level_camera_ = nullptr;
+    auto alpha = [](const MarkerCalibration& c) {
+      return 0.5 * (c.lower.theta_right0 - c.lower.theta_left0);
+    };
+    if (levelled && std::abs(LevelPitch(cal_.lower, cal_.camera)) < RadFromDeg(kLevelMinDeg) &&
+        std::abs(alpha(cal_) - alpha(tilted_cal)) <= RadFromDeg(kLevelAlphaDeg)) {
+      level_ = warp;
+      return Status::Ok();
+    }
+    cal_ = tilted_cal;
+    return tilted;
   }
 
   // The cylinder model's reference: the most symmetric triples of dark blobs in turn (a
   // symmetric triple of wall blobs beside the joint fails the model, the joint's own markers
   // do not), in the threshold windows and area bounds FindReferenceMarkers tries.
-  Status BeginCylinder(const cv::Mat& ref) {
+  Status CalibrateCylinder(const cv::Mat& ref) {
     // Why the reference is refused: the first triple the joint's model itself turned down says
     // more than a triple whose blobs could not even be measured (a wall blob, one cut by the
     // image's edge), which may have been tried first.
@@ -267,6 +336,10 @@ class MarkerEngine : public Engine {
   MarkerCalibration cal_;  // cylinder model
   MarkerScratch scratch_;
   MarkerViewScratch view_;
+  LevelWarp level_;                             // a tilted camera's views levelled (cylinder model)
+  const MarkerCamera* level_camera_ = nullptr;  // while the levelled reference is calibrated
+  MarkerTriple triple_;                         // the reference's markers as calibrated
+  cv::Mat level_gray_;                          // the levelled view's buffer
   int reference_blobs_ = 0;
   cv::Size size_;
   bool begun_ = false;

@@ -7,6 +7,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "armmimic/core/angles.h"
 #include "marker/cylinder.h"
 
 namespace armmimic::internal {
@@ -41,6 +42,10 @@ struct LowerCalibration {
   // limb, where a cut marker lies; unequal discs show an edge misplaced); two markers' yaws
   // check each other.
   bool single_sized = true;
+  // Each limb as fitted over all its rows (calibration step 2; nan where it did not fit): its
+  // column at the fit's reference row and its lean (columns per row). A tilted camera makes the
+  // two limbs lean apart (LevelPitch).
+  double limb_x[2] = {kNaN, kNaN}, limb_lean[2] = {kNaN, kNaN};
 };
 
 // One lower marker found across the cylinder.

@@ -178,6 +178,10 @@ bool RefineLimbs(const cv::Mat& gray, const MarkerCamera& camera, int x0,
   const LimbFit fits[2] = {FitLimb(gray, rows, cal->left_edge_px, y_ref, 1, kLimbReach),
                            FitLimb(gray, rows, cal->right_edge_px, y_ref, -1, kLimbReach)};
   *either_fitted = fits[0].ok || fits[1].ok;
+  for (int side = 0; side < 2; ++side) {
+    cal->limb_x[side] = fits[side].ok ? fits[side].x : kNaN;
+    cal->limb_lean[side] = fits[side].ok ? fits[side].lean : kNaN;
+  }
   bool sure = true;
   bool can_move[2] = {false, false};
   for (int side = 0; side < 2; ++side) {

@@ -36,10 +36,10 @@ double DarkestShading(const cv::Mat& gray, const LowerCalibration& cal) {
 
 }  // namespace
 
-bool CalibrateMarkerJoint(const cv::Mat& gray, const MarkerTriple& t, const MarkerOptions& options,
+bool CalibrateMarkerJoint(const cv::Mat& gray, const MarkerCamera& camera, const MarkerTriple& t,
                           MarkerCalibration* cal, std::string* message) {
   *cal = MarkerCalibration();
-  cal->camera = MarkerCamera::FromFov(options.fov_deg, gray.size());
+  cal->camera = camera;
   LowerScan scan;
   if (!CalibrateLowerPart(gray, cal->camera, t.left.centre, t.right.centre, t.upper.centre,
                           t.upper.box.height, &cal->lower, &scan, message)) {

@@ -22,9 +22,9 @@ struct MarkerCalibration {
   double radius_px = 0;  // the lower part's half-width in the reference
 };
 
-// From the reference (grey) and its three markers (their centroids refined).
-bool CalibrateMarkerJoint(const cv::Mat& gray, const MarkerTriple& markers,
-                          const MarkerOptions& options, MarkerCalibration* cal,
+// From the reference (grey), taken by `camera`, and its three markers (their centroids refined).
+bool CalibrateMarkerJoint(const cv::Mat& gray, const MarkerCamera& camera,
+                          const MarkerTriple& markers, MarkerCalibration* cal,
                           std::string* message);
 
 struct MarkerViewResult {
