@@ -93,11 +93,9 @@ class MarkerEngine : public Engine {
     }
     if (options_.thesis_mode) return ProcessThesis(frame.image, m);
     cv::cvtColor(frame.image, scratch_.gray, cv::COLOR_BGR2GRAY);
-    if (level_.active()) {
-      level_.Apply(scratch_.gray, &level_gray_);
-      cv::swap(scratch_.gray, level_gray_);
-    }
-    const MarkerViewResult r = MeasureMarkerView(scratch_.gray, cal_, options_, &view_);
+    if (level_.active()) level_.Apply(scratch_.gray, &level_gray_);
+    const cv::Mat& gray = level_.active() ? level_gray_ : scratch_.gray;
+    const MarkerViewResult r = MeasureMarkerView(gray, cal_, options_, &view_);
     // What the view shows is drawn on the image as taken: points of a levelled view map back.
     auto shown = [&](cv::Point2d p) { return level_.active() ? level_.ToOriginal(p) : p; };
     m.note = r.note;

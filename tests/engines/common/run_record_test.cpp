@@ -3,12 +3,14 @@
 #include "armmimic/engines/run_record.h"
 
 #include <filesystem>
+#include <memory>
 #include <sstream>
 
 #include <gtest/gtest.h>
 
 #include "armmimic/engines/engine.h"
 #include "armmimic/engines/option_fields.h"
+#include "armmimic/synth/marker_rig.h"
 
 namespace armmimic {
 namespace {
@@ -188,6 +190,33 @@ TEST(RunRecordKeys, EveryKeyAHeaderHoldsIsKnownAndOnce) {
     const Status st = CheckRunRecordKeys(meta, "a.tsv", 2);
     EXPECT_TRUE(st.ok()) << EngineName(kind) << ": " << st.message();
   }
+}
+
+// What a begun engine adds to its description is known too: the marker engine's calibration
+// (alpha_deg, e_radii), and camera_pitch_deg when a tilted camera's views are levelled (a rig
+// tilted 6.4 degrees; the key had made --params-from refuse such a file).
+TEST(RunRecordKeys, ABegunMarkerEnginesDescriptionIsKnown) {
+  synth::MarkerRigOptions rig_options;
+  rig_options.set = "medium";
+  rig_options.seed = 503;
+  rig_options.views = 1;
+  const synth::MarkerRigRenderer rig(rig_options);
+  AnalysisOptions o;
+  o.engine.kind = EngineKind::kMarker;
+  o.engine.marker.fov_deg = rig.rig().fov_deg;
+  o.reference_path = "ref.png";
+  const std::unique_ptr<Engine> engine = Engine::Create(o.engine);
+  EngineContext context;
+  context.reference = rig.Reference();
+  context.frame_size = context.reference.size();
+  ASSERT_TRUE(engine->Begin(context).ok());
+  AngleMeta meta = {{"engine", "marker"}, {"source", "views"}, {"fps", "0"},
+                    {"width", "320"},     {"height", "240"},   {"start", "0"}};
+  for (auto& kv : engine->Describe()) meta.push_back(kv);
+  for (auto& kv : RunRecordMeta(o)) meta.push_back(kv);
+  EXPECT_NE(Value(meta, "camera_pitch_deg"), "<absent>");
+  const Status st = CheckRunRecordKeys(meta, "a.tsv", 2);
+  EXPECT_TRUE(st.ok()) << st.message();
 }
 
 TEST(RunRecordKeys, ARepeatedOrUnknownKeyIsRefusedWithTheLine) {
