@@ -42,14 +42,18 @@ void MedianWhereDark(const cv::Mat& gray, int ksize, int high, cv::Mat* out, cv:
   }
 }
 
-std::vector<MarkerBlob> FindMarkerCandidates(const cv::Mat& bgr, const MarkerOptions& options,
-                                             MarkerScratch* s) {
+void MarkerImages(const cv::Mat& bgr, const MarkerOptions& options, MarkerScratch* s) {
   if (bgr.channels() == 3) {
     cv::cvtColor(bgr, s->gray, cv::COLOR_BGR2GRAY);
   } else {
     bgr.copyTo(s->gray);
   }
   MedianWhereDark(s->gray, options.median_size, options.high, &s->filtered, &s->tile);
+}
+
+std::vector<MarkerBlob> FindMarkerCandidates(const cv::Mat& bgr, const MarkerOptions& options,
+                                             MarkerScratch* s) {
+  MarkerImages(bgr, options, s);
   s->components =
       FloodFillComponents(s->filtered, options.low, options.high, options.flood_range, &s->labels);
   const double scale = static_cast<double>(bgr.cols) * bgr.rows / (320.0 * 240.0);

@@ -33,6 +33,10 @@ struct MarkerScratch {
 // holds no value <= `high` has a median above `high` and gets 255, which thresholds the same.
 void MedianWhereDark(const cv::Mat& gray, int ksize, int high, cv::Mat* out, cv::Mat* band);
 
+// Thesis 4.2.1: the grey image and its median filter, into scratch->gray and ->filtered (what
+// FindMarkerCandidates starts from, and RefineMarker measures in).
+void MarkerImages(const cv::Mat& bgr, const MarkerOptions& options, MarkerScratch* scratch);
+
 // Thesis 4.2.1-4.2.4: grey, median filter, flood-fill components in [low, high], fragments of
 // one marker merged, then the area / aspect / fill heuristics (areas scaled to the image).
 // Survivors are sorted by area, largest first.

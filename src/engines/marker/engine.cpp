@@ -136,9 +136,7 @@ class MarkerEngine : public Engine {
     } else {
       meta.emplace_back("fov_deg", Fixed(options_.fov_deg, 1));
       meta.emplace_back("radius_px", Fixed(cal_.radius_px, 2));
-      meta.emplace_back(
-          "alpha_deg",
-          Fixed(DegFromRad(0.5 * (cal_.lower.theta_right0 - cal_.lower.theta_left0)), 2));
+      meta.emplace_back("alpha_deg", Fixed(DegFromRad(cal_.lower.alpha()), 2));
       meta.emplace_back("e_radii", Fixed(cal_.upper.e, 3));
       if (level_.active())
         meta.emplace_back("camera_pitch_deg", Fixed(DegFromRad(level_.pitch()), 2));
@@ -156,9 +154,11 @@ class MarkerEngine : public Engine {
   }
 
   // Sub-pixel centroids of the triple (once with the darkest level, then with the learnt
-  // marker/surround) and the cylinder model's calibration from them; false with a message, and
-  // *measured set when the markers could be measured (the model itself refused them).
-  bool CalibrateFrom(MarkerTriple t, const MarkerOptions& o, std::string* message, bool* measured) {
+  // marker/surround) and the cylinder model's calibration from them, the reference taken by
+  // `camera`; false with a message, and *measured set when the markers could be measured (the
+  // model itself refused them).
+  bool CalibrateFrom(MarkerTriple t, const MarkerCamera& camera, std::string* message,
+                     bool* measured) {
     *measured = false;
     double ratio = 0;
     for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
@@ -173,8 +173,6 @@ class MarkerEngine : public Engine {
       b->centre = {b->box.x + (b->box.width - 1) / 2.0, b->box.y + (b->box.height - 1) / 2.0};
       RefineMarker(scratch_.gray, scratch_.filtered, ratio / 3, 0, b);
     }
-    const MarkerCamera camera =
-        level_camera_ ? *level_camera_ : MarkerCamera::FromFov(o.fov_deg, scratch_.gray.size());
     if (!CalibrateMarkerJoint(scratch_.gray, camera, t, &cal_, message)) {
       *message = "the reference: " + *message;
       return false;
@@ -204,22 +202,17 @@ class MarkerEngine : public Engine {
     const LevelWarp warp(cal_.camera, ref.size(), pitch);
     cv::Mat level;
     warp.Apply(ref, &level, LevelWarp::Resampling::kSharp);
-    FindMarkerCandidates(level, options_, &scratch_);  // the levelled grey and median images
+    MarkerImages(level, options_, &scratch_);
     MarkerTriple t = triple_;
     for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
       b->box = warp.ToLevel(b->box);
       b->centre = warp.ToLevel(b->centre);
     }
-    level_camera_ = &warp.camera();
     std::string message;
     bool measured = false;
-    const bool levelled = CalibrateFrom(t, options_, &message, &measured);
-    level_camera_ = nullptr;
-    auto alpha = [](const MarkerCalibration& c) {
-      return 0.5 * (c.lower.theta_right0 - c.lower.theta_left0);
-    };
+    const bool levelled = CalibrateFrom(t, warp.camera(), &message, &measured);
     if (levelled && std::abs(LevelPitch(cal_.lower, cal_.camera)) < RadFromDeg(kLevelMinDeg) &&
-        std::abs(alpha(cal_) - alpha(tilted_cal)) <= RadFromDeg(kLevelAlphaDeg)) {
+        std::abs(cal_.lower.alpha() - tilted_cal.lower.alpha()) <= RadFromDeg(kLevelAlphaDeg)) {
       level_ = warp;
       return Status::Ok();
     }
@@ -242,7 +235,9 @@ class MarkerEngine : public Engine {
         ++tried;
         std::string message;
         bool measured = false;
-        if (CalibrateFrom(t, o, &message, &measured)) return true;
+        if (CalibrateFrom(t, MarkerCamera::FromFov(o.fov_deg, ref.size()), &message, &measured)) {
+          return true;
+        }
         if (first_error.empty()) first_error = message;
         if (measured && model_error.empty()) model_error = message;
       }
@@ -334,10 +329,9 @@ class MarkerEngine : public Engine {
   MarkerCalibration cal_;  // cylinder model
   MarkerScratch scratch_;
   MarkerViewScratch view_;
-  LevelWarp level_;                             // a tilted camera's views levelled (cylinder model)
-  const MarkerCamera* level_camera_ = nullptr;  // while the levelled reference is calibrated
-  MarkerTriple triple_;                         // the reference's markers as calibrated
-  cv::Mat level_gray_;                          // the levelled view's buffer
+  LevelWarp level_;      // a tilted camera's views levelled (cylinder model)
+  MarkerTriple triple_;  // the reference's markers as calibrated
+  cv::Mat level_gray_;   // the levelled view's buffer
   int reference_blobs_ = 0;
   cv::Size size_;
   bool begun_ = false;

@@ -6,8 +6,6 @@
 // place would see them.
 #pragma once
 
-#include <vector>
-
 #include <opencv2/core.hpp>
 
 #include "marker/cylinder.h"

@@ -35,6 +35,7 @@ struct LowerCalibration {
   double marker_height_px = 0;                 // the lower markers' height in the reference
   double delta = 0;                            // the markers' angular radius (radians)
   double theta_left0 = 0, theta_right0 = 0;    // the lower markers' angles at zero yaw
+  double alpha() const { return 0.5 * (theta_right0 - theta_left0); }  // their half-spacing
   double height = 0;  // the lower markers' height in the camera frame (radii, y up)
   // Whether one lower marker alone can be sized: both reference markers whole and of equal
   // angular radius (within kEqualDiscs). A single marker's yaw rests on its reference angle

@@ -21,17 +21,12 @@ namespace {
 // between the markers, two pixels in from each limb (whose pixels mix in the background); 0 when
 // there are none.
 double DarkestShading(const cv::Mat& gray, const LowerCalibration& cal) {
-  const std::vector<int>& rows = cal.bands[0].rows;
   const int x0 = std::max(0, static_cast<int>(std::ceil(cal.left_edge_px)) + 2);
   const int x1 = std::min(gray.cols - 1, static_cast<int>(std::floor(cal.right_edge_px)) - 2);
-  double darkest = 0;
-  for (int x = x0; x <= x1 && !rows.empty(); ++x) {
-    double sum = 0;
-    for (int y : rows) sum += gray.at<uchar>(y, x);
-    const double level = sum / rows.size();
-    if (x == x0 || level < darkest) darkest = level;
-  }
-  return darkest;
+  if (cal.bands[0].rows.empty() || x1 < x0) return 0;
+  std::vector<double> profile;
+  ColumnProfile(gray, cal.bands[0].rows, x0, x1 - x0 + 1, &profile);
+  return *std::min_element(profile.begin(), profile.end());
 }
 
 }  // namespace
