@@ -65,7 +65,7 @@ constexpr const char* kResultKeys[] = {
     "levels", "motion_threshold", "still_frames_drop",
     // marker
     "median", "low", "high", "flood_range", "area", "N_px", "e_px", "fov_deg", "radius_px",
-    "alpha_deg", "e_radii", "camera_pitch_deg",
+    "alpha_deg", "e_radii", "camera_pitch_deg", "channel",
     // hybrid (and its lk's and bgsub's, prefixed: kEnginePrefixes)
     "second_opinion", "max_disagreement", "joint_px", "restart_frames", "confirm_frames"};
 

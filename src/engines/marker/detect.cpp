@@ -25,6 +25,30 @@ int Find(std::vector<int>& parent, int i) {
 
 }  // namespace
 
+void MonoImage(const cv::Mat& bgr, MarkerChannel channel, cv::Mat* out) {
+  if (bgr.channels() == 1) {
+    bgr.copyTo(*out);
+  } else if (channel == MarkerChannel::kLuma) {
+    cv::cvtColor(bgr, *out, cv::COLOR_BGR2GRAY);
+  } else {
+    cv::extractChannel(bgr, *out, static_cast<int>(channel) - 1);
+  }
+}
+
+const char* ChannelName(MarkerChannel channel) {
+  switch (channel) {
+    case MarkerChannel::kLuma:
+      return "luma";
+    case MarkerChannel::kBlue:
+      return "blue";
+    case MarkerChannel::kGreen:
+      return "green";
+    case MarkerChannel::kRed:
+      return "red";
+  }
+  return "luma";
+}
+
 void MedianWhereDark(const cv::Mat& gray, int ksize, int high, cv::Mat* out, cv::Mat* band_out) {
   out->create(gray.size(), CV_8UC1);
   out->setTo(255);

@@ -29,6 +29,15 @@ struct MarkerScratch {
   std::vector<Component> components;
 };
 
+// The single-channel image the cylinder model measures: the luma, or one colour channel alone,
+// as a monochrome camera behind a colour filter would take it. Either is the surface's albedo
+// times its shading, so everything the model assumes of grey holds for a channel too; a limb
+// whose grey step vanishes against a wall of the same grey but another hue shows a step in the
+// channel that tells the two hues apart (docs/marker.md, calibration step 7).
+enum class MarkerChannel { kLuma, kBlue, kGreen, kRed };
+void MonoImage(const cv::Mat& bgr, MarkerChannel channel, cv::Mat* out);
+const char* ChannelName(MarkerChannel channel);
+
 // The thesis' median filter (4.2.1), computed only where it can matter: a pixel whose window
 // holds no value <= `high` has a median above `high` and gets 255, which thresholds the same.
 void MedianWhereDark(const cv::Mat& gray, int ksize, int high, cv::Mat* out, cv::Mat* band);

@@ -1,9 +1,11 @@
 // The marker-joint engine (thesis chapter 4, docs/marker.md): the lower part's silhouette and
 // markers give the joint's signed yaw through a cylinder model, the upper marker its bend; the
 // thesis path (acos(n/N), eqs. 4-2..4-5) runs under --thesis.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <opencv2/imgproc.hpp>
 
@@ -31,6 +33,20 @@ constexpr double kLevelMaxDeg = 12;
 // by a fraction of a degree: two calibrations whose marker angles differ by more than this have
 // placed a silhouette differently, and the levelled one is not taken.
 constexpr double kLevelAlphaDeg = 2;
+// Calibrations in two colour channels whose marker angles differ by more than this (as
+// kLevelAlphaDeg) have placed a silhouette differently (BeginMono).
+constexpr double kChannelAlphaDeg = kLevelAlphaDeg;
+
+// How plainly a calibration's limbs step from the background: the weaker side's steepest band
+// (grey levels a pixel; 0 when a side was placed by the markers' symmetry alone).
+double LimbContrast(const LowerCalibration& cal) {
+  double weaker = 1e9;
+  for (int side = 0; side < 2; ++side) {
+    weaker = std::min(weaker, std::max(std::abs(cal.bands[0].strength[side]),
+                                       std::abs(cal.bands[1].strength[side])));
+  }
+  return weaker;
+}
 
 class MarkerEngine : public Engine {
  public:
@@ -58,7 +74,7 @@ class MarkerEngine : public Engine {
     }
     options_ = requested_;
     if (!options_.thesis_mode) {
-      const Status st = BeginCylinder(ref);
+      const Status st = BeginMono(ref);
       if (!st.ok()) return st;
     } else {
       MarkerTriple t;
@@ -92,7 +108,7 @@ class MarkerEngine : public Engine {
       return m;
     }
     if (options_.thesis_mode) return ProcessThesis(frame.image, m);
-    cv::cvtColor(frame.image, scratch_.gray, cv::COLOR_BGR2GRAY);
+    MonoImage(frame.image, channel_, &scratch_.gray);
     if (level_.active()) level_.Apply(scratch_.gray, &level_gray_);
     const cv::Mat& gray = level_.active() ? level_gray_ : scratch_.gray;
     const MarkerViewResult r = MeasureMarkerView(gray, cal_, options_, &view_);
@@ -138,6 +154,7 @@ class MarkerEngine : public Engine {
       meta.emplace_back("radius_px", Fixed(cal_.radius_px, 2));
       meta.emplace_back("alpha_deg", Fixed(DegFromRad(cal_.lower.alpha()), 2));
       meta.emplace_back("e_radii", Fixed(cal_.upper.e, 3));
+      if (channel_ != MarkerChannel::kLuma) meta.emplace_back("channel", ChannelName(channel_));
       if (level_.active())
         meta.emplace_back("camera_pitch_deg", Fixed(DegFromRad(level_.pitch()), 2));
     }
@@ -181,15 +198,69 @@ class MarkerEngine : public Engine {
     return true;
   }
 
+  // The cylinder model's calibration on the luma image; when the luma refuses the reference, on
+  // each colour channel alone (MonoImage). The luma is tried first, so a reference it calibrates
+  // is measured as before. A limb is where the joint's material meets the wall's, the same
+  // column in every channel that shows a step there: channels whose calibrations place the
+  // markers' angles apart (kChannelAlphaDeg) have taken something else for a limb in at least
+  // one of them (a wall bar of a hue one channel darkens), and the reference is refused. One
+  // channel alone is kept only when both its limbs step in it (LimbContrast > 0): a limb placed
+  // by the markers' symmetry alone, in the one channel that calibrates, is confirmed by nothing.
+  // Of the channels kept, the one whose limbs step most plainly measures the views.
+  Status BeginMono(const cv::Mat& ref) {
+    const Status luma = BeginCylinder(ref, MarkerChannel::kLuma);
+    if (luma.ok()) return luma;
+    struct Kept {
+      MarkerChannel channel;
+      MarkerOptions options;
+      MarkerCalibration cal;
+      LevelWarp level;
+      MarkerTriple triple;
+      double contrast;
+    };
+    std::vector<Kept> kept;
+    for (MarkerChannel c : {MarkerChannel::kRed, MarkerChannel::kGreen, MarkerChannel::kBlue}) {
+      options_ = requested_;
+      if (BeginCylinder(ref, c).ok()) {
+        kept.push_back({c, options_, cal_, level_, triple_, LimbContrast(cal_.lower)});
+      }
+    }
+    channel_ = MarkerChannel::kLuma;
+    bool agree = !kept.empty() && (kept.size() > 1 || kept[0].contrast > 0);
+    for (const Kept& a : kept) {
+      for (const Kept& b : kept) {
+        agree &=
+            std::abs(a.cal.lower.alpha() - b.cal.lower.alpha()) <= RadFromDeg(kChannelAlphaDeg);
+      }
+    }
+    if (!agree) {
+      options_ = requested_;
+      level_ = LevelWarp();
+      return luma;
+    }
+    const Kept& best =
+        *std::max_element(kept.begin(), kept.end(),
+                          [](const Kept& a, const Kept& b) { return a.contrast < b.contrast; });
+    channel_ = best.channel;
+    options_ = best.options;
+    cal_ = best.cal;
+    level_ = best.level;
+    triple_ = best.triple;
+    return Status::Ok();
+  }
+
   // The cylinder model's calibration, on a camera levelled when the reference's limbs show it
   // tilted (LevelPitch): past kLevelMinDeg and within kLevelMaxDeg (a larger lean is a limb fit
   // gone astray, not "a little" tilt), the reference is levelled and its markers calibrated
   // again, kept when that calibration's limbs stand within kLevelMinDeg of upright and its
   // marker angles agree with the tilted one's (kLevelAlphaDeg); otherwise the tilted
   // calibration stays.
-  Status BeginCylinder(const cv::Mat& ref) {
+  // The reference (BGR) is seen through `channel`, which the views are then measured in.
+  Status BeginCylinder(const cv::Mat& ref, MarkerChannel channel) {
     level_ = LevelWarp();
-    const Status tilted = CalibrateCylinder(ref);
+    channel_ = channel;
+    MonoImage(ref, channel, &mono_ref_);
+    const Status tilted = CalibrateCylinder(mono_ref_);
     if (!tilted.ok()) return tilted;
     const double pitch = LevelPitch(cal_.lower, cal_.camera);
     if (!(std::abs(pitch) >= RadFromDeg(kLevelMinDeg) &&
@@ -202,7 +273,8 @@ class MarkerEngine : public Engine {
     const LevelWarp warp(cal_.camera, ref.size(), pitch);
     cv::Mat level;
     warp.Apply(ref, &level, LevelWarp::Resampling::kSharp);
-    MarkerImages(level, options_, &scratch_);
+    MonoImage(level, channel, &mono_ref_);
+    MarkerImages(mono_ref_, options_, &scratch_);
     MarkerTriple t = triple_;
     for (MarkerBlob* b : {&t.upper, &t.left, &t.right}) {
       b->box = warp.ToLevel(b->box);
@@ -332,6 +404,8 @@ class MarkerEngine : public Engine {
   LevelWarp level_;      // a tilted camera's views levelled (cylinder model)
   MarkerTriple triple_;  // the reference's markers as calibrated
   cv::Mat level_gray_;   // the levelled view's buffer
+  cv::Mat mono_ref_;     // the reference in the channel being calibrated
+  MarkerChannel channel_ = MarkerChannel::kLuma;  // what the views are measured in
   int reference_blobs_ = 0;
   cv::Size size_;
   bool begun_ = false;
