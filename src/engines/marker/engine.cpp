@@ -1,6 +1,9 @@
 // The marker-joint engine (thesis chapter 4, docs/marker.md): the lower part's silhouette and
 // markers give the joint's signed yaw through a cylinder model, the upper marker its bend; the
 // thesis path (acos(n/N), eqs. 4-2..4-5) runs under --thesis.
+// Length: the reference is calibrated in up to four images (the luma, then each colour channel),
+// each as taken and levelled, over the threshold windows; the tries share the engine's scratch
+// images and calibration, which Process then measures with.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
