@@ -93,6 +93,7 @@ class MarkerEngine : public Engine {
     }
     size_ = ref.size();
     begun_ = true;
+    decisions_told_ = false;
     return Status::Ok();
   }
 
@@ -118,6 +119,10 @@ class MarkerEngine : public Engine {
     // What the view shows is drawn on the image as taken: points of a levelled view map back.
     auto shown = [&](cv::Point2d p) { return level_.active() ? level_.ToOriginal(p) : p; };
     m.note = r.note;
+    if (!decisions_told_) {
+      decisions_told_ = true;
+      m.estimate = CalibrationDecisions();
+    }
     m.candidate_boxes = r.candidates;
     if (level_.active()) {
       for (cv::Rect& box : m.candidate_boxes) box = level_.ToOriginal(box);
@@ -398,6 +403,25 @@ class MarkerEngine : public Engine {
     return m;
   }
 
+  // What the calibration chose that the operator did not give, told once (on_estimate): a camera
+  // levelled, a colour channel measured instead of the luma.
+  std::string CalibrationDecisions() const {
+    std::vector<std::string> told;
+    if (level_.active()) {
+      const double pitch = DegFromRad(level_.pitch());  // positive looking down
+      told.push_back("the camera looks " + Fixed(std::abs(pitch), 1) +
+                     (pitch > 0 ? " degrees down" : " degrees up") +
+                     " (read from the reference's limbs), so every view is levelled");
+    }
+    if (channel_ != MarkerChannel::kLuma) {
+      told.push_back(std::string("the reference's limbs show only in its ") +
+                     ChannelName(channel_) + " channel, so every view is measured in it");
+    }
+    std::string text;
+    for (const std::string& t : told) text += (text.empty() ? "marker: " : "; ") + t;
+    return text;
+  }
+
   MarkerOptions requested_;
   MarkerOptions options_;  // as used: the window may be shifted by Begin
   MarkerReference ref_;    // thesis path
@@ -412,6 +436,7 @@ class MarkerEngine : public Engine {
   int reference_blobs_ = 0;
   cv::Size size_;
   bool begun_ = false;
+  bool decisions_told_ = false;
 };
 
 }  // namespace
