@@ -17,6 +17,9 @@ void AnalysisWorker::analyze(const AnalysisOptions& options, const QString& outp
   cb.cancel = cancel_;
   cb.on_phase = [this](const std::string& text) { emit phase(QString::fromStdString(text)); };
   cb.on_progress = [this](int done, int total) { emit progress(done, total); };
+  cb.on_estimate = [this](const std::string& text) {
+    emit estimated(QString::fromStdString(text));
+  };
   cb.on_measurement = [this, live](const Frame& frame, const ArmMeasurement& m) {
     if (live) emit liveFrame(frame.index, ImageFromMat(frame.image), frame.time_s);
     emit measured(m);
@@ -67,6 +70,7 @@ AnalysisJob::AnalysisJob(QObject* parent) : QObject(parent), worker_(new Analysi
   connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
   connect(worker_, &AnalysisWorker::phase, this, &AnalysisJob::phase);
   connect(worker_, &AnalysisWorker::progress, this, &AnalysisJob::progress);
+  connect(worker_, &AnalysisWorker::estimated, this, &AnalysisJob::estimated);
   connect(worker_, &AnalysisWorker::measured, this, &AnalysisJob::measured);
   connect(worker_, &AnalysisWorker::liveFrame, this, &AnalysisJob::liveFrame);
   connect(worker_, &AnalysisWorker::analysisFinished, this,

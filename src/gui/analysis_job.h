@@ -32,6 +32,8 @@ class AnalysisWorker : public QObject {
  signals:
   void phase(const QString& text);
   void progress(int done, int total);
+  // A value the engine estimated or a choice it made, told once (AnalysisCallbacks::on_estimate).
+  void estimated(const QString& text);
   void measured(const armmimic::ArmMeasurement& m);
   void liveFrame(int index, const QImage& image, double time_s);
   // `error_key`: the setting the error is about (Status::key()), or "".
@@ -89,6 +91,7 @@ class AnalysisJob : public QObject {
   void started();
   void phase(const QString& text);
   void progress(int done, int total);
+  void estimated(const QString& text);
   void measured(const armmimic::ArmMeasurement& m);
   void liveFrame(int index, const QImage& image, double time_s);
   void finished(bool ok, bool cancelled);

@@ -217,6 +217,8 @@ void MainWindow::wireAnalysis() {
   connect(job_, &AnalysisJob::started, this, [this] { setBusy(true); });
   connect(job_, &AnalysisJob::phase, status_, &StatusLine::setPhase);
   connect(job_, &AnalysisJob::progress, status_, &StatusLine::setProgress);
+  connect(job_, &AnalysisJob::estimated, this,
+          [this](const QString& text) { log_->info(tr("Estimated: %1").arg(text)); });
   connect(job_, &AnalysisJob::measured, this, [this](const ArmMeasurement& m) {
     results_.add(m);
     if (!throttle_.isActive()) throttle_.start();

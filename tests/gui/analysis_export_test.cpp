@@ -129,6 +129,10 @@ TEST_F(AnalysisExportTest, LkExportEqualsCli) {
   o.engine.lk.standstill_frames = s.standstill_frames;
   Run(w, {QString::fromStdString(s.video())}, o);
   EXPECT_EQ(w.results().rows(), s.motion_frames);
+  // What lk estimated without joints (the calibration from the standstill) is in the log, as
+  // armmimic-cli prints it.
+  EXPECT_NE(w.log()->text().toStdString().find("Estimated: lk: "), std::string::npos)
+      << w.log()->text().toStdString();
   ExpectSameAsCli(w, {s.video(), "--engine", "lk", "--background", s.background(), "--start",
                       std::to_string(s.background_frames), "--standstill-frames",
                       std::to_string(s.standstill_frames)});
