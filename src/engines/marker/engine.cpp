@@ -244,7 +244,22 @@ class MarkerEngine : public Engine {
     if (!agree) {
       options_ = requested_;
       level_ = LevelWarp();
-      return luma;
+      if (kept.empty()) return luma;
+      // The channels were tried too: the operator is told what they showed.
+      std::string tried;
+      for (const Kept& k : kept) {
+        tried += std::string(tried.empty() ? "" : ", ") + ChannelName(k.channel) + " " +
+                 Fixed(DegFromRad(k.cal.lower.alpha()), 1);
+      }
+      return Status::Error(
+          luma.key(),
+          luma.message() +
+              (kept.size() > 1
+                   ? "; single colour channels calibrate it with lower markers " + tried +
+                         " degrees either side of the front, which disagree"
+                   : "; only its " + std::string(ChannelName(kept[0].channel)) +
+                         " channel calibrates it, with a limb placed by the markers' symmetry "
+                         "alone"));
     }
     const Kept& best =
         *std::max_element(kept.begin(), kept.end(),

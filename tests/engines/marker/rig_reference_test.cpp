@@ -94,6 +94,10 @@ TEST(MarkerRigAccuracy, ColourChannelsThatPlaceTheLimbsApartRefuseTheReference) 
   EXPECT_FALSE(begun.ok());
   EXPECT_NE(begun.message().find("dark patches across the joint"), std::string::npos)
       << begun.message();
+  // ... and says that the colour channels were tried, and why they did not help.
+  EXPECT_NE(begun.message().find("single colour channels calibrate it"), std::string::npos)
+      << begun.message();
+  EXPECT_NE(begun.message().find("which disagree"), std::string::npos) << begun.message();
 }
 
 }  // namespace
