@@ -24,11 +24,15 @@ const char* const kAngle3dColumns[5] = {"upper_az_deg", "upper_el_deg", "fore_az
 
 namespace {}  // namespace
 
-std::string AngleFile::Meta(const std::string& key, const std::string& fallback) const {
+std::string MetaValue(const AngleMeta& meta, const std::string& key, const std::string& fallback) {
   for (const auto& [k, v] : meta) {
     if (k == key) return v;
   }
   return fallback;
+}
+
+std::string AngleFile::Meta(const std::string& key, const std::string& fallback) const {
+  return MetaValue(meta, key, fallback);
 }
 
 std::string FormatNumber(double value, int decimals) {

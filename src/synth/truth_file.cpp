@@ -36,10 +36,7 @@ bool TruthRow::HasAngles() const {
 }
 
 std::string TruthFile::Meta(const std::string& key, const std::string& fallback) const {
-  for (const auto& [k, v] : meta) {
-    if (k == key) return v;
-  }
-  return fallback;
+  return MetaValue(meta, key, fallback);
 }
 
 int TruthFile::ExtraColumn(const std::string& name) const {

@@ -55,6 +55,10 @@ struct AngleRow {
 // Ordered key=value pairs of the "# engine=... source=..." header line.
 using AngleMeta = std::vector<std::pair<std::string, std::string>>;
 
+// The value of the first `key` in `meta`, or `fallback`.
+std::string MetaValue(const AngleMeta& meta, const std::string& key,
+                      const std::string& fallback = "");
+
 struct AngleFile {
   AngleMeta meta;
   bool has_file_column = false;

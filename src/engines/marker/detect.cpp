@@ -67,11 +67,7 @@ void MedianWhereDark(const cv::Mat& gray, int ksize, int high, cv::Mat* out, cv:
 }
 
 void MarkerImages(const cv::Mat& bgr, const MarkerOptions& options, MarkerScratch* s) {
-  if (bgr.channels() == 3) {
-    cv::cvtColor(bgr, s->gray, cv::COLOR_BGR2GRAY);
-  } else {
-    bgr.copyTo(s->gray);
-  }
+  MonoImage(bgr, MarkerChannel::kLuma, &s->gray);
   MedianWhereDark(s->gray, options.median_size, options.high, &s->filtered, &s->tile);
 }
 

@@ -43,12 +43,7 @@ constexpr double kChannelAlphaDeg = kLevelAlphaDeg;
 // How plainly a calibration's limbs step from the background: the weaker side's steepest band
 // (grey levels a pixel; 0 when a side was placed by the markers' symmetry alone).
 double LimbContrast(const LowerCalibration& cal) {
-  double weaker = 1e9;
-  for (int side = 0; side < 2; ++side) {
-    weaker = std::min(weaker, std::max(std::abs(cal.bands[0].strength[side]),
-                                       std::abs(cal.bands[1].strength[side])));
-  }
-  return weaker;
+  return std::min(cal.steepest(0), cal.steepest(1));
 }
 
 class MarkerEngine : public Engine {

@@ -2,6 +2,8 @@
 // model"): its silhouette, and the lower markers measured across it as angles on its surface.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -36,6 +38,10 @@ struct LowerCalibration {
   double delta = 0;                            // the markers' angular radius (radians)
   double theta_left0 = 0, theta_right0 = 0;    // the lower markers' angles at zero yaw
   double alpha() const { return 0.5 * (theta_right0 - theta_left0); }  // their half-spacing
+  // The steeper of the two bands' steps at one limb (0 = left; 0 when neither band tracks it).
+  double steepest(int side) const {
+    return std::max(std::abs(bands[0].strength[side]), std::abs(bands[1].strength[side]));
+  }
   double height = 0;  // the lower markers' height in the camera frame (radii, y up)
   // Whether one lower marker alone can be sized: both reference markers whole and of equal
   // angular radius (within kEqualDiscs). A single marker's yaw rests on its reference angle

@@ -375,15 +375,12 @@ bool CalibrateFromSilhouette(const cv::Mat& gray, const MarkerCamera& camera, co
   // disagree (a silhouette is one column) show an edge caught on something else: such a side
   // (the weaker, if both) is checked against where the reference's lower markers lie
   // symmetrically about the upper one, and moved there when more than a pixel off.
-  auto steepest = [&](int side) {
-    return std::max(std::abs(bands[0].strength[side]), std::abs(bands[1].strength[side]));
-  };
   auto unsure = [&](int side) {
     const bool both = bands[0].strength[side] != 0 && bands[1].strength[side] != 0;
-    return steepest(side) < kPlain ||
+    return cal->steepest(side) < kPlain ||
            (both && std::abs(bands[0].edge_px[side] - bands[1].edge_px[side]) > 1);
   };
-  int weak = steepest(0) < steepest(1) ? 0 : 1;
+  int weak = cal->steepest(0) < cal->steepest(1) ? 0 : 1;
   if (unsure(1 - weak) && !unsure(weak)) weak = 1 - weak;
   // The edge tried second for the weak side: the markers' symmetry after a faint step's own
   // edge, or the step no band tracks after the symmetry.
@@ -402,13 +399,13 @@ bool CalibrateFromSilhouette(const cv::Mat& gray, const MarkerCamera& camera, co
     // symmetry's edge the side is refused: the step alone had let a triple of wall blobs
     // calibrate.
     if (!std::isnan(edge)) {
-      if (steepest(weak) == 0) {
+      if (cal->steepest(weak) == 0) {
         if (std::abs(edge - fitted) > 1) second_edge = fitted;
         fitted = edge;
-      } else if (std::abs(edge - fitted) > 1 && steepest(weak) < kPlain) {
+      } else if (std::abs(edge - fitted) > 1 && cal->steepest(weak) < kPlain) {
         second_edge = edge;
       }
-    } else if (steepest(weak) == 0) {
+    } else if (cal->steepest(weak) == 0) {
       *message = "the joint's silhouette does not stand out from the background on one side";
       return false;
     }
@@ -451,7 +448,7 @@ bool CalibrateFromSilhouette(const cv::Mat& gray, const MarkerCamera& camera, co
       // and even then sizes no single lower marker: the markers' symmetry disagrees with it, so
       // the zero-yaw angles may be degrees off (single-marker yaws 3-5 degrees off where
       // tried); two markers still check each other.
-      if (moved && steepest(weak) == 0) {
+      if (moved && cal->steepest(weak) == 0) {
         if (!cal->single_sized) {
           *message = "the joint's silhouette does not stand out from the background on one side";
           if (first_message.empty()) first_message = *message;

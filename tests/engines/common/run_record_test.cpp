@@ -16,10 +16,7 @@ namespace armmimic {
 namespace {
 
 std::string Value(const AngleMeta& meta, const std::string& key) {
-  for (const auto& [k, v] : meta) {
-    if (k == key) return v;
-  }
-  return "<absent>";
+  return MetaValue(meta, key, "<absent>");
 }
 
 TEST(RunRecord, WritesEverySettingOfTheEngineChangedOrNot) {

@@ -16,13 +16,6 @@ namespace armmimic {
 double RigTally::yaw_mae() const { return ok ? yaw_sum / ok : kNaN; }
 double RigTally::bend_mae() const { return bends ? bend_sum / bends : kNaN; }
 
-std::string MetaValue(const AngleMeta& meta, const std::string& key, const std::string& absent) {
-  for (const auto& [k, value] : meta) {
-    if (k == key) return value;
-  }
-  return absent;
-}
-
 Status BeginOnRig(const synth::MarkerRigRenderer& rig, std::unique_ptr<Engine>* engine) {
   EngineOptions options;
   options.kind = EngineKind::kMarker;

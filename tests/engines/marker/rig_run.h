@@ -14,9 +14,6 @@
 
 namespace armmimic {
 
-// A begun engine's meta value, or `absent`.
-std::string MetaValue(const AngleMeta& meta, const std::string& key, const std::string& absent);
-
 struct RigTally {
   int views = 0, ok = 0, bends = 0, signed_off = 0, unsigned_rows = 0;
   double yaw_sum = 0, bend_sum = 0, yaw_max = 0, bend_max = 0;
