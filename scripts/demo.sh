@@ -7,7 +7,10 @@ cd "$(dirname "$0")/.."
 scripts/deps.sh --cli >&2
 if [[ ! -f build/build.ninja ]]; then
   # A fresh tree: configure the CLI alone (scripts/build.sh later grows it to the full build).
-  cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARMMIMIC_CLI_ONLY=ON >/dev/null
+  # ARMMIMIC_WERROR=ON (as CI sets it) configures with the flags the test build then uses, so
+  # growing the tree recompiles nothing the demo compiled.
+  cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARMMIMIC_CLI_ONLY=ON \
+    -DARMMIMIC_WERROR="${ARMMIMIC_WERROR:-OFF}" >/dev/null
 fi
 cmake --build build --target armmimic-cli -j "${ARMMIMIC_JOBS:-$(nproc)}" >&2
 CLI=build/bin/armmimic-cli
