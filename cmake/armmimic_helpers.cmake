@@ -46,6 +46,18 @@ function(armmimic_add_test_suite)
     ARMMIMIC_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     ARMMIMIC_CLI_PATH="$<TARGET_FILE:armmimic-cli>")
   add_dependencies(${T_NAME} armmimic-cli)
-  gtest_discover_tests(${T_NAME} DISCOVERY_TIMEOUT 60
-    PROPERTIES ENVIRONMENT "QT_QPA_PLATFORM=offscreen;LC_ALL=C.UTF-8")
+  set(_env "QT_QPA_PLATFORM=offscreen;LC_ALL=C.UTF-8")
+  if(ARMMIMIC_TEST_PER_SUITE)
+    # One ctest test per GoogleTest suite (cmake/gtest_suites.cmake), listed after each link.
+    set(_ctest_file "${CMAKE_CURRENT_BINARY_DIR}/${T_NAME}_suites.cmake")
+    string(REPLACE ";" "|" _env_arg "${_env}")
+    add_custom_command(TARGET ${T_NAME} POST_BUILD
+      COMMAND ${CMAKE_COMMAND} -D TEST_EXECUTABLE=$<TARGET_FILE:${T_NAME}>
+        -D CTEST_FILE=${_ctest_file} -D WORKING_DIR=${CMAKE_CURRENT_BINARY_DIR}
+        "-D TEST_ENV=${_env_arg}" -P ${PROJECT_SOURCE_DIR}/cmake/gtest_suites.cmake
+      VERBATIM)
+    set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${_ctest_file})
+  else()
+    gtest_discover_tests(${T_NAME} DISCOVERY_TIMEOUT 60 PROPERTIES ENVIRONMENT "${_env}")
+  endif()
 endfunction()
