@@ -1,9 +1,10 @@
 # Run after a test binary is linked (cmake -P), when ARMMIMIC_TEST_PER_SUITE is on: lists the
 # binary's GoogleTest suites and writes CTEST_FILE, which registers one ctest test per suite,
 # named <layer>/<suite> (robot_tests' FuzzRegression is robot/FuzzRegression: two binaries may
-# hold suites of one name) and run as `<binary> --gtest_filter=<suite>.*`. The sanitizer build uses it:
-# every test process there pays the sanitizer's start and its leak check at exit, once per suite
-# instead of once per test. As gtest_discover_tests does, a skipped test marks its test skipped.
+# hold suites of one name) and run as `<binary> --gtest_filter=<suite>.*`. The sanitizer build
+# uses it: every test process there pays the sanitizer's start and its leak check at exit, once
+# per suite instead of once per test. As gtest_discover_tests does, a skipped test marks its
+# ctest test (here the whole suite) skipped, which scripts/run-ctest.sh counts as a failure.
 #   -D TEST_EXECUTABLE=<binary> -D CTEST_FILE=<file> -D WORKING_DIR=<dir> -D TEST_ENV=<a=b|c=d>
 execute_process(
   COMMAND "${TEST_EXECUTABLE}" --gtest_list_tests
@@ -12,7 +13,8 @@ execute_process(
   RESULT_VARIABLE _rc
   TIMEOUT 60)
 if(NOT _rc EQUAL 0)
-  message(FATAL_ERROR "gtest_suites: ${TEST_EXECUTABLE} --gtest_list_tests failed (${_rc}):\n${_listing}")
+  message(FATAL_ERROR
+    "gtest_suites: ${TEST_EXECUTABLE} --gtest_list_tests failed (${_rc}):\n${_listing}")
 endif()
 
 string(REPLACE "|" ";" TEST_ENV "${TEST_ENV}")

@@ -16,8 +16,9 @@ export QT_QPA_PLATFORM="${QT_QPA_PLATFORM:-offscreen}"
 # and that the leak check's symbolizer reads at the end of every test process.
 # Each GoogleTest suite runs as one ctest test (ARMMIMIC_TEST_PER_SUITE): a sanitized process
 # is slow to start and to leave (the leak check), and paying that once per suite instead of once
-# per test cut the suite's time by about a quarter (460 s to 331 s on 2 cores). A finding still names its test: the
-# output ctest shows on failure holds gtest's [ RUN ] line before it. The timeout is per suite.
+# per test cut the suite's time by about a quarter (460 s to 331 s on 2 cores). A finding still
+# names its test: the output ctest shows on failure holds gtest's [ RUN ] line before it. The
+# timeout is per suite.
 scripts/build.sh "$BUILD_DIR" -DARMMIMIC_SANITIZE=ON -DARMMIMIC_BUILD_BENCH=OFF \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" -DARMMIMIC_TEST_PER_SUITE=ON "$@" >&2
 scripts/run-ctest.sh "$BUILD_DIR" --output-on-failure -j "${ARMMIMIC_TEST_JOBS:-$(nproc)}" \
