@@ -2,48 +2,24 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <type_traits>
+#include <vector>
 
 #include "armmimic/core/angles.h"
-#include "common/pair_sampler.h"
+#include "common/arm_strip.h"
 
 namespace armmimic::arm {
 namespace {
 
-using pairs::Add;
-using pairs::Pair;
-using pairs::PairOf;
 using pairs::PairSampler;
-using pairs::Scale;
-using pairs::X;
-using pairs::Y;
-
-// The strips: the upper arm from just past the shoulder (where it merges with the body) to the
-// elbow; the forearm from just past the elbow through the hand.
-constexpr double kUpperFrom = 0.15, kUpperTo = 0.95;
-constexpr double kForeFrom = 0.1;
-constexpr double kHandShare = 0.8;  // of the hand's length: its tip narrows
-
-// The wide search's grid (degrees) and the distance between its poses that counts as another
-// pose.
-constexpr double kWideUpperStep = 4, kWideBendStep = 5;
-constexpr double kDistinctDeg = 12;
-constexpr double kRefineDeg = 4;
-
-double ForeTo(const ArmShape& shape) {
-  return shape.fore_px > 0 ? 1 + kHandShare * shape.hand_px / shape.fore_px : 1;
-}
-
-// The squared distance of p from the segment a-b.
-inline double SquaredDistanceToSegment(const cv::Point2d& p, const cv::Point2d& a,
-                                       const cv::Point2d& b) {
-  const cv::Point2d ab = b - a;
-  const double len2 = ab.dot(ab);
-  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  const cv::Point2d d = p - (a + t * ab);
-  return d.dot(d);
-}
+using strips::ForeTo;
+using strips::kForeFrom;
+using strips::kUpperFrom;
+using strips::kUpperTo;
+using strips::ScoreStrip;
+using strips::ScoreStripUnless;
+using strips::Steps;
+using strips::StepsOf;
 
 // Offset of the peak of a parabola through (-1, a), (0, b), (1, c), within half a step.
 double ParabolaPeak(double a, double b, double c) {
@@ -54,7 +30,7 @@ double ParabolaPeak(double a, double b, double c) {
 }  // namespace
 
 double DistanceToSegment(const cv::Point2d& p, const cv::Point2d& a, const cv::Point2d& b) {
-  return std::sqrt(SquaredDistanceToSegment(p, a, b));
+  return std::sqrt(strips::SquaredDistanceToSegment(p, a, b));
 }
 
 ArmJoints JointsOf(const ArmPose& pose, const ArmShape& shape) {
@@ -64,115 +40,6 @@ ArmJoints JointsOf(const ArmPose& pose, const ArmShape& shape) {
   j.wrist = j.elbow + shape.fore_px * DirectionVector(pose.fore_deg);
   return j;
 }
-
-namespace {
-
-// A strip's steps along it, as distances from its start (pixels): the same in every direction,
-// so a search over directions takes them once.
-struct Steps {
-  int along = 0;  // 0: an empty strip
-  bool coarse = false;
-  double t[16] = {};
-};
-
-Steps StepsOf(double length_px, double t0, double t1, bool coarse) {
-  Steps s;
-  s.coarse = coarse;
-  const double span = (t1 - t0) * length_px;
-  if (!(span > 0)) return s;
-  s.along = coarse ? 6 : std::clamp(static_cast<int>(span / 2.5), 6, 16);
-  for (int k = 0; k < s.along; ++k) s.t[k] = (t0 + (t1 - t0) * (k + 0.5) / s.along) * length_px;
-  return s;
-}
-
-// Evidence samples lie in [0, 1] (probabilities times shares, blended): a bound a little above,
-// and a margin far above the rounding of the sums, for a score that can no longer be reached.
-constexpr double kMostSample = 1.001, kReachMargin = 1e-6;
-
-// ScoreSegment with its steps and its direction's unit vector `u` given, into *out. With
-// kMayGiveUp, it gives up (false, *out unset) once the score can no longer reach `at_least`:
-// every fourth step, the samples still to take counted at their most inside the strip and at
-// their least on the flanks.
-template <bool kMayGiveUp>
-bool ScoreStripUnless(const PairSampler& map, const Steps& steps, const cv::Point2d& from_px,
-                      const cv::Point2d& u, double hw_px, const cv::Point2d& avoid_a,
-                      const cv::Point2d& avoid_b, double avoid_hw_px, double at_least,
-                      SegmentScore* out) {
-  *out = SegmentScore();
-  if (steps.along == 0) return true;
-  const cv::Point2d n(-u.y, u.x);
-  static constexpr double kFine[4] = {-0.6, -0.2, 0.2, 0.6};
-  static constexpr double kCoarse[2] = {-0.4, 0.4};
-  const double* across = steps.coarse ? kCoarse : kFine;
-  const int n_across = steps.coarse ? 2 : 4;
-  const double flank = hw_px + std::max(2.0, 0.75 * hw_px);
-  // The offsets across the strip and to its flanks, the same at every step along it.
-  Pair inner[4];
-  for (int a = 0; a < n_across; ++a) inner[a] = PairOf(across[a] * hw_px * n);
-  const Pair outer[2] = {PairOf(-1 * flank * n), PairOf(1 * flank * n)};
-  const Pair from = PairOf(from_px), along = PairOf(u);
-  // A flank sample farther than the avoided half-width beyond the avoided segment's bounding box
-  // on either axis is surely not within it (the margin is far above rounding): the exact
-  // distance is then not needed.
-  const bool avoid = avoid_hw_px > 0;
-  const double reach = avoid_hw_px + 1e-3;
-  const double box_x0 = std::min(avoid_a.x, avoid_b.x) - reach;
-  const double box_x1 = std::max(avoid_a.x, avoid_b.x) + reach;
-  const double box_y0 = std::min(avoid_a.y, avoid_b.y) - reach;
-  const double box_y1 = std::max(avoid_a.y, avoid_b.y) + reach;
-  const double avoid2 = avoid_hw_px * avoid_hw_px;
-  double inside = 0, flanks = 0;
-  int n_flank = 0;
-  for (int k = 0; k < steps.along; ++k) {
-    const Pair p = Add(from, Scale(steps.t[k], along));
-    for (int a = 0; a < n_across; ++a) inside += map.At(Add(p, inner[a]));
-    for (const Pair& side : outer) {
-      const Pair q = Add(p, side);
-      const double qx = X(q), qy = Y(q);
-      if (avoid && qx > box_x0 && qx < box_x1 && qy > box_y0 && qy < box_y1 &&
-          SquaredDistanceToSegment({qx, qy}, avoid_a, avoid_b) < avoid2) {
-        continue;
-      }
-      flanks += map.At(q);
-      ++n_flank;
-    }
-    if constexpr (kMayGiveUp) {
-      const int left = steps.along - 1 - k;
-      if ((k & 3) == 3 && left > 0) {
-        const double most_inside =
-            (inside + left * n_across * kMostSample) / (steps.along * n_across);
-        const int most_flank = n_flank + 2 * left;
-        const double least_flank = flanks / most_flank;
-        if (most_inside - least_flank < at_least - kReachMargin) return false;
-      }
-    }
-  }
-  out->inside = inside / (steps.along * n_across);
-  out->score = out->inside - (n_flank > 0 ? flanks / n_flank : 0.0);
-  return true;
-}
-
-SegmentScore ScoreStrip(const PairSampler& map, const Steps& steps, const cv::Point2d& from_px,
-                        const cv::Point2d& u, double hw_px, const cv::Point2d& avoid_a = {},
-                        const cv::Point2d& avoid_b = {}, double avoid_hw_px = 0) {
-  SegmentScore out;
-  ScoreStripUnless<false>(map, steps, from_px, u, hw_px, avoid_a, avoid_b, avoid_hw_px, 0, &out);
-  return out;
-}
-
-// DirectionVector of the whole degrees -kTableDeg..kTableDeg, computed once: the wide search's
-// directions are all whole degrees.
-constexpr int kTableDeg = 360;
-const cv::Point2d& WholeDegreeDirection(int deg) {
-  static const std::vector<cv::Point2d> table = [] {
-    std::vector<cv::Point2d> t(2 * kTableDeg + 1);
-    for (int d = -kTableDeg; d <= kTableDeg; ++d) t[d + kTableDeg] = DirectionVector(d);
-    return t;
-  }();
-  return table[static_cast<std::size_t>(deg + kTableDeg)];
-}
-
-}  // namespace
 
 SegmentScore ScoreSegment(const EvidenceMap& evidence, const cv::Point2d& from_px, double deg,
                           double length_px, double hw_px, double t0, double t1, bool coarse,
@@ -271,69 +138,6 @@ FitResult FitNear(const EvidenceMap& evidence, const ArmShape& shape, const ArmP
   r.pose.fore_deg = Wrap180(r.pose.upper_deg + bend0 + dj);
   r.score = ScorePose(evidence, r.pose, shape);
   return r;
-}
-
-std::vector<FitResult> FitAnywhere(const EvidenceMap& evidence, const ArmShape& shape,
-                                   const cv::Point2d& shoulder, int count) {
-  const int nu = static_cast<int>(360 / kWideUpperStep);
-  const int nb = 2 * static_cast<int>(kMaxBendDeg / kWideBendStep) + 1;
-  std::vector<double> total(static_cast<std::size_t>(nu * nb));
-  const PairSampler map(evidence);
-  const Steps upper_steps = StepsOf(shape.upper_px, kUpperFrom, kUpperTo, true);
-  const Steps fore_steps = StepsOf(shape.fore_px, kForeFrom, ForeTo(shape), true);
-  // The grid's directions are whole degrees (whole steps from whole degrees).
-  static_assert(kWideUpperStep == 4 && kWideBendStep == 5 && kMaxBendDeg == 150);
-  for (int i = 0; i < nu; ++i) {
-    const int up = -180 + 4 * (i + 1);
-    const cv::Point2d& u = WholeDegreeDirection(up);
-    const SegmentScore su = ScoreStrip(map, upper_steps, shoulder, u, shape.upper_hw);
-    const cv::Point2d elbow = shoulder + shape.upper_px * u;
-    for (int j = 0; j < nb; ++j) {
-      const int bend = -150 + 5 * j;
-      const SegmentScore sf = ScoreStrip(map, fore_steps, elbow, WholeDegreeDirection(up + bend),
-                                         shape.fore_hw, shoulder, elbow, shape.upper_hw + 1);
-      total[static_cast<std::size_t>(i * nb + j)] = su.score + sf.score;
-    }
-  }
-  // Local maxima of the grid (the upper arm's direction wraps around), best first.
-  std::vector<std::pair<double, int>> peaks;
-  const int ri = static_cast<int>(std::ceil(kDistinctDeg / kWideUpperStep));
-  const int rj = static_cast<int>(std::ceil(kDistinctDeg / kWideBendStep));
-  for (int i = 0; i < nu; ++i) {
-    for (int j = 0; j < nb; ++j) {
-      const double v = total[static_cast<std::size_t>(i * nb + j)];
-      bool peak = true;
-      for (int di = -ri; di <= ri && peak; ++di) {
-        for (int dj = -rj; dj <= rj && peak; ++dj) {
-          const int jj = j + dj;
-          if ((di == 0 && dj == 0) || jj < 0 || jj >= nb) continue;
-          const int ii = (i + di + nu) % nu;
-          const double w = total[static_cast<std::size_t>(ii * nb + jj)];
-          // Ties go to the earlier cell, so a plateau gives one peak.
-          peak = w < v || (w == v && ii * nb + jj > i * nb + j);
-        }
-      }
-      if (peak) peaks.emplace_back(v, i * nb + j);
-    }
-  }
-  std::sort(peaks.begin(), peaks.end(), [](const auto& a, const auto& b) {
-    return a.first > b.first || (a.first == b.first && a.second < b.second);
-  });
-  std::vector<FitResult> out;
-  LocalSearch refine;
-  refine.upper_range_deg = refine.bend_range_deg = kRefineDeg;
-  for (const auto& [v, k] : peaks) {
-    if (static_cast<int>(out.size()) >= count) break;
-    ArmPose p;
-    p.shoulder = shoulder;
-    const int upper_step = k / nb, bend_step = k % nb;  // the grid, row by row
-    p.upper_deg = Wrap180(-180 + kWideUpperStep * (upper_step + 1));
-    p.fore_deg = Wrap180(p.upper_deg - kMaxBendDeg + kWideBendStep * bend_step);
-    out.push_back(FitNear(evidence, shape, p, refine));
-  }
-  std::sort(out.begin(), out.end(),
-            [](const FitResult& a, const FitResult& b) { return a.score.total > b.score.total; });
-  return out;
 }
 
 double ForeRivalScore(const EvidenceMap& evidence, const ArmShape& shape, const ArmPose& pose,

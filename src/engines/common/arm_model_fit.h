@@ -8,9 +8,11 @@
 // Shared by the tracking engines (lk, and the hybrid engine). Qt-free.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "common/arm_appearance.h"
+#include "common/segment_score.h"
 
 namespace armmimic::arm {
 
@@ -23,11 +25,6 @@ ArmJoints JointsOf(const ArmPose& pose, const ArmShape& shape);
 
 // The distance from `p` to the segment `a`-`b`, pixels.
 double DistanceToSegment(const cv::Point2d& p, const cv::Point2d& a, const cv::Point2d& b);
-
-struct SegmentScore {
-  double inside = 0;  // mean evidence in the strip, 0..1
-  double score = 0;   // inside minus the flanks' mean, -1..1
-};
 
 // The strip of half-width `hw_px` from `from_px` along `deg`, over [t0, t1] x `length_px`.
 // Flank samples closer than `avoid_hw_px` to the segment `avoid_a`-`avoid_b` (the other part of
@@ -64,11 +61,20 @@ struct FitResult {
 FitResult FitNear(const EvidenceMap& evidence, const ArmShape& shape, const ArmPose& predicted,
                   const LocalSearch& search);
 
+// What one frame's search over every pose leaves for the next frame's, to save it work and never
+// to change what it returns: the coarse score its `count`-th best pose reached.
+struct WideSearchMemory {
+  double last_floor = -std::numeric_limits<double>::infinity();
+};
+
 // The best poses over every direction of the upper arm and every bend the elbow allows (coarse
 // steps, then refined), as local maxima of the upper arm's score, best first. `count` poses at
-// most.
+// most. With `memory`, a coarse pose that can no longer reach a little below the last frame's
+// floor is given up; where fewer than `count` poses reach it, the given-up ones are scored in
+// full. The result is the same, to the bit, with or without it.
 std::vector<FitResult> FitAnywhere(const EvidenceMap& evidence, const ArmShape& shape,
-                                   const cv::Point2d& shoulder, int count);
+                                   const cv::Point2d& shoulder, int count,
+                                   WideSearchMemory* memory = nullptr);
 
 // The best forearm score with the upper arm of `pose` kept and the bend at least `apart_deg` away
 // from the pose's (3-degree steps over every bend the elbow allows): how well another forearm

@@ -78,6 +78,7 @@ class ModelTracker : public Tracker {
     frame_ = 0;
     anchor_ = pose_;
     weak_ = false;
+    wide_ = arm::WideSearchMemory();
     seen_elsewhere_ = false;
     reach_deg_ = 0;
     last_time_s_ = time_s_;
@@ -123,7 +124,7 @@ class ModelTracker : public Tracker {
     const double step = o_.max_speed_deg_s * dt;
     reach_deg_ = weak_ ? reach_deg_ + step : step;
     const std::vector<arm::FitResult> anywhere =
-        arm::FitAnywhere(evidence_, shape_, held.shoulder, kGlobalCandidates);
+        arm::FitAnywhere(evidence_, shape_, held.shoulder, kGlobalCandidates, &wide_);
     std::string note = "model";
     for (const arm::FitResult& f : anywhere) {
       if (arm::PoseDistanceDeg(f.pose, anchor_) > reach_deg_) continue;
@@ -265,6 +266,8 @@ class ModelTracker : public Tracker {
   arm::ColourModel colour_;
   arm::LearntBackground background_;
   arm::EvidenceMap evidence_;
+  // What the last frame's search over every pose leaves this frame's: it saves work only.
+  arm::WideSearchMemory wide_;
   double typical_ = -1;  // the arm's usual score (confident frames)
   arm::ArmPose anchor_;  // the last well-supported pose
   bool weak_ = false;    // the last frame's pose was weakly supported

@@ -1,7 +1,11 @@
-// The local search (FitNear) gives up cells that can no longer beat the best so far: it must
-// still return, to the bit, what scoring every cell of its grid returns. The reference below
-// scores every cell with ScorePose and refines the best as FitNear does, on a painted arm over a
-// textured wall, from predictions on the arm, beside it and far from it.
+// The searches give up poses that can no longer matter, and must still return, to the bit, what
+// scoring every pose returns. The local search (FitNear) gives up cells that can no longer beat
+// the best so far: the reference below scores every cell with ScorePose and refines the best as
+// FitNear does, on a painted arm over a textured wall, from predictions on the arm, beside it and
+// far from it. The search over every pose (FitAnywhere), given the last frame's floor, gives up
+// coarse poses below it: over frames of a moving arm among specks of its colour, one without it
+// and a jump, with the map over the whole frame and over a region that cuts the arm, it returns
+// what it returns without that memory. (evidence_bound_test checks the bound it gives up by.)
 #include "common/arm_model_fit.h"
 
 #include <algorithm>
@@ -63,8 +67,8 @@ FitResult EveryCell(const EvidenceMap& evidence, const ArmShape& shape, const Ar
   return r;
 }
 
-TEST(ArmModelFit, FitNearEqualsScoringEveryCell) {
-  const cv::Size size(160, 120);
+// A tiled wall with noise, and the arm in `pose` painted over it (none when `paint` is false).
+cv::Mat Wall(const cv::Size& size) {
   std::mt19937 rng(17);
   std::uniform_int_distribution<int> noise(-25, 25);
   cv::Mat wall(size, CV_8UC3);
@@ -76,22 +80,41 @@ TEST(ArmModelFit, FitNearEqualsScoringEveryCell) {
                                            cv::saturate_cast<uchar>(150 - t + noise(rng)));
     }
   }
-  ArmPose truth;
-  truth.shoulder = {60.3, 40.7};
-  truth.upper_deg = -60;
-  truth.fore_deg = 10;
+  return wall;
+}
+
+ArmShape Drawn() {
   ArmShape drawn;
   drawn.upper_px = 38;
   drawn.fore_px = 32;
   drawn.hand_px = 10;
   drawn.upper_hw = 4;
   drawn.fore_hw = 3.5;
-  const ArmJoints joints = JointsOf(truth, drawn);
+  return drawn;
+}
+
+cv::Mat Painted(const cv::Mat& wall, const ArmPose& pose) {
   cv::Mat frame = wall.clone();
-  cv::Mat arm = cv::Mat::zeros(size, CV_8U);
-  DrawArm(arm, joints, drawn, 0);
+  cv::Mat arm = cv::Mat::zeros(wall.size(), CV_8U);
+  DrawArm(arm, JointsOf(pose, Drawn()), Drawn(), 0);
   frame.setTo(cv::Scalar(40, 60, 200), arm);
-  const LearntArm learnt = LearnArm(frame, joints, 80);
+  return frame;
+}
+
+ArmPose Truth() {
+  ArmPose truth;
+  truth.shoulder = {60.3, 40.7};
+  truth.upper_deg = -60;
+  truth.fore_deg = 10;
+  return truth;
+}
+
+TEST(ArmModelFit, FitNearEqualsScoringEveryCell) {
+  const cv::Size size(160, 120);
+  const cv::Mat wall = Wall(size);
+  const ArmPose truth = Truth();
+  const cv::Mat frame = Painted(wall, truth);
+  const LearntArm learnt = LearnArm(frame, JointsOf(truth, Drawn()), 80);
   LearntBackground background;
   background.Reset(wall, cv::Mat::zeros(size, CV_8U));
   EvidenceMap evidence;
@@ -120,6 +143,73 @@ TEST(ArmModelFit, FitNearEqualsScoringEveryCell) {
   const FitResult on = FitNear(evidence, shape, truth, LocalSearch());
   EXPECT_LT(PoseDistanceDeg(on.pose, truth), 3.0);
   EXPECT_EQ(predictions, 32);
+}
+
+TEST(ArmModelFit, FitAnywhereWithTheLastFloorEqualsScoringEveryPose) {
+  const cv::Size size(160, 120);
+  const cv::Mat wall = Wall(size);
+  const ArmPose truth = Truth();
+  const LearntArm learnt = LearnArm(Painted(wall, truth), JointsOf(truth, Drawn()), 80);
+  LearntBackground background;
+  background.Reset(wall, cv::Mat::zeros(size, CV_8U));
+  // The arm turning a few degrees a frame, then gone (every peak sinks below the last floor: the
+  // given-up poses are scored in full), back, and at once elsewhere.
+  // Specks of the arm's colour and of a near colour, all over: many poses explain part of a
+  // frame, so many score near the floor, and a bound wrong anywhere changes what is found.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> at(0, 1);
+  auto specked = [&](cv::Mat frame) {
+    for (int i = 0; i < 60; ++i) {
+      const cv::Point c(static_cast<int>(at(rng) * size.width),
+                        static_cast<int>(at(rng) * size.height));
+      const cv::Scalar colour = i % 2 ? cv::Scalar(40, 60, 200) : cv::Scalar(70, 90, 170);
+      cv::circle(frame, c, 1 + static_cast<int>(at(rng) * 3), colour, cv::FILLED);
+    }
+    return frame;
+  };
+  std::vector<cv::Mat> frames;
+  for (int f = 0; f < 4; ++f) {
+    ArmPose p = truth;
+    p.upper_deg += 3 * f;
+    p.fore_deg -= 4 * f;
+    frames.push_back(specked(Painted(wall, p)));
+  }
+  frames.push_back(wall.clone());
+  frames.push_back(specked(Painted(wall, truth)));
+  ArmPose far = truth;
+  far.upper_deg = -150;
+  far.fore_deg = -100;
+  frames.push_back(specked(Painted(wall, far)));
+  // The evidence over the whole frame, and over a region off its corner that cuts the far arm
+  // (samples off the map).
+  for (const cv::Rect& region : {cv::Rect(cv::Point(), size), cv::Rect(9, 6, 131, 97)}) {
+    for (int count : {4, 12}) {
+      WideSearchMemory memory;
+      for (std::size_t f = 0; f < frames.size(); ++f) {
+        EvidenceMap evidence;
+        evidence.Compute(frames[f], background, learnt.colour, region, cv::Mat::zeros(size, CV_8U));
+        const std::vector<FitResult> want =
+            FitAnywhere(evidence, learnt.shape, truth.shoulder, count);
+        const std::vector<FitResult> got =
+            FitAnywhere(evidence, learnt.shape, truth.shoulder, count, &memory);
+        ASSERT_EQ(got.size(), want.size()) << region << " frame " << f;
+        for (std::size_t i = 0; i < got.size(); ++i) {
+          EXPECT_EQ(got[i].pose.upper_deg, want[i].pose.upper_deg) << region << " frame " << f;
+          EXPECT_EQ(got[i].pose.fore_deg, want[i].pose.fore_deg) << region << " frame " << f;
+          EXPECT_EQ(got[i].score.total, want[i].score.total) << region << " frame " << f;
+        }
+        // A frame with the arm leaves the next one a floor, so each such next frame gives poses
+        // up; the empty wall, one plateau and so fewer than four poses, leaves none.
+        EXPECT_EQ(std::isfinite(memory.last_floor), f != 4) << region << " frame " << f;
+      }
+    }
+  }
+  // The arm is found anywhere on the last frame: the scenes are ones the search can read.
+  EvidenceMap evidence;
+  evidence.Compute(frames.back(), background, learnt.colour, cv::Rect(cv::Point(), size),
+                   cv::Mat::zeros(size, CV_8U));
+  const std::vector<FitResult> found = FitAnywhere(evidence, learnt.shape, truth.shoulder, 4);
+  EXPECT_LT(PoseDistanceDeg(found.front().pose, far), 4.0);
 }
 
 }  // namespace
