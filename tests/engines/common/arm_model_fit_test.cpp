@@ -17,6 +17,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "armmimic/core/angles.h"
+#include "painted_arm.h"
 
 namespace armmimic::arm {
 namespace {
@@ -67,38 +68,12 @@ FitResult EveryCell(const EvidenceMap& evidence, const ArmShape& shape, const Ar
   return r;
 }
 
-// A tiled wall with noise, and the arm in `pose` painted over it (none when `paint` is false).
-cv::Mat Wall(const cv::Size& size) {
-  std::mt19937 rng(17);
-  std::uniform_int_distribution<int> noise(-25, 25);
-  cv::Mat wall(size, CV_8UC3);
-  for (int y = 0; y < size.height; ++y) {
-    for (int x = 0; x < size.width; ++x) {
-      const int t = ((x / 8 + y / 8) % 2) * 40;  // tiles
-      wall.at<cv::Vec3b>(y, x) = cv::Vec3b(cv::saturate_cast<uchar>(90 + t + noise(rng)),
-                                           cv::saturate_cast<uchar>(140 + noise(rng)),
-                                           cv::saturate_cast<uchar>(150 - t + noise(rng)));
-    }
-  }
-  return wall;
-}
-
-ArmShape Drawn() {
-  ArmShape drawn;
-  drawn.upper_px = 38;
-  drawn.fore_px = 32;
-  drawn.hand_px = 10;
-  drawn.upper_hw = 4;
-  drawn.fore_hw = 3.5;
-  return drawn;
-}
+using painted::DrawnShape;
+using painted::Specked;
+using painted::TiledWall;
 
 cv::Mat Painted(const cv::Mat& wall, const ArmPose& pose) {
-  cv::Mat frame = wall.clone();
-  cv::Mat arm = cv::Mat::zeros(wall.size(), CV_8U);
-  DrawArm(arm, JointsOf(pose, Drawn()), Drawn(), 0);
-  frame.setTo(cv::Scalar(40, 60, 200), arm);
-  return frame;
+  return painted::Painted(wall, JointsOf(pose, DrawnShape()));
 }
 
 ArmPose Truth() {
@@ -111,10 +86,10 @@ ArmPose Truth() {
 
 TEST(ArmModelFit, FitNearEqualsScoringEveryCell) {
   const cv::Size size(160, 120);
-  const cv::Mat wall = Wall(size);
+  const cv::Mat wall = TiledWall(size);
   const ArmPose truth = Truth();
   const cv::Mat frame = Painted(wall, truth);
-  const LearntArm learnt = LearnArm(frame, JointsOf(truth, Drawn()), 80);
+  const LearntArm learnt = LearnArm(frame, JointsOf(truth, DrawnShape()), 80);
   LearntBackground background;
   background.Reset(wall, cv::Mat::zeros(size, CV_8U));
   EvidenceMap evidence;
@@ -147,26 +122,17 @@ TEST(ArmModelFit, FitNearEqualsScoringEveryCell) {
 
 TEST(ArmModelFit, FitAnywhereWithTheLastFloorEqualsScoringEveryPose) {
   const cv::Size size(160, 120);
-  const cv::Mat wall = Wall(size);
+  const cv::Mat wall = TiledWall(size);
   const ArmPose truth = Truth();
-  const LearntArm learnt = LearnArm(Painted(wall, truth), JointsOf(truth, Drawn()), 80);
+  const LearntArm learnt = LearnArm(Painted(wall, truth), JointsOf(truth, DrawnShape()), 80);
   LearntBackground background;
   background.Reset(wall, cv::Mat::zeros(size, CV_8U));
   // The arm turning a few degrees a frame, then gone (every peak sinks below the last floor: the
   // given-up poses are scored in full), back, and at once elsewhere.
   // Specks of the arm's colour and of a near colour, all over: many poses explain part of a
-  // frame, so many score near the floor, and a bound wrong anywhere changes what is found.
+  // frame, and score near the floor.
   std::mt19937 rng(5);
-  std::uniform_real_distribution<double> at(0, 1);
-  auto specked = [&](cv::Mat frame) {
-    for (int i = 0; i < 60; ++i) {
-      const cv::Point c(static_cast<int>(at(rng) * size.width),
-                        static_cast<int>(at(rng) * size.height));
-      const cv::Scalar colour = i % 2 ? cv::Scalar(40, 60, 200) : cv::Scalar(70, 90, 170);
-      cv::circle(frame, c, 1 + static_cast<int>(at(rng) * 3), colour, cv::FILLED);
-    }
-    return frame;
-  };
+  auto specked = [&](const cv::Mat& frame) { return Specked(frame, 60, &rng); };
   std::vector<cv::Mat> frames;
   for (int f = 0; f < 4; ++f) {
     ArmPose p = truth;

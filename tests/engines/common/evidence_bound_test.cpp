@@ -11,44 +11,23 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
+#include "painted_arm.h"
+
 namespace armmimic::arm {
 namespace {
 
 TEST(EvidenceBoundTest, HoldsForEverySampleWithinReach) {
   const cv::Size size(160, 120);
-  std::mt19937 rng(23);
-  std::uniform_int_distribution<int> noise(-25, 25);
-  cv::Mat wall(size, CV_8UC3);
-  for (int y = 0; y < size.height; ++y) {
-    for (int x = 0; x < size.width; ++x) {
-      const int t = ((x / 8 + y / 8) % 2) * 40;
-      wall.at<cv::Vec3b>(y, x) = cv::Vec3b(cv::saturate_cast<uchar>(90 + t + noise(rng)),
-                                           cv::saturate_cast<uchar>(140 + noise(rng)),
-                                           cv::saturate_cast<uchar>(150 - t + noise(rng)));
-    }
-  }
-  ArmShape drawn;
-  drawn.upper_px = 38;
-  drawn.fore_px = 32;
-  drawn.hand_px = 10;
-  drawn.upper_hw = 4;
-  drawn.fore_hw = 3.5;
+  const cv::Mat wall = painted::TiledWall(size);
   ArmJoints joints;
   joints.shoulder = {60.3, 40.7};
-  joints.elbow = joints.shoulder + drawn.upper_px * cv::Point2d(0.5, 0.866);
-  joints.wrist = joints.elbow + drawn.fore_px * cv::Point2d(0.985, -0.174);
-  cv::Mat frame = wall.clone();
-  cv::Mat arm = cv::Mat::zeros(size, CV_8U);
-  DrawArm(arm, joints, drawn, 0);
-  frame.setTo(cv::Scalar(40, 60, 200), arm);
-  const LearntArm learnt = LearnArm(frame, joints, 80);
+  joints.elbow = joints.shoulder + 38 * cv::Point2d(0.5, 0.866);
+  joints.wrist = joints.elbow + 32 * cv::Point2d(0.985, -0.174);
+  std::mt19937 rng(23);
   std::uniform_real_distribution<double> unit(0, 1);
-  for (int i = 0; i < 80; ++i) {
-    const cv::Point c(static_cast<int>(unit(rng) * size.width),
-                      static_cast<int>(unit(rng) * size.height));
-    const cv::Scalar colour = i % 2 ? cv::Scalar(40, 60, 200) : cv::Scalar(70, 90, 170);
-    cv::circle(frame, c, 1 + static_cast<int>(unit(rng) * 3), colour, cv::FILLED);
-  }
+  const cv::Mat arm = painted::Painted(wall, joints);
+  const LearntArm learnt = LearnArm(arm, joints, 80);
+  const cv::Mat frame = painted::Specked(arm, 80, &rng);
   LearntBackground background;
   background.Reset(wall, cv::Mat::zeros(size, CV_8U));
   const cv::Rect region(9, 6, 131, 97);
