@@ -19,7 +19,14 @@ EvidenceBound::EvidenceBound(const EvidenceMap& evidence) {
   for (int y = 0; y < map.rows; ++y) {
     const float* row = map.ptr<float>(y);
     float* m = most.data() + static_cast<std::size_t>(y / kBlock) * nbx_;
-    for (int x = 0; x < map.cols; ++x) m[x / kBlock] = std::max(m[x / kBlock], row[x]);
+    for (int b = 0; b < nbx_; ++b) {
+      // One block's row at a time: the largest of a few values, with no store between them.
+      float v = m[b];
+      for (int x = b * kBlock; x < std::min(map.cols, (b + 1) * kBlock); ++x) {
+        v = std::max(v, row[x]);
+      }
+      m[b] = v;
+    }
   }
   // A point's samples read pixels in its block or a neighbour; a point up to a block off the
   // map still has samples on it.

@@ -15,10 +15,15 @@ cv::Mat LightGain(const cv::Mat& bgr, const cv::Mat& background, const cv::Mat& 
   constexpr float kMinGain = 0.4f, kMaxGain = 2.5f;
   const int bx = std::max(1, (region.width + kBlock - 1) / kBlock);
   const int by = std::max(1, (region.height + kBlock - 1) / kBlock);
-  // Kept from call to call (cleared, not freed): a frame fills a few hundred of them.
-  thread_local std::vector<std::vector<float>> ratios;
-  ratios.resize(static_cast<std::size_t>(bx * by * 3));
-  for (std::vector<float>& v : ratios) v.clear();
+  // Each block's and channel's ratios in a slot of kMost (every other row of the block, every
+  // other pixel of those), their counts beside: kept from call to call, a frame fills a few
+  // hundred of them.
+  constexpr int kMost = (kBlock / 2) * (kBlock / 2);
+  const std::size_t lists = static_cast<std::size_t>(bx * by * 3);
+  thread_local std::vector<float> ratios;
+  thread_local std::vector<int> counts;
+  ratios.resize(lists * kMost);
+  counts.assign(lists, 0);
   for (int y = 0; y < region.height; y += 2) {
     const cv::Vec3b* in = bgr.ptr<cv::Vec3b>(y + region.y) + region.x;
     const cv::Vec3f* b = background.ptr<cv::Vec3f>(y + region.y) + region.x;
@@ -26,32 +31,35 @@ cv::Mat LightGain(const cv::Mat& bgr, const cv::Mat& background, const cv::Mat& 
     const uchar* ign = ignore.empty() ? nullptr : ignore.ptr<uchar>(y + region.y) + region.x;
     for (int x = y & 2 ? 1 : 0; x < region.width; x += 2) {
       if (!k[x] || (ign && ign[x])) continue;
-      const int cell = (y / kBlock) * bx + x / kBlock;
+      const std::size_t list = static_cast<std::size_t>(((y / kBlock) * bx + x / kBlock) * 3);
       for (int c = 0; c < 3; ++c) {
-        const float r = (in[x][c] + 4.f) / (b[x][c] + 4.f);
-        ratios[static_cast<std::size_t>(cell * 3 + c)].push_back(r);
+        int& n = counts[list + c];
+        ratios[(list + c) * kMost + n++] = (in[x][c] + 4.f) / (b[x][c] + 4.f);
       }
     }
   }
-  auto median = [](std::vector<float>& v) { return KthSmallest(v.data(), v.size(), v.size() / 2); };
+  auto median = [](float* v, int n) { return KthSmallest(v, n, n / 2); };
   // The whole region's median of a channel, taken only when a block needs it (seldom).
   float whole[3] = {0.f, 0.f, 0.f};
   auto whole_median = [&](int c) {
     if (whole[c] > 0) return whole[c];
     std::vector<float> all;
-    for (std::size_t cell = static_cast<std::size_t>(c); cell < ratios.size(); cell += 3) {
-      all.insert(all.end(), ratios[cell].begin(), ratios[cell].end());
+    for (std::size_t list = static_cast<std::size_t>(c); list < lists; list += 3) {
+      const float* v = ratios.data() + list * kMost;
+      all.insert(all.end(), v, v + counts[list]);
     }
-    return whole[c] = all.empty() ? 1.f : median(all);
+    return whole[c] = all.empty() ? 1.f : median(all.data(), static_cast<int>(all.size()));
   };
   cv::Mat grid(by, bx, CV_32FC3);
   for (int j = 0; j < by; ++j) {
     for (int i = 0; i < bx; ++i) {
       cv::Vec3f& g = grid.at<cv::Vec3f>(j, i);
       for (int c = 0; c < 3; ++c) {
-        std::vector<float>& v = ratios[static_cast<std::size_t>((j * bx + i) * 3 + c)];
-        g[c] = std::clamp(static_cast<int>(v.size()) >= kMinSamples ? median(v) : whole_median(c),
-                          kMinGain, kMaxGain);
+        const std::size_t list = static_cast<std::size_t>((j * bx + i) * 3 + c);
+        const int n = counts[list];
+        g[c] =
+            std::clamp(n >= kMinSamples ? median(ratios.data() + list * kMost, n) : whole_median(c),
+                       kMinGain, kMaxGain);
       }
     }
   }
