@@ -66,6 +66,7 @@ class WideGrid {
         floor_(floor),
         fore_steps_(StepsOf(shape.fore_px, kForeFrom, ForeTo(shape), true)),
         upper_(kRows),
+        elbows_(kRows),
         total_(static_cast<std::size_t>(kRows * kColumns)) {
     if (floor_ > kGaveUp && kCoarseAcross * shape.fore_hw <= EvidenceBound::kReach) {
       bound_.emplace(evidence);
@@ -79,10 +80,10 @@ class WideGrid {
     for (int i = 0; i < kRows; ++i) {
       const cv::Point2d& u = WholeDegreeDirection(UpperDegOf(i));
       upper_[i] = ScoreStrip(map_, upper_steps, shoulder_, u, shape_.upper_hw).score;
-      const Pair elbow = PairOf(shoulder_ + shape_.upper_px * u);
+      elbows_[i] = shoulder_ + shape_.upper_px * u;
       for (int j = 0; j < kColumns; ++j) {
         double& t = total_[static_cast<std::size_t>(i * kColumns + j)];
-        t = Unreachable(i, j, elbow) ? kGaveUp : Fore(i, j, floor_ > kGaveUp);
+        t = Unreachable(i, j) ? kGaveUp : Fore(i, j, floor_ > kGaveUp);
         gave_up = gave_up || t == kGaveUp;
       }
     }
@@ -102,8 +103,9 @@ class WideGrid {
  private:
   // The forearm's strip at its most (every inside sample at its bound, the flanks at 0) cannot
   // reach the floor: most poses, their strip on empty wall, are given up before any sample.
-  bool Unreachable(int i, int j, Pair elbow) const {
+  bool Unreachable(int i, int j) const {
     if (!bound_) return false;
+    const Pair elbow = PairOf(elbows_[i]);
     const Pair along = PairOf(WholeDegreeDirection(UpperDegOf(i) + BendDegOf(j)));
     double most = 0;
     for (int k = 0; k < fore_steps_.along; ++k) {
@@ -114,9 +116,8 @@ class WideGrid {
 
   // The cell's total, or kGaveUp once it can no longer reach the floor (with `give_up`).
   double Fore(int i, int j, bool give_up) const {
-    const int up = UpperDegOf(i);
-    const cv::Point2d elbow = shoulder_ + shape_.upper_px * WholeDegreeDirection(up);
-    const cv::Point2d& u = WholeDegreeDirection(up + BendDegOf(j));
+    const cv::Point2d& elbow = elbows_[i];
+    const cv::Point2d& u = WholeDegreeDirection(UpperDegOf(i) + BendDegOf(j));
     SegmentScore sf;
     if (give_up) {
       if (!ScoreStripUnless<true>(map_, fore_steps_, elbow, u, shape_.fore_hw, shoulder_, elbow,
@@ -136,7 +137,8 @@ class WideGrid {
   const double floor_;
   const Steps fore_steps_;
   std::optional<EvidenceBound> bound_;
-  std::vector<double> upper_;  // each row's upper arm
+  std::vector<double> upper_;        // each row's upper arm
+  std::vector<cv::Point2d> elbows_;  // each row's elbow
   std::vector<double> total_;
 };
 

@@ -1,6 +1,6 @@
 // At most what the evidence map (arm_appearance.h) can be near a point: a bound on every bilinear
 // sample within EvidenceBound::kReach pixels of it, far cheaper than the samples it bounds. The
-// search over every pose (arm_model_fit.cpp) gives up, before taking any sample, a pose whose
+// search over every pose (arm_wide_search.cpp) gives up, before taking any sample, a pose whose
 // strip lies where the map is low. Qt-free.
 #pragma once
 
