@@ -154,10 +154,12 @@ for gen in "${GENS[@]}"; do
         seconds=0
         if [[ ! -f "$out" ]]; then
           t0=$(date +%s.%N)
-          "$CLI" -q analyze "$dir/scene.avi" -o "$out" --engine "$engine" "${flags[@]}" 2>"$dir/$run.err" || code=$?
+          # Not quiet: RUN.err keeps the run's estimates and its end-of-run summary, with the
+          # most frequent reasons rows were lost (what to read first when a scene is bad).
+          "$CLI" --no-progress analyze "$dir/scene.avi" -o "$out" --engine "$engine" "${flags[@]}" 2>"$dir/$run.err" || code=$?
           if ((code == 2)) && grep -q -- '--arm-length' "$dir/$run.err"; then
             code=0
-            "$CLI" -q analyze "$dir/scene.avi" -o "$out" --engine "$engine" "${flags[@]:0:2}" "${flags[@]:4}" 2>"$dir/$run.err" || code=$?
+            "$CLI" --no-progress analyze "$dir/scene.avi" -o "$out" --engine "$engine" "${flags[@]:0:2}" "${flags[@]:4}" 2>"$dir/$run.err" || code=$?
           fi
           seconds=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
         fi
