@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace armmimic::arm {
 namespace {
@@ -64,6 +65,24 @@ double NearestRankQuantile(std::vector<double> values, double q) {
   auto at = values.begin() + static_cast<std::ptrdiff_t>(std::lround(q * (values.size() - 1)));
   std::nth_element(values.begin(), at, values.end());
   return *at;
+}
+
+double TheilSenSlope(const std::vector<cv::Point2d>& points, double min_dy) {
+  std::vector<double> slopes;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (std::size_t j = i + 1; j < points.size(); ++j) {
+      const double dy = points[j].y - points[i].y;
+      if (dy != 0 && std::abs(dy) >= min_dy) slopes.push_back((points[j].x - points[i].x) / dy);
+    }
+  }
+  return NearestRankQuantile(std::move(slopes), 0.5);
+}
+
+double MedianIntercept(const std::vector<cv::Point2d>& points, double y0, double slope) {
+  std::vector<double> intercepts;
+  intercepts.reserve(points.size());
+  for (const cv::Point2d& p : points) intercepts.push_back(p.x - slope * (p.y - y0));
+  return NearestRankQuantile(std::move(intercepts), 0.5);
 }
 
 }  // namespace armmimic::arm

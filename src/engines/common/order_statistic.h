@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <vector>
 
+#include <opencv2/core.hpp>
+
 namespace armmimic::arm {
 
 // The value std::nth_element(first, first + k, first + n) would put at first + k (k < n; n > 0).
@@ -17,5 +19,12 @@ float KthSmallest(float* first, std::size_t n, std::size_t k);
 // 0.5), by std::nth_element; NaN when there are none. For a few hundred values at most (the
 // calibrations' edges and slopes, a frame's feature motions).
 double NearestRankQuantile(std::vector<double> values, double q);
+
+// x as a line in y through `points` (Theil-Sen: a point that lies on something else moves neither
+// the slope nor the intercept). The slope dx/dy is the median over the pairs at least `min_dy`
+// rows apart (and on different rows), NaN when there is no such pair; the intercept is the median
+// of x - slope (y - y0), the line's x at row y0.
+double TheilSenSlope(const std::vector<cv::Point2d>& points, double min_dy);
+double MedianIntercept(const std::vector<cv::Point2d>& points, double y0, double slope);
 
 }  // namespace armmimic::arm

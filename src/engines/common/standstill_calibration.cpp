@@ -124,17 +124,8 @@ bool FindStraightArm(const Differences& d, const cv::Mat& body, const cv::Rect& 
 // x = a + b (y - y0) through `points`: b the median of the pairwise slopes, a the median
 // intercept (Theil-Sen: a row that meets something else moves neither).
 void FitAxis(const std::vector<cv::Point2d>& points, double y0, double* a, double* b) {
-  std::vector<double> slopes, intercepts;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    for (std::size_t j = i + 1; j < points.size(); ++j) {
-      if (points[j].y != points[i].y) {
-        slopes.push_back((points[j].x - points[i].x) / (points[j].y - points[i].y));
-      }
-    }
-  }
-  *b = arm::NearestRankQuantile(slopes, 0.5);
-  for (const cv::Point2d& p : points) intercepts.push_back(p.x - *b * (p.y - y0));
-  *a = arm::NearestRankQuantile(intercepts, 0.5);
+  *b = arm::TheilSenSlope(points, 0);
+  *a = arm::MedianIntercept(points, y0, *b);
 }
 
 }  // namespace
