@@ -91,11 +91,25 @@ bool FindStraightArm(const PixelModel& pixels, const cv::Mat& arm_length, const 
   return true;
 }
 
-// The axis of the standstill's hanging arm, the shoulder's x: the body's outer edge on the arm's
-// side, one arm radius in, over the rows of the upper arm (from two radii below the shoulder to
-// a quarter of the arm's length further). `inner_x` is the straight arm's inner end; the edge is
-// looked for from three radii outside it inwards to the body's centre. NaN when too few rows
-// have an edge.
+// Where the hanging arm shows both its edges, its axis is read between them. Its outer edge alone
+// tilts alike for an arm that leans out from the body and for one that tapers, and is read below
+// the shoulder: under a lean it lies several pixels out there. A row shows both edges when the
+// body, from its outer edge inwards, runs for one to three arm radii (an arm's width, not the
+// torso's) and the room shows again before the body's centre (the arm hangs clear of the torso).
+// Used when at least kBothEdgesShare of the rows with an edge, and kBothEdgesMinRows, do; the
+// axis is then a line through the rows' middles (Theil-Sen over rows kLineMinRows apart, at most
+// kMaxLean from straight down) read at the shoulder's row.
+constexpr double kBothEdgesShare = 0.5;
+constexpr std::size_t kBothEdgesMinRows = 5;
+constexpr double kMinWidthRadii = 1, kMaxWidthRadii = 3;
+constexpr double kLineMinRows = 4;
+constexpr double kMaxLean = 0.7;  // dx/dy, about 35 degrees: as the standstill calibration
+
+// The axis of the standstill's hanging arm, the shoulder's x, over the rows of the upper arm (from
+// two radii below the shoulder to a quarter of the arm's length further): between its two edges
+// where they show (above), or else the body's outer edge on the arm's side, one arm radius in.
+// `inner_x` is the straight arm's inner end; the edge is looked for from three radii outside it
+// inwards to the body's centre. NaN when too few rows have an edge.
 double HangingArmAxis(const ArmCalibration& cal, int inner_x, double length) {
   if (cal.body.empty() || !cal.body_box) return kNaN;
   const double r = cal.half_width_px;
@@ -103,20 +117,32 @@ double HangingArmAxis(const ArmCalibration& cal, int inner_x, double length) {
   const int outer = inner_x + cal.side * static_cast<int>(std::lround(3 * r + 2));
   const int y0 = static_cast<int>(std::lround(cal.shoulder_px.y + 2 * r));
   const int last = std::min(cal.body.rows - 1, y0 + static_cast<int>(std::max(4 * r, length / 4)));
+  // On the arm's side of the body's centre only: a straight arm whose inner end lies past the
+  // centre gives no edge (the walk must not run on past the centre).
+  auto on_arm_side = [&](int x) { return cal.side * (x - centre) > 0; };
   std::vector<double> edges;
+  std::vector<cv::Point2d> middles;
   for (int y = std::max(0, y0); y <= last; ++y) {
     const uchar* row = cal.body.ptr<uchar>(y);
-    // Towards the centre only while on the arm's side of it: a straight arm whose inner end lies
-    // past the body's centre gives no edge (the walk must not run on past the centre).
-    for (int x = std::clamp(outer, -1, cal.body.cols); cal.side * (x - centre) > 0; x -= cal.side) {
-      if (x < 0 || x >= cal.body.cols) continue;
-      if (row[x]) {
-        edges.push_back(x);
-        break;
-      }
+    auto body = [&](int x) { return x >= 0 && x < cal.body.cols && row[x] != 0; };
+    int x = std::clamp(outer, -1, cal.body.cols);
+    while (on_arm_side(x) && !body(x)) x -= cal.side;
+    if (!on_arm_side(x)) continue;
+    const int edge = x;
+    edges.push_back(edge);
+    while (on_arm_side(x) && body(x)) x -= cal.side;
+    const int width = cal.side * (edge - x);
+    if (on_arm_side(x) && width >= kMinWidthRadii * r && width <= kMaxWidthRadii * r) {
+      middles.emplace_back(0.5 * (edge + x + cal.side), y);
     }
   }
   if (edges.size() < 3) return kNaN;
+  if (middles.size() >= kBothEdgesMinRows &&
+      static_cast<double>(middles.size()) >= kBothEdgesShare * static_cast<double>(edges.size())) {
+    double lean = arm::TheilSenSlope(middles, kLineMinRows);
+    lean = std::isfinite(lean) ? std::clamp(lean, -kMaxLean, kMaxLean) : 0.0;
+    return arm::MedianIntercept(middles, cal.shoulder_px.y, lean);
+  }
   return arm::NearestRankQuantile(edges, 0.5) - cal.side * r;
 }
 

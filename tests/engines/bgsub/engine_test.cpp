@@ -25,11 +25,17 @@ cv::Mat Wall() {
   return img;
 }
 
+// The standing figure: its torso's width, and where its moving arm hangs in the standstill.
+struct Figure {
+  int torso_width = 57;  // from x = 125: up to the moving arm
+  double rest_deg = -90;
+};
+
 // The person with the moving arm at directions upper/fore (degrees, contract convention).
-cv::Mat Person(double upper_deg, double fore_deg) {
+cv::Mat Person(double upper_deg, double fore_deg, const Figure& figure = {}) {
   cv::Mat img = Wall();
   const cv::Scalar shirt(140, 60, 30), skin(120, 150, 200);
-  cv::rectangle(img, cv::Rect(125, 90, 57, 150), shirt, cv::FILLED);  // torso to the bottom
+  cv::rectangle(img, cv::Rect(125, 90, figure.torso_width, 150), shirt, cv::FILLED);
   cv::circle(img, cv::Point(155, 62), 16, skin, cv::FILLED);          // head
   cv::line(img, cv::Point(125, 98), cv::Point(122, 190), shirt, 14);  // the other arm, hanging
   const cv::Point2d e = kShoulder + DirectionVector(upper_deg) * kUpper;
@@ -44,11 +50,11 @@ struct EngineRun {
   int index = 0;
 };
 
-EngineRun Start(const BgsubOptions& bo, const EngineContext& base = {}) {
+EngineRun Start(const BgsubOptions& bo, const EngineContext& base = {}, const Figure& figure = {}) {
   EngineContext ctx = base;
   ctx.frame_size = kSize;
   ctx.background = Wall();
-  ctx.arm_length = Person(0, 0);
+  ctx.arm_length = Person(0, 0, figure);
   EngineOptions eo;
   eo.kind = EngineKind::kBgsub;
   eo.bgsub = bo;
@@ -56,16 +62,16 @@ EngineRun Start(const BgsubOptions& bo, const EngineContext& base = {}) {
   EXPECT_TRUE(r.engine->Begin(ctx).ok());
   for (int i = 0; i < bo.standstill_frames; ++i) {
     Frame f;
-    f.image = Person(-90, -90);
+    f.image = Person(figure.rest_deg, figure.rest_deg, figure);
     f.index = r.index++;
     EXPECT_EQ(r.engine->Process(f).phase, MeasurementPhase::kSetup);
   }
   return r;
 }
 
-ArmMeasurement Next(EngineRun* r, double upper, double fore) {
+ArmMeasurement Next(EngineRun* r, double upper, double fore, const Figure& figure = {}) {
   Frame f;
-  f.image = Person(upper, fore);
+  f.image = Person(upper, fore, figure);
   f.index = r->index++;
   return r->engine->Process(f);
 }
@@ -113,6 +119,24 @@ TEST(BgsubEngine, BentArmSplitsAtTheElbow) {
     ASSERT_TRUE(m.elbow_px.has_value());
     const cv::Point2d e = kShoulder + DirectionVector(p.upper) * kUpper;
     EXPECT_LT(cv::norm(*m.elbow_px - e), 8);
+  }
+}
+
+// An arm that hangs 12 degrees out from straight down, clear of a narrower torso: its outer edge
+// is 3-6 px further out on the rows below the shoulder that the calibration reads, so the edge,
+// one radius in, would put the shoulder there. Both its edges show, and the axis between them,
+// read as a line at the shoulder's row, puts it at the joint.
+TEST(BgsubEngine, AnArmHangingOutClearOfTheBodyGivesTheShoulderFromBothEdges) {
+  Figure leaning;
+  leaning.torso_width = 50;
+  leaning.rest_deg = -78;
+  EngineRun r = Start(Short(), {}, leaning);
+  for (double deg : {0.0, 30.0, -45.0}) {
+    const ArmMeasurement m = Next(&r, deg, deg, leaning);
+    ASSERT_EQ(m.phase, MeasurementPhase::kOk) << deg << ": " << m.note;
+    ASSERT_TRUE(m.shoulder_px.has_value());
+    EXPECT_NEAR(m.shoulder_px->x, kShoulder.x, 1.5);
+    EXPECT_NEAR(AngleDiff(m.upper_deg, deg), 0, 3) << m.note;
   }
 }
 
